@@ -1,0 +1,109 @@
+// carrom-client: the SFML desktop client. See docs/client.md.
+
+#include "app.hpp"
+#include "network_link.hpp"
+
+#include "carrom/proto/limits.hpp"
+#include "carrom/proto/types.hpp"
+
+#include <CLI/CLI.hpp>
+
+#include <iostream>
+
+int main(int argc, char** argv) {
+    using carrom::client::RoomRequest;
+    carrom::client::app::AppOptions options;
+    CLI::App cli{"carrom-client: play carrom against another player over the network"};
+    std::string create_rules;
+    std::string join_code;
+    std::string spectate_code;
+    bool create = false;
+    bool quick = false;
+    bool bot = false;
+    std::string rule_set = "icf";
+    cli.add_option("--url", options.url, "Server address, ws://HOST:PORT")
+        ->capture_default_str();
+    cli.add_option("--name", options.name, "Your name (1 to 24 bytes)")->capture_default_str();
+    auto* create_flag = cli.add_flag("--create", create, "Create a private room");
+    auto* join_opt = cli.add_option("--join", join_code, "Join the room with this code as a player");
+    auto* spectate_opt =
+        cli.add_option("--spectate", spectate_code, "Watch the room with this code");
+    auto* quick_flag = cli.add_flag("--quick", quick, "Quick match: play the next waiting player");
+    create_flag->excludes(join_opt)->excludes(spectate_opt)->excludes(quick_flag);
+    join_opt->excludes(spectate_opt)->excludes(quick_flag);
+    spectate_opt->excludes(quick_flag);
+    cli.add_flag("--bot", bot, "With --create: a server bot takes the other seat");
+    cli.add_option("--rules", rule_set, "Rule set for --create and --quick: icf, seed, freestyle, discpool")
+        ->capture_default_str();
+    cli.add_flag("--demo", options.demo, "Offline demo: a local stand-in server, no network");
+    cli.add_option("--demo-break-at", options.demo_break_at_s,
+                   "Demo: seconds before the opponent breaks")
+        ->capture_default_str();
+    cli.add_option("--demo-autoplay", options.demo_autoplay_s,
+                   "Demo: play your shots for you after this many seconds (negative: never)")
+        ->capture_default_str();
+    cli.add_flag("--mute", options.mute, "No sound");
+    cli.add_option("--width", options.width, "Window width, px")->capture_default_str()
+        ->check(CLI::Range(200u, 8192u));
+    cli.add_option("--height", options.height, "Window height, px")->capture_default_str()
+        ->check(CLI::Range(200u, 8192u));
+    cli.add_option("--screenshot", options.screenshot_path,
+                   "Render --frames frames (at a fixed 1/60 s step), save the window as PNG, exit");
+    cli.add_option("--frames", options.frames, "Frames to render before --screenshot")
+        ->capture_default_str()->check(CLI::Range(1, 1000000));
+    cli.add_option("--bench-frames", options.bench_frames,
+                   "Render this many frames of the demo break and print frame times as JSON")
+        ->check(CLI::Range(1, 1000000));
+    CLI11_PARSE(cli, argc, argv);
+
+    carrom::proto::RuleSet rules{};
+    if (!carrom::proto::parse(rule_set, rules)) {
+        std::cerr << "carrom-client: --rules must be icf, seed, freestyle or discpool\n";
+        return 2;
+    }
+    if (!carrom::proto::is_player_name(options.name)) {
+        std::cerr << "carrom-client: --name must be 1 to 24 bytes, not only spaces, without "
+                     "control characters\n";
+        return 2;
+    }
+    for (const std::string* code : {&join_code, &spectate_code}) {
+        if (!code->empty() && !carrom::proto::is_room_code(*code)) {
+            std::cerr << "carrom-client: a room code is 6 characters from "
+                      << carrom::proto::kRoomCodeAlphabet << " (got \"" << *code << "\")\n";
+            return 2;
+        }
+    }
+    if (options.bench_frames > 0) {
+        options.demo = true;
+        options.demo_break_at_s = 0.2;
+        options.width = options.width == 900 ? 900 : options.width;
+    }
+    if (!options.demo) {
+        if (const std::string problem = carrom::client::app::check_url(options.url);
+            !problem.empty()) {
+            std::cerr << "carrom-client: " << problem << "\n";
+            return 2;
+        }
+    }
+    RoomRequest request;
+    request.rule_set = rules;
+    if (create || options.demo) {
+        request.kind = RoomRequest::Kind::Create;
+        if (bot) {
+            request.bot = carrom::proto::BotSeat{carrom::proto::BotLevel::Medium};
+        }
+        options.request = request;
+    } else if (!join_code.empty()) {
+        request.kind = RoomRequest::Kind::Join;
+        request.code = join_code;
+        options.request = request;
+    } else if (!spectate_code.empty()) {
+        request.kind = RoomRequest::Kind::Spectate;
+        request.code = spectate_code;
+        options.request = request;
+    } else if (quick) {
+        request.kind = RoomRequest::Kind::Quick;
+        options.request = request;
+    }
+    return carrom::client::app::run_app(options);
+}

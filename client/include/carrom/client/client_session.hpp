@@ -1,0 +1,101 @@
+#pragma once
+// The connection's life: open a link, say hello, ask for a room (create, join, spectate or quick
+// match), keep pinging for the round trip and the server clock, and when the link drops, open a
+// new one and resume the seat with the token, backing off between attempts. Game input goes out
+// only while in a room. Messages for the match are handed to the caller from update().
+
+#include "carrom/client/connection.hpp"
+#include "carrom/proto/client_messages.hpp"
+#include "carrom/proto/server_messages.hpp"
+
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace carrom::client {
+
+struct RoomRequest {
+    enum class Kind { Create, Join, Spectate, Quick };
+    Kind kind = Kind::Create;
+    std::string code;                       // Join, Spectate
+    proto::RuleSet rule_set = proto::RuleSet::Icf;
+    std::optional<proto::BotSeat> bot;      // Create: a server bot in seat 1
+};
+
+enum class SessionPhase {
+    Connecting,   // first link opening
+    Greeting,     // hello sent, waiting for welcome
+    Lobby,        // welcomed, no room asked for yet
+    Joining,      // room asked for, waiting for its state
+    InRoom,       // room state received
+    Reconnecting, // the link dropped; a new one will resume the seat
+    Failed,       // given up (version mismatch, or the server stayed away too long)
+};
+
+struct SessionConfig {
+    double ping_interval_s = 2.0;
+    double first_retry_s = 0.5;   // reconnect back-off starts here and doubles
+    double max_retry_s = 5.0;
+    double give_up_after_s = 60.0; // the server's default grace period
+};
+
+class ClientSession {
+public:
+    ClientSession(LinkFactory factory, std::string name, const SessionConfig& config = {});
+
+    // Opens the first link.
+    void start(double local_s);
+    // Ask for a room; sent as soon as the server has welcomed us (or at once if it has).
+    void request(const RoomRequest& request);
+    // Game input (aim, shoot, rematch, leave): sent only while in a room.
+    bool send_game(const proto::ClientMessage& message);
+    // Polls the link, answers the handshake, pings, reconnects; returns the messages for the match.
+    std::vector<proto::ServerMessage> update(double local_s);
+
+    SessionPhase phase() const { return phase_; }
+    // What the connection is doing, in plain words ("Connected", "Reconnecting (attempt 2)...").
+    const std::string& status_text() const { return status_; }
+    std::optional<double> rtt_ms() const { return rtt_ms_; }
+    const std::string& resume_token() const { return token_; }
+    std::int64_t player_id() const { return player_id_; }
+    // A pong's server time with the local send and receive times, for the server clock.
+    struct PongSample {
+        std::int64_t server_ms;
+        double sent_s;
+        double received_s;
+    };
+    std::vector<PongSample> take_pongs();
+
+private:
+    void open_link(double local_s);
+    void on_link_lost(double local_s, const std::string& why);
+    void send_request();
+    bool handle(const proto::ServerMessage& m, double local_s);
+
+    LinkFactory factory_;
+    std::string name_;
+    SessionConfig config_;
+    std::unique_ptr<MessageLink> link_;
+    SessionPhase phase_ = SessionPhase::Connecting;
+    std::string status_ = "Not connected";
+    std::optional<RoomRequest> request_;
+    bool request_sent_ = false;
+    bool resuming_ = false;
+    bool ever_welcomed_ = false;
+    std::string token_;
+    std::int64_t player_id_ = -1;
+    double next_ping_s_ = 0.0;
+    std::int64_t next_nonce_ = 1;
+    std::map<std::int64_t, double> pings_in_flight_;
+    std::optional<double> rtt_ms_;
+    std::vector<PongSample> pongs_;
+    double retry_delay_s_ = 0.0;
+    double retry_at_s_ = 0.0;
+    double lost_since_s_ = 0.0;
+    int attempts_ = 0;
+};
+
+} // namespace carrom::client

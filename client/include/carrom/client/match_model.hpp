@@ -1,0 +1,125 @@
+#pragma once
+// Everything the client knows about its match, built only from server messages: the HUD's view
+// (seats, scores, turn, shot clock, queen and dues), the board to draw (through the playout clock
+// and the interpolation buffer), sound cues and short messages for the player.
+//
+// Snapshot and event times are seconds since the start of their shot (proto), so each shot's
+// times are placed on one continuous timeline: the first snapshot of a turn starts where the
+// local clock (less the base network transit) is when it arrives. Physics events for a turn
+// whose first snapshot has not arrived yet wait for it.
+
+#include "carrom/client/hud_log.hpp"
+#include "carrom/client/interpolation_buffer.hpp"
+#include "carrom/client/playout_clock.hpp"
+#include "carrom/client/server_clock.hpp"
+#include "carrom/client/snapshot.hpp"
+#include "carrom/client/sound_synth.hpp"
+#include "carrom/config.hpp"
+#include "carrom/proto/server_messages.hpp"
+
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace carrom::client {
+
+struct SeatView {
+    bool occupied = false;
+    std::string name;
+    bool connected = false;
+    bool bot = false;
+    proto::Colour colour = proto::Colour::None;
+    Baseline baseline = Baseline::Bottom;
+    int score = 0;
+    int dues = 0;
+};
+
+struct MatchView {
+    bool in_room = false;
+    std::string code;
+    int you = -1; // our seat, -1 for a spectator
+    proto::RuleSet rule_set = proto::RuleSet::Icf;
+    proto::MatchOptions options;
+    std::vector<SeatView> seats;
+    int spectators = 0;
+    int board_number = 1;
+    int turn = 0;
+    int to_play = 0;
+    proto::Phase phase = proto::Phase::Waiting;
+    proto::QueenInfo queen;
+    int winner = -1;
+    std::optional<std::int64_t> deadline_ms; // shot clock, server clock
+    std::optional<double> aim_x_px;          // the shooter's live striker x (aim events)
+};
+
+class MatchModel {
+public:
+    explicit MatchModel(const PhysicsConfig& physics, const PlayoutConfig& playout = {},
+                        const InterpolationConfig& interpolation = {});
+
+    void handle(const proto::ServerMessage& message, double local_s);
+    // Forget the room (left it, or the seat is gone).
+    void reset();
+
+    const MatchView& view() const { return view_; }
+    bool my_turn() const;
+    bool spectator() const { return view_.you < 0; }
+    // Our baseline is the top one: the view is turned so it is at the bottom of the window.
+    bool flipped() const;
+    // Seconds left on the shot clock by the server's clock, if one runs.
+    std::optional<double> shot_clock_left_s(double local_s) const;
+    std::string seat_name(int seat) const;
+    Baseline seat_baseline(int seat) const;
+
+    // The board to draw at local_s; sound cues that became due are kept for take_sounds().
+    std::vector<RenderedBody> render(double local_s);
+    std::vector<SoundCue> take_sounds();
+    // True while a shot is still being played on screen (the rendered time has not reached the
+    // newest state, or the server says pieces move).
+    bool animating() const;
+    // The newest board (for placement checks), empty before the first state.
+    std::vector<BodyState> board_now() const;
+
+    ServerClock& server_clock() { return server_clock_; }
+    const ServerClock& server_clock() const { return server_clock_; }
+    HudLog& log() { return log_; }
+    const HudLog& log() const { return log_; }
+    const PlayoutClock& playout() const { return playout_; }
+    const InterpolationBuffer& buffer() const { return buffer_; }
+
+private:
+    void on_room_state(const proto::RoomState& m, double local_s);
+    void on_snapshot(const proto::Snapshot& m, double local_s);
+    void on_event(const proto::Event& m, double local_s);
+    void on_shot_result(const proto::ShotResult& m, double local_s);
+    void on_error(const proto::Error& m, double local_s);
+    void cue(int turn, double t_s, SoundKind kind, double volume);
+    BodyKind kind_of(int id) const;
+    double continuous_now(double local_s) const;
+
+    PhysicsConfig physics_;
+    PlayoutConfig playout_config_;
+    InterpolationConfig interpolation_config_;
+    MatchView view_;
+    PlayoutClock playout_;
+    InterpolationBuffer buffer_;
+    ServerClock server_clock_;
+    SoundCueQueue cues_;
+    std::vector<SoundCue> due_;
+    HudLog log_;
+    std::map<int, BodyKind> kinds_;
+    std::map<int, double> turn_offsets_; // turn -> continuous time of the shot's t = 0
+    struct PendingCue {
+        int turn;
+        double t_s;
+        SoundCue cue;
+    };
+    std::vector<PendingCue> pending_cues_;
+    std::optional<std::int64_t> last_proto_seq_;
+    std::uint64_t next_seq_ = 1;
+    double last_render_s_ = 0.0;
+};
+
+} // namespace carrom::client

@@ -1,0 +1,211 @@
+#include "carrom/client/client_session.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace carrom::client {
+namespace {
+
+std::string seconds_text(double s) {
+    std::ostringstream out;
+    out.precision(s < 10.0 ? 1 : 0);
+    out << std::fixed << s << " s";
+    return out.str();
+}
+
+} // namespace
+
+ClientSession::ClientSession(LinkFactory factory, std::string name, const SessionConfig& config)
+    : factory_(std::move(factory)), name_(std::move(name)), config_(config) {}
+
+void ClientSession::start(double local_s) { open_link(local_s); }
+
+void ClientSession::open_link(double local_s) {
+    link_ = factory_ ? factory_() : nullptr;
+    if (!link_) {
+        on_link_lost(local_s, "Could not start a connection");
+        return;
+    }
+    if (phase_ != SessionPhase::Reconnecting) {
+        phase_ = SessionPhase::Connecting;
+        status_ = "Connecting...";
+    } else {
+        status_ = "Reconnecting (attempt " + std::to_string(attempts_) + ")...";
+    }
+}
+
+void ClientSession::request(const RoomRequest& request) {
+    request_ = request;
+    request_sent_ = false;
+    if (phase_ == SessionPhase::Lobby) {
+        send_request();
+    }
+}
+
+void ClientSession::send_request() {
+    if (!request_ || !link_) {
+        return;
+    }
+    const RoomRequest& r = *request_;
+    switch (r.kind) {
+    case RoomRequest::Kind::Create:
+        link_->send(proto::CreateRoom{r.rule_set, {}, r.bot});
+        break;
+    case RoomRequest::Kind::Join:
+        link_->send(proto::JoinRoom{r.code, proto::Role::Player});
+        break;
+    case RoomRequest::Kind::Spectate:
+        link_->send(proto::JoinRoom{r.code, proto::Role::Spectator});
+        break;
+    case RoomRequest::Kind::Quick:
+        link_->send(proto::QuickMatch{r.rule_set});
+        break;
+    }
+    request_sent_ = true;
+    phase_ = SessionPhase::Joining;
+    status_ = r.kind == RoomRequest::Kind::Quick ? "Waiting for an opponent..." : "Joining...";
+}
+
+bool ClientSession::send_game(const proto::ClientMessage& message) {
+    if (phase_ != SessionPhase::InRoom || !link_ || link_->status().state != LinkState::Open) {
+        return false;
+    }
+    link_->send(message);
+    return true;
+}
+
+void ClientSession::on_link_lost(double local_s, const std::string& why) {
+    if (link_) {
+        link_->close();
+        link_.reset();
+    }
+    if (phase_ == SessionPhase::Failed) {
+        return;
+    }
+    const bool was_connected = attempts_ == 0;
+    if (was_connected) {
+        lost_since_s_ = local_s;
+    }
+    ++attempts_;
+    const std::string reason = why.empty() ? "The connection was lost" : why;
+    if (local_s - lost_since_s_ >= config_.give_up_after_s) {
+        phase_ = SessionPhase::Failed;
+        status_ = reason + ". Gave up after " + seconds_text(local_s - lost_since_s_) + ".";
+        return;
+    }
+    retry_delay_s_ = attempts_ == 1 ? config_.first_retry_s
+                                    : std::min(2.0 * retry_delay_s_, config_.max_retry_s);
+    retry_at_s_ = local_s + retry_delay_s_;
+    resuming_ = resuming_ || (!token_.empty() && (phase_ == SessionPhase::InRoom ||
+                                                  phase_ == SessionPhase::Joining));
+    phase_ = ever_welcomed_ ? SessionPhase::Reconnecting : SessionPhase::Connecting;
+    status_ = reason + ". Retrying in " + seconds_text(retry_delay_s_) + " (attempt " +
+              std::to_string(attempts_) + ")";
+}
+
+std::vector<proto::ServerMessage> ClientSession::update(double local_s) {
+    std::vector<proto::ServerMessage> out;
+    if (!link_) {
+        if ((phase_ == SessionPhase::Connecting || phase_ == SessionPhase::Reconnecting) &&
+            local_s >= retry_at_s_) {
+            open_link(local_s);
+        }
+        return out;
+    }
+    const LinkStatus st = link_->status();
+    if (st.state == LinkState::Open &&
+        (phase_ == SessionPhase::Connecting || phase_ == SessionPhase::Reconnecting)) {
+        proto::Hello hello;
+        hello.name = name_;
+        if (resuming_) {
+            hello.resume_token = token_;
+        }
+        link_->send(hello);
+        phase_ = SessionPhase::Greeting;
+        status_ = "Saying hello...";
+    }
+    for (proto::ServerMessage& m : link_->poll()) {
+        if (handle(m, local_s)) {
+            out.push_back(std::move(m));
+        }
+    }
+    if (st.state == LinkState::Closed && link_) {
+        on_link_lost(local_s, st.detail);
+        return out;
+    }
+    const bool pinging = phase_ == SessionPhase::Lobby || phase_ == SessionPhase::Joining ||
+                         phase_ == SessionPhase::InRoom;
+    if (pinging && local_s >= next_ping_s_ && link_) {
+        const std::int64_t nonce = next_nonce_++;
+        pings_in_flight_[nonce] = local_s;
+        while (pings_in_flight_.size() > 16) {
+            pings_in_flight_.erase(pings_in_flight_.begin());
+        }
+        link_->send(proto::Ping{nonce});
+        next_ping_s_ = local_s + config_.ping_interval_s;
+    }
+    return out;
+}
+
+bool ClientSession::handle(const proto::ServerMessage& m, double local_s) {
+    if (const auto* welcome = std::get_if<proto::Welcome>(&m)) {
+        token_ = welcome->resume_token;
+        player_id_ = welcome->player_id;
+        ever_welcomed_ = true;
+        attempts_ = 0;
+        status_ = "Connected";
+        if (resuming_) {
+            phase_ = SessionPhase::Joining; // the server sends the room back
+        } else {
+            phase_ = SessionPhase::Lobby;
+            if (request_) {
+                send_request();
+            }
+        }
+        return true;
+    }
+    if (std::holds_alternative<proto::RoomState>(m)) {
+        phase_ = SessionPhase::InRoom;
+        resuming_ = false;
+        status_ = "Connected";
+        return true;
+    }
+    if (const auto* pong = std::get_if<proto::Pong>(&m)) {
+        const auto it = pings_in_flight_.find(pong->nonce);
+        if (it != pings_in_flight_.end()) {
+            rtt_ms_ = std::max(local_s - it->second, 0.0) * 1000.0;
+            pongs_.push_back({pong->server_time_ms, it->second, local_s});
+            pings_in_flight_.erase(it);
+        }
+        return false;
+    }
+    if (const auto* error = std::get_if<proto::Error>(&m)) {
+        if (error->code == proto::code::kVersionMismatch) {
+            phase_ = SessionPhase::Failed;
+            status_ = "The server speaks another protocol version";
+        } else if (error->code == proto::code::kBadToken) {
+            resuming_ = false;
+            token_.clear();
+            phase_ = SessionPhase::Lobby;
+            request_.reset();
+            status_ = "Connected (your old seat is gone)";
+        } else if (phase_ == SessionPhase::Joining &&
+                   (error->code == proto::code::kRoomNotFound ||
+                    error->code == proto::code::kRoomFull)) {
+            phase_ = SessionPhase::Lobby;
+            request_.reset();
+            status_ = "Connected";
+        }
+        return true;
+    }
+    return true;
+}
+
+std::vector<ClientSession::PongSample> ClientSession::take_pongs() {
+    std::vector<PongSample> out;
+    out.swap(pongs_);
+    return out;
+}
+
+} // namespace carrom::client

@@ -1,0 +1,333 @@
+#include "carrom/client/match_model.hpp"
+
+#include "carrom/client/plain_words.hpp"
+#include "carrom/scene.hpp"
+
+#include <algorithm>
+#include <type_traits>
+
+namespace carrom::client {
+namespace {
+
+template <class... F> struct Overloaded : F... {
+    using F::operator()...;
+};
+template <class... F> Overloaded(F...) -> Overloaded<F...>;
+
+constexpr std::size_t kTurnsKept = 8;
+
+} // namespace
+
+MatchModel::MatchModel(const PhysicsConfig& physics, const PlayoutConfig& playout,
+                       const InterpolationConfig& interpolation)
+    : physics_(physics), playout_config_(playout), interpolation_config_(interpolation),
+      playout_(playout), buffer_(make_board_geometry(physics), interpolation) {
+    for (const Body& b : standard_layout(physics)) {
+        kinds_[b.id] = b.kind;
+    }
+    kinds_[kStrikerId] = BodyKind::Striker;
+}
+
+void MatchModel::reset() {
+    view_ = {};
+    playout_ = PlayoutClock(playout_config_);
+    buffer_ = InterpolationBuffer(make_board_geometry(physics_), interpolation_config_);
+    cues_.clear();
+    due_.clear();
+    turn_offsets_.clear();
+    pending_cues_.clear();
+    last_proto_seq_.reset();
+}
+
+void MatchModel::handle(const proto::ServerMessage& message, double local_s) {
+    std::visit(Overloaded{
+                   [&](const proto::Welcome& m) { server_clock_.one_way(m.server_time_ms, local_s); },
+                   [&](const proto::RoomState& m) { on_room_state(m, local_s); },
+                   [&](const proto::Snapshot& m) { on_snapshot(m, local_s); },
+                   [&](const proto::Event& m) { on_event(m, local_s); },
+                   [&](const proto::ShotResult& m) { on_shot_result(m, local_s); },
+                   [&](const proto::Error& m) { on_error(m, local_s); },
+                   [&](const proto::Pong&) {}, // the session measures round trips
+               },
+               message);
+}
+
+bool MatchModel::my_turn() const {
+    return view_.in_room && view_.you >= 0 && view_.phase == proto::Phase::Aiming &&
+           view_.to_play == view_.you;
+}
+
+bool MatchModel::flipped() const {
+    return view_.you >= 0 && seat_baseline(view_.you) == Baseline::Top;
+}
+
+std::optional<double> MatchModel::shot_clock_left_s(double local_s) const {
+    if (!view_.deadline_ms || view_.phase != proto::Phase::Aiming) {
+        return std::nullopt;
+    }
+    return seconds_until(server_clock_, *view_.deadline_ms, local_s);
+}
+
+std::string MatchModel::seat_name(int seat) const {
+    if (seat >= 0 && static_cast<std::size_t>(seat) < view_.seats.size() &&
+        !view_.seats[static_cast<std::size_t>(seat)].name.empty()) {
+        return view_.seats[static_cast<std::size_t>(seat)].name;
+    }
+    return "Seat " + std::to_string(seat + 1);
+}
+
+Baseline MatchModel::seat_baseline(int seat) const {
+    if (seat >= 0 && static_cast<std::size_t>(seat) < view_.seats.size()) {
+        return view_.seats[static_cast<std::size_t>(seat)].baseline;
+    }
+    return seat == 1 ? Baseline::Top : Baseline::Bottom;
+}
+
+BodyKind MatchModel::kind_of(int id) const {
+    const auto it = kinds_.find(id);
+    return it != kinds_.end() ? it->second : BodyKind::Black;
+}
+
+double MatchModel::continuous_now(double local_s) const {
+    const double now = local_s - playout_.base_transit_s();
+    return buffer_.empty() ? now : std::max(now, buffer_.newest_time() + 1e-3);
+}
+
+void MatchModel::on_room_state(const proto::RoomState& m, double local_s) {
+    if (view_.in_room && m.code != view_.code) {
+        reset();
+    }
+    const bool joined = !view_.in_room;
+    server_clock_.one_way(m.server_time_ms, local_s);
+    view_.in_room = true;
+    view_.code = m.code;
+    view_.you = m.you;
+    view_.rule_set = m.rule_set;
+    view_.options = m.options;
+    view_.spectators = m.spectators;
+    view_.board_number = m.board_number;
+    view_.turn = m.turn;
+    view_.to_play = m.to_play;
+    view_.phase = m.phase;
+    view_.queen = m.queen;
+    view_.winner = m.winner;
+    view_.deadline_ms = m.shot_clock_deadline_ms;
+    view_.seats.resize(m.seats.size());
+    for (std::size_t i = 0; i < m.seats.size(); ++i) {
+        SeatView& s = view_.seats[i];
+        const proto::SeatInfo& in = m.seats[i];
+        s = {in.occupied, in.name, in.connected, in.bot, in.colour, in.baseline, 0, 0};
+        s.score = i < m.scores.size() ? m.scores[i] : 0;
+        s.dues = i < m.dues.size() ? m.dues[i] : 0;
+    }
+    Snapshot keyframe;
+    keyframe.seq = next_seq_++;
+    keyframe.time_s = continuous_now(local_s);
+    keyframe.keyframe = true;
+    for (const proto::BoardBody& b : m.bodies) {
+        kinds_[b.id] = b.kind;
+        keyframe.bodies.push_back({b.id, b.kind, b.pos_px, b.vel_px_s, b.pocketed});
+    }
+    buffer_.push(keyframe);
+    if (joined) {
+        log_.post(m.you >= 0 ? "Joined room " + m.code : "Watching room " + m.code, Tone::Info,
+                  local_s);
+    }
+}
+
+void MatchModel::on_snapshot(const proto::Snapshot& m, double local_s) {
+    if (last_proto_seq_ && m.seq <= *last_proto_seq_ && !m.keyframe) {
+        return; // duplicate or reordered
+    }
+    last_proto_seq_ = m.seq;
+    if (!m.keyframe) {
+        view_.phase = proto::Phase::Moving;
+    }
+    auto offset = turn_offsets_.find(m.turn);
+    if (offset == turn_offsets_.end()) {
+        offset = turn_offsets_.emplace(m.turn, continuous_now(local_s) - m.t_s).first;
+        while (turn_offsets_.size() > kTurnsKept) {
+            turn_offsets_.erase(turn_offsets_.begin());
+        }
+        std::erase_if(pending_cues_, [&](PendingCue& p) {
+            if (p.turn != m.turn) {
+                return false;
+            }
+            p.cue.time_s = offset->second + p.t_s;
+            cues_.push(p.cue);
+            return true;
+        });
+    }
+    const std::vector<BodyState> before = board_now();
+    auto previous_pos = [&](int id) {
+        const auto it = std::find_if(before.begin(), before.end(),
+                                     [id](const BodyState& b) { return b.id == id; });
+        return it != before.end() ? it->pos_px : Vec2{};
+    };
+    Snapshot s;
+    s.seq = next_seq_++;
+    s.time_s = offset->second + m.t_s;
+    s.keyframe = m.keyframe;
+    for (const proto::SnapshotBody& b : m.bodies) {
+        s.bodies.push_back({b.id, kind_of(b.id), b.pos_px, b.vel_px_s, false});
+    }
+    for (int id : m.pocketed) {
+        s.bodies.push_back({id, kind_of(id), previous_pos(id), {}, true});
+    }
+    if (buffer_.push(s)) {
+        playout_.on_snapshot(s.time_s, local_s);
+    }
+}
+
+void MatchModel::cue(int turn, double t_s, SoundKind kind, double volume) {
+    if (volume <= 0.0) {
+        return;
+    }
+    const auto offset = turn_offsets_.find(turn);
+    if (offset == turn_offsets_.end()) {
+        pending_cues_.push_back({turn, t_s, {0.0, kind, volume}});
+        return;
+    }
+    cues_.push({offset->second + t_s, kind, volume});
+}
+
+void MatchModel::on_event(const proto::Event& m, double local_s) {
+    std::visit(
+        Overloaded{
+            [&](const proto::CollisionEvent& e) {
+                cue(e.turn, e.t_s, SoundKind::Click, loudness_from_impulse(e.impulse));
+            },
+            [&](const proto::CushionEvent& e) {
+                cue(e.turn, e.t_s, SoundKind::Cushion, 0.8 * loudness_from_impulse(e.impulse));
+            },
+            [&](const proto::PocketEvent& e) { cue(e.turn, e.t_s, SoundKind::Pocket, 1.0); },
+            [&](const proto::FoulEvent& e) {
+                log_.post(seat_name(e.seat) + ": " + e.message, Tone::Foul, local_s);
+            },
+            [&](const proto::QueenEvent& e) {
+                view_.queen = e.queen;
+                log_.post(queen_sentence(e.queen, seat_name(e.queen.seat)), Tone::Info, local_s);
+            },
+            [&](const proto::DueEvent& e) {
+                if (e.seat >= 0 && static_cast<std::size_t>(e.seat) < view_.seats.size()) {
+                    view_.seats[static_cast<std::size_t>(e.seat)].dues = e.owed;
+                }
+                if (e.owed > 0) {
+                    log_.post(seat_name(e.seat) + " owes " + count_words(e.owed, "due", "dues"),
+                              Tone::Foul, local_s);
+                }
+            },
+            [&](const proto::TurnEvent& e) {
+                server_clock_.one_way(e.server_time_ms, local_s);
+                view_.turn = e.turn;
+                view_.to_play = e.seat;
+                view_.deadline_ms = e.deadline_ms;
+                view_.phase = proto::Phase::Aiming;
+                view_.aim_x_px.reset();
+                log_.post(e.seat == view_.you ? "Your turn" : seat_name(e.seat) + " to play",
+                          Tone::Info, local_s);
+            },
+            [&](const proto::BoardEndEvent& e) {
+                for (std::size_t i = 0; i < e.scores.size() && i < view_.seats.size(); ++i) {
+                    view_.seats[i].score = e.scores[i];
+                }
+                view_.phase = proto::Phase::BoardOver;
+                log_.post(e.winner >= 0 ? "Board " + std::to_string(e.board) + " to " +
+                                              seat_name(e.winner) + " (+" +
+                                              std::to_string(e.points) + ")"
+                                        : "Board " + std::to_string(e.board) + " ends, no winner",
+                          Tone::Good, local_s);
+            },
+            [&](const proto::GameEndEvent& e) {
+                for (std::size_t i = 0; i < e.scores.size() && i < view_.seats.size(); ++i) {
+                    view_.seats[i].score = e.scores[i];
+                }
+                view_.winner = e.winner;
+                view_.phase = proto::Phase::GameOver;
+                log_.post(game_end_sentence(e.winner, e.winner == view_.you,
+                                            seat_name(e.winner), e.reason),
+                          Tone::Good, local_s);
+            },
+            [&](const proto::PlayerDroppedEvent& e) {
+                if (e.seat >= 0 && static_cast<std::size_t>(e.seat) < view_.seats.size()) {
+                    view_.seats[static_cast<std::size_t>(e.seat)].connected = false;
+                }
+                const auto grace_s = (e.grace_deadline_ms - e.server_time_ms) / 1000;
+                log_.post(seat_name(e.seat) + " lost the connection; they have " +
+                              std::to_string(grace_s) + " s to come back",
+                          Tone::Error, local_s);
+            },
+            [&](const proto::PlayerReturnedEvent& e) {
+                if (e.seat >= 0 && static_cast<std::size_t>(e.seat) < view_.seats.size()) {
+                    view_.seats[static_cast<std::size_t>(e.seat)].connected = true;
+                }
+                log_.post(seat_name(e.seat) + " is back", Tone::Info, local_s);
+            },
+            [&](const proto::AimEvent& e) {
+                if (e.seat != view_.you && e.turn == view_.turn) {
+                    view_.aim_x_px = e.x_px;
+                }
+            },
+        },
+        m);
+}
+
+void MatchModel::on_shot_result(const proto::ShotResult& m, double local_s) {
+    for (std::size_t i = 0; i < view_.seats.size(); ++i) {
+        if (i < m.scores.size()) {
+            view_.seats[i].score = m.scores[i];
+        }
+        if (i < m.dues.size()) {
+            view_.seats[i].dues = m.dues[i];
+        }
+    }
+    view_.queen = m.queen;
+    view_.turn = m.next_turn;
+    view_.to_play = m.next_seat;
+    std::vector<BodyKind> kinds;
+    for (int id : m.pocketed) {
+        kinds.push_back(kind_of(id));
+    }
+    if (!kinds.empty()) {
+        log_.post(seat_name(m.seat) + " pocketed " + pocket_list(kinds), Tone::Good, local_s);
+    }
+    if (m.extra_turn && !m.game_over && !m.board_over) {
+        log_.post(seat_name(m.seat) + " plays again", Tone::Info, local_s);
+    }
+}
+
+void MatchModel::on_error(const proto::Error& m, double local_s) {
+    log_.post(error_sentence(m), Tone::Error, local_s);
+}
+
+std::vector<RenderedBody> MatchModel::render(double local_s) {
+    const double t = playout_.render_time(local_s);
+    last_render_s_ = t;
+    std::vector<RenderedBody> bodies = buffer_.sample(t);
+    for (const SoundCue& c : cues_.take_due(t)) {
+        due_.push_back(c);
+    }
+    // While aiming, the striker is drawn where the shooter places it, not where it last stopped.
+    if (view_.phase == proto::Phase::Aiming && !animating()) {
+        std::erase_if(bodies, [](const RenderedBody& b) { return b.kind == BodyKind::Striker; });
+    }
+    return bodies;
+}
+
+std::vector<SoundCue> MatchModel::take_sounds() {
+    std::vector<SoundCue> out;
+    out.swap(due_);
+    return out;
+}
+
+bool MatchModel::animating() const {
+    return view_.phase == proto::Phase::Moving ||
+           (!buffer_.empty() && last_render_s_ < buffer_.newest_time());
+}
+
+std::vector<BodyState> MatchModel::board_now() const {
+    const std::vector<BodyState>* s = buffer_.newest_state();
+    return s != nullptr ? *s : std::vector<BodyState>{};
+}
+
+} // namespace carrom::client

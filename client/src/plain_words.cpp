@@ -1,0 +1,118 @@
+#include "carrom/client/plain_words.hpp"
+
+#include <array>
+#include <utility>
+
+namespace carrom::client {
+
+std::string count_words(int count, std::string_view one, std::string_view many) {
+    return std::to_string(count) + " " + std::string(count == 1 ? one : many);
+}
+
+std::string pocket_list(const std::vector<BodyKind>& kinds) {
+    int black = 0;
+    int white = 0;
+    bool queen = false;
+    bool striker = false;
+    for (BodyKind k : kinds) {
+        black += k == BodyKind::Black ? 1 : 0;
+        white += k == BodyKind::White ? 1 : 0;
+        queen = queen || k == BodyKind::Queen;
+        striker = striker || k == BodyKind::Striker;
+    }
+    std::vector<std::string> parts;
+    if (white > 0) {
+        parts.push_back(count_words(white, "white coin", "white coins"));
+    }
+    if (black > 0) {
+        parts.push_back(count_words(black, "black coin", "black coins"));
+    }
+    if (queen) {
+        parts.emplace_back("the queen");
+    }
+    if (striker) {
+        parts.emplace_back("the striker");
+    }
+    std::string out;
+    for (std::size_t i = 0; i < parts.size(); ++i) {
+        if (i > 0) {
+            out += i + 1 == parts.size() ? " and " : ", ";
+        }
+        out += parts[i];
+    }
+    return out.empty() ? "nothing" : out;
+}
+
+std::string queen_sentence(const proto::QueenInfo& queen, const std::string& seat_name) {
+    switch (queen.state) {
+    case proto::QueenState::Pending:
+        return seat_name + " pocketed the queen: cover it with the next coin";
+    case proto::QueenState::Covered:
+        return seat_name + " covered the queen";
+    case proto::QueenState::OnBoard:
+        return "The queen is back on the centre";
+    case proto::QueenState::None:
+        break;
+    }
+    return "The queen moved";
+}
+
+std::string game_end_sentence(int winner, bool we_won, const std::string& winner_name,
+                              std::string_view reason) {
+    std::string why;
+    if (reason == "forfeit" || reason == "left") {
+        why = " (the opponent left)";
+    } else if (reason == "clock") {
+        why = " (the opponent ran out of time)";
+    } else if (reason == "boards") {
+        why = " (all boards played)";
+    }
+    if (winner < 0) {
+        return "The game is drawn" + why;
+    }
+    return (we_won ? std::string("You win the game") : winner_name + " wins the game") + why;
+}
+
+std::string error_sentence(const proto::Error& error) {
+    namespace c = proto::code;
+    static const std::array<std::pair<std::string_view, std::string_view>, 14> plain{{
+        {c::kRoomNotFound, "There is no room with that code. Check the code and try again."},
+        {c::kRoomFull, "That room is full. You can join it as a spectator."},
+        {c::kNotYourTurn, "Wait for your turn."},
+        {c::kStaleTurn, "That shot was for an earlier turn and was not played."},
+        {c::kInMotion, "Wait until the pieces stop."},
+        {c::kIllegalPlacement, "The striker cannot go there: it overlaps a piece."},
+        {c::kIllegalShot, "That shot is not allowed."},
+        {c::kSpectator, "Spectators cannot play."},
+        {c::kVersionMismatch, "This client and the server speak different protocol versions. "
+                              "Update the client."},
+        {c::kBadToken, "Your seat could not be resumed: the grace period is over."},
+        {c::kServerFull, "The server is full. Try again in a moment."},
+        {c::kTooManyRooms, "The server has no room for another match. Try again later."},
+        {c::kRateLimited, "Too many messages: slow down."},
+        {c::kShuttingDown, "The server is shutting down."},
+    }};
+    for (const auto& [code, sentence] : plain) {
+        if (error.code == code) {
+            return std::string(sentence);
+        }
+    }
+    return error.message.empty() ? "The server reported an error (" + error.code + ")."
+                                 : error.message;
+}
+
+std::string rule_set_name(proto::RuleSet rule_set) {
+    switch (rule_set) {
+    case proto::RuleSet::Icf:
+        return "ICF rules";
+    case proto::RuleSet::Seed:
+        return "Classic (seed) rules";
+    case proto::RuleSet::Freestyle:
+        return "Freestyle";
+    case proto::RuleSet::DiscPool:
+        return "Disc pool";
+    }
+    return "Unknown rules";
+}
+
+} // namespace carrom::client

@@ -1,0 +1,25 @@
+#pragma once
+// A body on the board: a coin (black, white, queen) or the striker. Plain data.
+
+#include "carrom/vec2.hpp"
+
+#include <cstdint>
+#include <string_view>
+
+namespace carrom {
+
+enum class BodyKind : std::uint8_t { Black, White, Queen, Striker };
+
+struct Body {
+    int id = 0;                 // caller's id, unique within a scene; events name bodies by it
+    BodyKind kind = BodyKind::Black;
+    Vec2 pos_px{};              // centre
+    Vec2 vel_px_s{};            // zero for a body at rest
+    bool pocketed = false;      // a pocketed body takes no part in the simulation
+};
+
+std::string_view to_string(BodyKind kind);
+// Parses "black", "white", "queen", "striker"; returns false for anything else.
+bool parse_body_kind(std::string_view text, BodyKind& out);
+
+} // namespace carrom

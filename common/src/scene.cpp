@@ -1,0 +1,147 @@
+#include "carrom/scene.hpp"
+
+#include <cmath>
+#include <numbers>
+
+namespace carrom {
+
+namespace {
+
+// cos and sin of an angle given in whole degrees, reduced to the first quadrant first so that
+// mirror-image angles (a and 180 - a) give exactly negated x offsets and exact zeros on the axes.
+// This keeps the standard layout exactly mirror-symmetric about x = centre.
+Vec2 unit_at_degrees(int degrees) {
+    int a = ((degrees % 360) + 360) % 360;
+    double sx = 1.0;
+    double sy = 1.0;
+    if (a > 180) {
+        a = 360 - a;
+        sy = -1.0;
+    }
+    if (a > 90) {
+        a = 180 - a;
+        sx = -1.0;
+    }
+    if (a == 0) {
+        return {sx, 0.0};
+    }
+    if (a == 90) {
+        return {0.0, sy};
+    }
+    const double rad = a * std::numbers::pi / 180.0;
+    return {sx * std::cos(rad), sy * std::sin(rad)};
+}
+
+std::string fmt(double v) {
+    std::string s = std::to_string(v);
+    return s;
+}
+
+} // namespace
+
+std::vector<Body> standard_layout(const PhysicsConfig& config) {
+    std::vector<Body> bodies;
+    bodies.reserve(kCoinCount);
+    const Vec2 c = config.centre();
+    const double r = config.coin_radius_px;
+    bodies.push_back({kQueenId, BodyKind::Queen, c, {}, false});
+    // Inner ring: 6 at 2.5 r, starting straight up (-90 degrees), every 60 degrees.
+    for (int i = 0; i < 6; ++i) {
+        const BodyKind kind = i % 2 == 0 ? BodyKind::Black : BodyKind::White;
+        bodies.push_back({1 + i, kind, c + unit_at_degrees(-90 + 60 * i) * (2.5 * r), {}, false});
+    }
+    // Outer ring: 12 at 4.5 r, starting at 15 degrees, every 30 degrees.
+    for (int i = 0; i < 12; ++i) {
+        const BodyKind kind = i % 2 == 0 ? BodyKind::Black : BodyKind::White;
+        bodies.push_back({7 + i, kind, c + unit_at_degrees(15 + 30 * i) * (4.5 * r), {}, false});
+    }
+    return bodies;
+}
+
+double baseline_y(const PhysicsConfig& config, Baseline baseline) {
+    return baseline == Baseline::Bottom ? config.board_size_px - config.baseline_offset_px
+                                        : config.baseline_offset_px;
+}
+
+double baseline_x_min(const PhysicsConfig& config) {
+    return config.frame_px + config.baseline_end_margin_px + config.striker_radius_px;
+}
+
+double baseline_x_max(const PhysicsConfig& config) {
+    return config.board_size_px - baseline_x_min(config);
+}
+
+Body make_striker(const PhysicsConfig& config, Baseline baseline, const Shot& shot) {
+    const double speed = shot.power * config.power_to_speed;
+    const Vec2 pos{shot.x_px, baseline_y(config, baseline)};
+    const Vec2 vel{speed * std::cos(shot.angle_rad), speed * std::sin(shot.angle_rad)};
+    return {kStrikerId, BodyKind::Striker, pos, vel, false};
+}
+
+std::optional<SceneError> validate_scene(const PhysicsConfig& config, std::span<const Body> bodies,
+                                         double overlap_tolerance_px) {
+    for (std::size_t i = 0; i < bodies.size(); ++i) {
+        const Body& b = bodies[i];
+        const std::string_view kind = to_string(b.kind);
+        if (kind == "unknown") {
+            return SceneError{"bad_kind", b.id, "kind",
+                              "body " + std::to_string(b.id) + " has an unknown kind"};
+        }
+        for (std::size_t j = 0; j < i; ++j) {
+            if (bodies[j].id == b.id) {
+                return SceneError{"duplicate_id", b.id, "id",
+                                  "body " + std::to_string(b.id) + " appears more than once"};
+            }
+        }
+        const std::pair<const char*, double> fields[] = {
+            {"pos.x", b.pos_px.x}, {"pos.y", b.pos_px.y},
+            {"vel.x", b.vel_px_s.x}, {"vel.y", b.vel_px_s.y}};
+        for (const auto& [field, value] : fields) {
+            if (!std::isfinite(value)) {
+                return SceneError{"not_finite", b.id, field,
+                                  "body " + std::to_string(b.id) + " has a non-finite " + field};
+            }
+        }
+    }
+    for (const Body& b : bodies) {
+        if (b.pocketed) {
+            continue;
+        }
+        const double r = config.radius(b.kind);
+        const double lo = config.cushion_min(r);
+        const double hi = config.cushion_max(r);
+        const std::pair<const char*, double> axes[] = {{"pos.x", b.pos_px.x},
+                                                       {"pos.y", b.pos_px.y}};
+        for (const auto& [field, value] : axes) {
+            if (value < lo || value > hi) {
+                return SceneError{"outside_cushions", b.id, field,
+                                  "body " + std::to_string(b.id) + " has " + field + " = " +
+                                      fmt(value) + ", outside the cushions [" + fmt(lo) + ", " +
+                                      fmt(hi) + "] for its radius"};
+            }
+        }
+    }
+    for (std::size_t i = 0; i < bodies.size(); ++i) {
+        for (std::size_t j = i + 1; j < bodies.size(); ++j) {
+            const Body& a = bodies[i];
+            const Body& b = bodies[j];
+            if (a.pocketed || b.pocketed) {
+                continue;
+            }
+            const double reach = config.radius(a.kind) + config.radius(b.kind);
+            const Vec2 d = b.pos_px - a.pos_px;
+            if (std::fabs(d.x) >= reach || std::fabs(d.y) >= reach) {
+                continue; // cheap rejection; exact test below
+            }
+            const double overlap = reach - length(d);
+            if (overlap > overlap_tolerance_px) {
+                return SceneError{"overlap", b.id, "pos",
+                                  "body " + std::to_string(b.id) + " overlaps body " +
+                                      std::to_string(a.id) + " by " + fmt(overlap) + " px"};
+            }
+        }
+    }
+    return std::nullopt;
+}
+
+} // namespace carrom

@@ -1,0 +1,69 @@
+#pragma once
+// Value types shared by several messages, with their wire names. Each enum maps to one lowercase
+// string on the wire; parse_* return false for any other string.
+
+#include "carrom/body.hpp"
+#include "carrom/scene.hpp"
+#include "carrom/vec2.hpp"
+
+#include <cstdint>
+#include <optional>
+#include <string_view>
+
+namespace carrom::proto {
+
+enum class RuleSet : std::uint8_t { Icf, Seed, Freestyle, DiscPool };  // "icf" "seed" "freestyle" "discpool"
+enum class Role : std::uint8_t { Player, Spectator };                  // "player" "spectator"
+enum class Colour : std::uint8_t { None, Black, White };               // "none" "black" "white"
+enum class Phase : std::uint8_t { Waiting, Aiming, Moving, BoardOver, GameOver };
+// "waiting" (a seat is empty), "aiming" (to_play may shoot), "moving" (a shot is streaming),
+// "board_over" (between boards), "game_over" (rematch possible)
+enum class QueenState : std::uint8_t { OnBoard, Pending, Covered, None };
+// "on_board" "pending" "covered" "none" (a rule set without a queen: discpool)
+enum class BotLevel : std::uint8_t { Random, Easy, Medium, Hard };   // "random" "easy" ...
+
+std::string_view to_string(RuleSet value);
+std::string_view to_string(Role value);
+std::string_view to_string(Colour value);
+std::string_view to_string(Phase value);
+std::string_view to_string(QueenState value);
+std::string_view to_string(BotLevel value);
+std::string_view baseline_name(Baseline value); // "bottom" "top"
+std::string_view body_kind_name(BodyKind value); // "black" "white" "queen" "striker"
+
+bool parse(std::string_view text, RuleSet& out);
+bool parse(std::string_view text, Role& out);
+bool parse(std::string_view text, Colour& out);
+bool parse(std::string_view text, Phase& out);
+bool parse(std::string_view text, QueenState& out);
+bool parse(std::string_view text, BotLevel& out);
+bool parse(std::string_view text, Baseline& out);
+bool parse(std::string_view text, BodyKind& out);
+
+// Identifier checks (exact; no normalisation).
+bool is_room_code(std::string_view text);    // 6 characters of kRoomCodeAlphabet
+bool is_resume_token(std::string_view text); // 32 lowercase hex digits
+// A player name: 1..kMaxNameBytes bytes, no ASCII control characters, not all spaces.
+// (The JSON parser has already rejected invalid UTF-8.)
+bool is_player_name(std::string_view text);
+
+// One body of a full board (room_state). Pocketed bodies keep their last position.
+struct BoardBody {
+    int id = 0;
+    BodyKind kind = BodyKind::Black;
+    Vec2 pos_px{};
+    Vec2 vel_px_s{};
+    bool pocketed = false;
+    friend bool operator==(const BoardBody&, const BoardBody&) = default;
+};
+BoardBody to_board_body(const Body& body);
+Body to_body(const BoardBody& body);
+
+// Queen: on the board, pocketed and awaiting cover by `seat`, or covered by `seat`.
+struct QueenInfo {
+    QueenState state = QueenState::OnBoard;
+    int seat = -1; // -1 when on the board
+    friend bool operator==(const QueenInfo&, const QueenInfo&) = default;
+};
+
+} // namespace carrom::proto

@@ -1,0 +1,183 @@
+// JSON encoding and validating decoding of client -> server messages.
+#include "carrom/proto/json_codec.hpp"
+
+#include "field_reader.hpp"
+#include "message_names.hpp"
+
+#include <type_traits>
+
+namespace carrom::proto {
+
+using detail::FieldReader;
+using nlohmann::json;
+
+namespace {
+
+json encode_options(const RoomOptions& options) {
+    json out = json::object();
+    if (options.target_points) {
+        out["target_points"] = *options.target_points;
+    }
+    if (options.boards) {
+        out["boards"] = *options.boards;
+    }
+    if (options.shot_clock_s) {
+        out["shot_clock_s"] = *options.shot_clock_s;
+    }
+    return out;
+}
+
+json encode_body(const Hello& m) {
+    json out{{"version", m.version}, {"name", m.name}};
+    if (m.resume_token) {
+        out["resume_token"] = *m.resume_token;
+    }
+    return out;
+}
+json encode_body(const CreateRoom& m) {
+    json out{{"rule_set", to_string(m.rule_set)}, {"options", encode_options(m.options)}};
+    if (m.bot) {
+        out["bot"] = json{{"level", to_string(m.bot->level)}};
+    }
+    return out;
+}
+json encode_body(const JoinRoom& m) { return json{{"code", m.code}, {"as", to_string(m.as)}}; }
+json encode_body(const QuickMatch& m) { return json{{"rule_set", to_string(m.rule_set)}}; }
+json encode_body(const Aim& m) { return json{{"turn", m.turn}, {"x", m.x_px}}; }
+json encode_body(const Shoot& m) {
+    return json{{"turn", m.turn}, {"x", m.x_px}, {"angle", m.angle_rad}, {"power", m.power}};
+}
+json encode_body(const Rematch&) { return json::object(); }
+json encode_body(const Leave&) { return json::object(); }
+json encode_body(const Ping& m) { return json{{"nonce", m.nonce}}; }
+
+// Decoders: each reads its fields from `r`; the caller checks r.ok().
+void decode_body(FieldReader& r, Hello& m) {
+    m.version = r.small_int("version", 0, 1000000);
+    m.name = r.text("name", 1, kMaxNameBytes);
+    if (r.ok() && !is_player_name(m.name)) {
+        r.fail("name", "must have a visible character");
+    }
+    if (r.has("resume_token")) {
+        m.resume_token = r.text("resume_token", kResumeTokenLength, kResumeTokenLength);
+        if (r.ok() && !is_resume_token(*m.resume_token)) {
+            r.fail("resume_token", "must be 32 lowercase hexadecimal digits");
+        }
+    }
+}
+
+void decode_options(FieldReader& r, RoomOptions& options) {
+    if (r.has("target_points")) {
+        options.target_points = r.small_int("target_points", 1, kMaxTargetPoints);
+    }
+    if (r.has("boards")) {
+        options.boards = r.small_int("boards", 1, kMaxBoards);
+    }
+    if (r.has("shot_clock_s")) {
+        options.shot_clock_s = r.number("shot_clock_s", 0.0, kMaxShotClockS);
+    }
+}
+
+void decode_body(FieldReader& r, CreateRoom& m) {
+    if (r.has("rule_set")) {
+        m.rule_set = r.enumeration("rule_set", RuleSet::Icf);
+    }
+    if (r.has("options")) {
+        if (const json* options = r.object("options")) {
+            FieldReader child(*options, "options.");
+            decode_options(child, m.options);
+            r.merge(child);
+        }
+    }
+    if (r.has("bot")) {
+        if (const json* bot = r.object("bot")) {
+            FieldReader child(*bot, "bot.");
+            BotSeat seat;
+            if (child.has("level")) {
+                seat.level = child.enumeration("level", BotLevel::Medium);
+            }
+            r.merge(child);
+            m.bot = seat;
+        }
+    }
+}
+
+void decode_body(FieldReader& r, JoinRoom& m) {
+    m.code = r.text("code", kRoomCodeLength, kRoomCodeLength);
+    if (r.ok() && !is_room_code(m.code)) {
+        r.fail("code", "must be 6 characters from " + std::string(kRoomCodeAlphabet));
+    }
+    if (r.has("as")) {
+        m.as = r.enumeration("as", Role::Player);
+    }
+}
+
+void decode_body(FieldReader& r, QuickMatch& m) {
+    if (r.has("rule_set")) {
+        m.rule_set = r.enumeration("rule_set", RuleSet::Icf);
+    }
+}
+
+void decode_body(FieldReader& r, Aim& m) {
+    m.turn = static_cast<int>(r.integer("turn", 0, kMaxTurn));
+    m.x_px = r.number("x", 0.0, kMaxCoordinatePx);
+}
+
+void decode_body(FieldReader& r, Shoot& m) {
+    m.turn = static_cast<int>(r.integer("turn", 0, kMaxTurn));
+    m.x_px = r.number("x", 0.0, kMaxCoordinatePx);
+    m.angle_rad = r.number("angle", -kMaxAngleRad, kMaxAngleRad);
+    m.power = r.number("power", 0.0, kMaxPower);
+}
+
+void decode_body(FieldReader&, Rematch&) {}
+void decode_body(FieldReader&, Leave&) {}
+void decode_body(FieldReader& r, Ping& m) { m.nonce = r.integer("nonce", 0, kMaxNonce); }
+
+template <class M> Decoded<ClientMessage> decode_as(const json& value) {
+    FieldReader reader(value, "");
+    M message;
+    decode_body(reader, message);
+    if (!reader.ok()) {
+        return {std::nullopt, *reader.error()};
+    }
+    return {ClientMessage{std::move(message)}, {}};
+}
+
+template <std::size_t I = 0>
+Decoded<ClientMessage> decode_index(std::size_t index, const json& value) {
+    if constexpr (I < std::variant_size_v<ClientMessage>) {
+        if (index == I) {
+            return decode_as<std::variant_alternative_t<I, ClientMessage>>(value);
+        }
+        return decode_index<I + 1>(index, value);
+    } else {
+        return {std::nullopt, Error{std::string(code::kInternal), "No such message index."}};
+    }
+}
+
+} // namespace
+
+std::string_view type_name(const ClientMessage& message) {
+    return detail::kClientTypeNames[message.index()];
+}
+
+json to_json(const ClientMessage& message) {
+    json out = std::visit([](const auto& m) { return encode_body(m); }, message);
+    out["type"] = type_name(message);
+    return out;
+}
+
+Decoded<ClientMessage> client_from_json(const json& value) {
+    const auto type = detail::message_type(value);
+    if (!type.ok()) {
+        return {std::nullopt, type.error};
+    }
+    const auto index = detail::find_type(detail::kClientTypeNames, type.name);
+    if (!index) {
+        return {std::nullopt, detail::unknown_type_error(type.name)};
+    }
+    return decode_index(*index, value);
+}
+
+} // namespace carrom::proto

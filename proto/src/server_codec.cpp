@@ -1,0 +1,470 @@
+// JSON encoding and validating decoding of server -> client messages. Clients decode with the
+// same care as the server: a broken or hostile server must not crash them.
+#include "carrom/proto/json_codec.hpp"
+
+#include "field_reader.hpp"
+#include "message_names.hpp"
+
+namespace carrom::proto {
+
+using detail::FieldReader;
+using nlohmann::json;
+
+namespace {
+
+constexpr int kMaxId = 1000000;
+constexpr int kMaxScore = 100000;
+constexpr int kMaxSeatIndex = static_cast<int>(kMaxSeats) - 1;
+
+json encode_queen(const QueenInfo& q) {
+    return json{{"state", to_string(q.state)}, {"seat", q.seat}};
+}
+
+void decode_queen(FieldReader& parent, std::string_view key, QueenInfo& q) {
+    const json* value = parent.object(key);
+    if (value == nullptr) {
+        return;
+    }
+    FieldReader r(*value, parent.field_name(key) + ".");
+    q.state = r.enumeration("state", QueenState::OnBoard);
+    q.seat = r.small_int("seat", -1, kMaxSeatIndex);
+    parent.merge(r);
+}
+
+void decode_optional_time(FieldReader& r, std::string_view key, std::optional<std::int64_t>& out) {
+    if (r.has(key)) {
+        out = r.integer(key, 0, kMaxTimeMs);
+    }
+}
+
+// --- welcome ---
+json encode_body(const Welcome& m) {
+    return json{{"version", m.version},
+                {"player_id", m.player_id},
+                {"resume_token", m.resume_token},
+                {"server_time_ms", m.server_time_ms}};
+}
+void decode_body(FieldReader& r, Welcome& m) {
+    m.version = r.small_int("version", 0, 1000000);
+    m.player_id = r.integer("player_id", 0, kMaxNonce);
+    m.resume_token = r.text("resume_token", kResumeTokenLength, kResumeTokenLength);
+    if (r.ok() && !is_resume_token(m.resume_token)) {
+        r.fail("resume_token", "must be 32 lowercase hexadecimal digits");
+    }
+    m.server_time_ms = r.integer("server_time_ms", 0, kMaxTimeMs);
+}
+
+// --- room_state ---
+json encode_seat(const SeatInfo& s) {
+    return json{{"occupied", s.occupied},     {"name", s.name},
+                {"connected", s.connected},   {"bot", s.bot},
+                {"colour", to_string(s.colour)}, {"baseline", baseline_name(s.baseline)}};
+}
+void decode_seat(FieldReader& r, SeatInfo& s) {
+    s.occupied = r.boolean("occupied");
+    s.name = r.text("name", 0, kMaxNameBytes);
+    s.connected = r.boolean("connected");
+    s.bot = r.boolean("bot");
+    s.colour = r.enumeration("colour", Colour::None);
+    s.baseline = r.enumeration("baseline", Baseline::Bottom);
+}
+
+json encode_board_body(const BoardBody& b) {
+    return json{{"id", b.id},           {"kind", body_kind_name(b.kind)}, {"x", b.pos_px.x},
+                {"y", b.pos_px.y},      {"vx", b.vel_px_s.x},            {"vy", b.vel_px_s.y},
+                {"pocketed", b.pocketed}};
+}
+void decode_board_body(FieldReader& r, BoardBody& b) {
+    b.id = r.small_int("id", 0, kMaxId);
+    b.kind = r.enumeration("kind", BodyKind::Black);
+    b.pos_px.x = r.number("x", -kMaxCoordinatePx, kMaxCoordinatePx);
+    b.pos_px.y = r.number("y", -kMaxCoordinatePx, kMaxCoordinatePx);
+    b.vel_px_s.x = r.number("vx", -kMaxSpeedPxS, kMaxSpeedPxS);
+    b.vel_px_s.y = r.number("vy", -kMaxSpeedPxS, kMaxSpeedPxS);
+    b.pocketed = r.boolean("pocketed");
+}
+
+// Reads an array of objects with `decode_item` into `out`.
+template <class T, class F>
+void decode_object_array(FieldReader& r, std::string_view key, std::size_t max_items,
+                         std::vector<T>& out, F decode_item) {
+    const json* items = r.array(key, max_items);
+    if (items == nullptr) {
+        return;
+    }
+    for (std::size_t i = 0; i < items->size() && r.ok(); ++i) {
+        const json& item = (*items)[i];
+        const std::string path = r.field_name(key) + "[" + std::to_string(i) + "]";
+        if (!item.is_object()) {
+            r.fail(std::string(key) + "[" + std::to_string(i) + "]", "must be an object");
+            return;
+        }
+        FieldReader child(item, path + ".");
+        T value;
+        decode_item(child, value);
+        r.merge(child);
+        out.push_back(std::move(value));
+    }
+}
+
+json encode_body(const RoomState& m) {
+    json seats = json::array();
+    for (const auto& s : m.seats) {
+        seats.push_back(encode_seat(s));
+    }
+    json bodies = json::array();
+    for (const auto& b : m.bodies) {
+        bodies.push_back(encode_board_body(b));
+    }
+    json out{{"code", m.code},
+             {"you", m.you},
+             {"rule_set", to_string(m.rule_set)},
+             {"options",
+              {{"target_points", m.options.target_points},
+               {"boards", m.options.boards},
+               {"shot_clock_s", m.options.shot_clock_s}}},
+             {"seats", std::move(seats)},
+             {"spectators", m.spectators},
+             {"scores", m.scores},
+             {"dues", m.dues},
+             {"board_number", m.board_number},
+             {"turn", m.turn},
+             {"to_play", m.to_play},
+             {"server_time_ms", m.server_time_ms},
+             {"phase", to_string(m.phase)},
+             {"queen", encode_queen(m.queen)},
+             {"winner", m.winner},
+             {"bodies", std::move(bodies)}};
+    if (m.shot_clock_deadline_ms) {
+        out["shot_clock_deadline_ms"] = *m.shot_clock_deadline_ms;
+    }
+    return out;
+}
+void decode_body(FieldReader& r, RoomState& m) {
+    m.code = r.text("code", kRoomCodeLength, kRoomCodeLength);
+    if (r.ok() && !is_room_code(m.code)) {
+        r.fail("code", "must be a room code");
+    }
+    m.you = r.small_int("you", -1, kMaxSeatIndex);
+    m.rule_set = r.enumeration("rule_set", RuleSet::Icf);
+    if (const json* options = r.object("options")) {
+        FieldReader o(*options, "options.");
+        m.options.target_points = o.small_int("target_points", 1, kMaxTargetPoints);
+        m.options.boards = o.small_int("boards", 1, kMaxBoards);
+        m.options.shot_clock_s = o.number("shot_clock_s", 0.0, kMaxShotClockS);
+        r.merge(o);
+    }
+    decode_object_array(r, "seats", kMaxSeats, m.seats, decode_seat);
+    if (r.ok() && m.seats.size() < 2) {
+        r.fail("seats", "must have 2 to 4 items");
+    }
+    m.spectators = r.small_int("spectators", 0, 1000000);
+    m.scores = r.int_array("scores", -kMaxScore, kMaxScore, kMaxSeats);
+    m.dues = r.int_array("dues", 0, kMaxScore, kMaxSeats);
+    if (r.ok() && (m.scores.size() != m.seats.size() || m.dues.size() != m.seats.size())) {
+        r.fail("scores", "and 'dues' must have one item per seat");
+    }
+    m.board_number = r.small_int("board_number", 1, 1000);
+    m.turn = static_cast<int>(r.integer("turn", 0, kMaxTurn));
+    m.to_play = r.small_int("to_play", 0, kMaxSeatIndex);
+    decode_optional_time(r, "shot_clock_deadline_ms", m.shot_clock_deadline_ms);
+    m.server_time_ms = r.integer("server_time_ms", 0, kMaxTimeMs);
+    m.phase = r.enumeration("phase", Phase::Waiting);
+    decode_queen(r, "queen", m.queen);
+    m.winner = r.small_int("winner", -1, kMaxSeatIndex);
+    decode_object_array(r, "bodies", kMaxBodies, m.bodies, decode_board_body);
+}
+
+// --- snapshot ---
+json encode_body(const Snapshot& m) {
+    json bodies = json::array();
+    for (const auto& b : m.bodies) {
+        bodies.push_back(json::array({b.id, b.pos_px.x, b.pos_px.y, b.vel_px_s.x, b.vel_px_s.y}));
+    }
+    return json{{"seq", m.seq},          {"turn", m.turn},
+                {"t", m.t_s},            {"keyframe", m.keyframe},
+                {"bodies", std::move(bodies)}, {"pocketed", m.pocketed}};
+}
+bool decode_snapshot_body(const json& item, SnapshotBody& b) {
+    if (!item.is_array() || item.size() != 5) {
+        return false;
+    }
+    std::int64_t id = 0;
+    return detail::read_integer(item[0], 0, kMaxId, id) &&
+           detail::read_number(item[1], -kMaxCoordinatePx, kMaxCoordinatePx, b.pos_px.x) &&
+           detail::read_number(item[2], -kMaxCoordinatePx, kMaxCoordinatePx, b.pos_px.y) &&
+           detail::read_number(item[3], -kMaxSpeedPxS, kMaxSpeedPxS, b.vel_px_s.x) &&
+           detail::read_number(item[4], -kMaxSpeedPxS, kMaxSpeedPxS, b.vel_px_s.y) &&
+           (b.id = static_cast<int>(id), true);
+}
+void decode_body(FieldReader& r, Snapshot& m) {
+    m.seq = r.integer("seq", 0, kMaxNonce);
+    m.turn = static_cast<int>(r.integer("turn", 0, kMaxTurn));
+    m.t_s = r.number("t", 0.0, kMaxMatchTimeS);
+    m.keyframe = r.boolean("keyframe");
+    if (const json* bodies = r.array("bodies", kMaxBodies)) {
+        for (const json& item : *bodies) {
+            SnapshotBody b;
+            if (!decode_snapshot_body(item, b)) {
+                r.fail("bodies", "must hold [id, x, y, vx, vy] arrays of finite numbers in range");
+                break;
+            }
+            m.bodies.push_back(b);
+        }
+    }
+    m.pocketed = r.int_array("pocketed", 0, kMaxId, kMaxBodies);
+}
+
+// --- events ---
+json encode_event(const CollisionEvent& e) {
+    return json{{"turn", e.turn}, {"t", e.t_s}, {"a", e.a}, {"b", e.b}, {"impulse", e.impulse}};
+}
+json encode_event(const CushionEvent& e) {
+    return json{{"turn", e.turn},
+                {"t", e.t_s},
+                {"body", e.body},
+                {"cushion", e.cushion},
+                {"impulse", e.impulse}};
+}
+json encode_event(const PocketEvent& e) {
+    return json{{"turn", e.turn}, {"t", e.t_s}, {"body", e.body}, {"pocket", e.pocket}};
+}
+json encode_event(const FoulEvent& e) {
+    return json{{"seat", e.seat}, {"rule", e.rule}, {"message", e.message}};
+}
+json encode_event(const QueenEvent& e) { return json{{"queen", encode_queen(e.queen)}}; }
+json encode_event(const DueEvent& e) { return json{{"seat", e.seat}, {"owed", e.owed}}; }
+json encode_event(const TurnEvent& e) {
+    json out{{"turn", e.turn}, {"seat", e.seat}, {"server_time_ms", e.server_time_ms}};
+    if (e.deadline_ms) {
+        out["deadline_ms"] = *e.deadline_ms;
+    }
+    return out;
+}
+json encode_event(const BoardEndEvent& e) {
+    return json{
+        {"board", e.board}, {"winner", e.winner}, {"points", e.points}, {"scores", e.scores}};
+}
+json encode_event(const GameEndEvent& e) {
+    return json{{"winner", e.winner}, {"reason", e.reason}, {"scores", e.scores}};
+}
+json encode_event(const PlayerDroppedEvent& e) {
+    return json{{"seat", e.seat},
+                {"grace_deadline_ms", e.grace_deadline_ms},
+                {"server_time_ms", e.server_time_ms}};
+}
+json encode_event(const PlayerReturnedEvent& e) { return json{{"seat", e.seat}}; }
+json encode_event(const AimEvent& e) {
+    return json{{"seat", e.seat}, {"turn", e.turn}, {"x", e.x_px}};
+}
+
+int read_turn(FieldReader& r) { return static_cast<int>(r.integer("turn", 0, kMaxTurn)); }
+double read_time(FieldReader& r) { return r.number("t", 0.0, kMaxMatchTimeS); }
+int read_seat(FieldReader& r, std::string_view key) { return r.small_int(key, 0, kMaxSeatIndex); }
+
+void decode_event(FieldReader& r, CollisionEvent& e) {
+    e.turn = read_turn(r);
+    e.t_s = read_time(r);
+    e.a = r.small_int("a", 0, kMaxId);
+    e.b = r.small_int("b", 0, kMaxId);
+    e.impulse = r.number("impulse", 0.0, kMaxImpulse);
+}
+void decode_event(FieldReader& r, CushionEvent& e) {
+    e.turn = read_turn(r);
+    e.t_s = read_time(r);
+    e.body = r.small_int("body", 0, kMaxId);
+    e.cushion = r.small_int("cushion", 0, 3);
+    e.impulse = r.number("impulse", 0.0, kMaxImpulse);
+}
+void decode_event(FieldReader& r, PocketEvent& e) {
+    e.turn = read_turn(r);
+    e.t_s = read_time(r);
+    e.body = r.small_int("body", 0, kMaxId);
+    e.pocket = r.small_int("pocket", 0, 3);
+}
+void decode_event(FieldReader& r, FoulEvent& e) {
+    e.seat = read_seat(r, "seat");
+    e.rule = r.text("rule", 1, kMaxTextBytes);
+    e.message = r.text("message", 0, kMaxTextBytes);
+}
+void decode_event(FieldReader& r, QueenEvent& e) { decode_queen(r, "queen", e.queen); }
+void decode_event(FieldReader& r, DueEvent& e) {
+    e.seat = read_seat(r, "seat");
+    e.owed = r.small_int("owed", 0, kMaxScore);
+}
+void decode_event(FieldReader& r, TurnEvent& e) {
+    e.turn = read_turn(r);
+    e.seat = read_seat(r, "seat");
+    decode_optional_time(r, "deadline_ms", e.deadline_ms);
+    e.server_time_ms = r.integer("server_time_ms", 0, kMaxTimeMs);
+}
+void decode_event(FieldReader& r, BoardEndEvent& e) {
+    e.board = r.small_int("board", 1, 1000);
+    e.winner = r.small_int("winner", -1, kMaxSeatIndex);
+    e.points = r.small_int("points", -kMaxScore, kMaxScore);
+    e.scores = r.int_array("scores", -kMaxScore, kMaxScore, kMaxSeats);
+}
+void decode_event(FieldReader& r, GameEndEvent& e) {
+    e.winner = r.small_int("winner", -1, kMaxSeatIndex);
+    e.reason = r.text("reason", 1, 32);
+    e.scores = r.int_array("scores", -kMaxScore, kMaxScore, kMaxSeats);
+}
+void decode_event(FieldReader& r, PlayerDroppedEvent& e) {
+    e.seat = read_seat(r, "seat");
+    e.grace_deadline_ms = r.integer("grace_deadline_ms", 0, kMaxTimeMs);
+    e.server_time_ms = r.integer("server_time_ms", 0, kMaxTimeMs);
+}
+void decode_event(FieldReader& r, PlayerReturnedEvent& e) { e.seat = read_seat(r, "seat"); }
+void decode_event(FieldReader& r, AimEvent& e) {
+    e.seat = read_seat(r, "seat");
+    e.turn = read_turn(r);
+    e.x_px = r.number("x", 0.0, kMaxCoordinatePx);
+}
+
+template <std::size_t I = 0> bool decode_event_index(std::size_t index, FieldReader& r, Event& out) {
+    if constexpr (I < std::variant_size_v<Event>) {
+        if (index == I) {
+            std::variant_alternative_t<I, Event> e;
+            decode_event(r, e);
+            out = std::move(e);
+            return true;
+        }
+        return decode_event_index<I + 1>(index, r, out);
+    } else {
+        return false;
+    }
+}
+
+json encode_body(const Event& m) {
+    json out = std::visit([](const auto& e) { return encode_event(e); }, m);
+    out["kind"] = event_kind(m);
+    return out;
+}
+void decode_body(FieldReader& r, Event& m) {
+    const std::string kind = r.text("kind", 1, 32);
+    if (!r.ok()) {
+        return;
+    }
+    const auto index = detail::find_type(detail::kEventKindNames, kind);
+    if (!index) {
+        r.fail("kind", "must name a known event kind");
+        return;
+    }
+    decode_event_index(*index, r, m);
+}
+
+// --- shot_result ---
+json encode_body(const ShotResult& m) {
+    json fouls = json::array();
+    for (const auto& f : m.fouls) {
+        fouls.push_back(json{{"rule", f.rule}, {"message", f.message}});
+    }
+    return json{{"turn", m.turn},
+                {"seat", m.seat},
+                {"x", m.x_px},
+                {"angle", m.angle_rad},
+                {"power", m.power},
+                {"pocketed", m.pocketed},
+                {"returned", m.returned},
+                {"fouls", std::move(fouls)},
+                {"points", m.points},
+                {"scores", m.scores},
+                {"dues", m.dues},
+                {"queen", encode_queen(m.queen)},
+                {"extra_turn", m.extra_turn},
+                {"next_turn", m.next_turn},
+                {"next_seat", m.next_seat},
+                {"board_over", m.board_over},
+                {"game_over", m.game_over},
+                {"winner", m.winner}};
+}
+void decode_foul(FieldReader& r, Foul& f) {
+    f.rule = r.text("rule", 1, kMaxTextBytes);
+    f.message = r.text("message", 0, kMaxTextBytes);
+}
+void decode_body(FieldReader& r, ShotResult& m) {
+    m.turn = read_turn(r);
+    m.seat = read_seat(r, "seat");
+    m.x_px = r.number("x", 0.0, kMaxCoordinatePx);
+    m.angle_rad = r.number("angle", -kMaxAngleRad, kMaxAngleRad);
+    m.power = r.number("power", 0.0, kMaxPower);
+    m.pocketed = r.int_array("pocketed", 0, kMaxId, kMaxBodies);
+    m.returned = r.int_array("returned", 0, kMaxId, kMaxBodies);
+    decode_object_array(r, "fouls", 16, m.fouls, decode_foul);
+    m.points = r.int_array("points", -kMaxScore, kMaxScore, kMaxSeats);
+    m.scores = r.int_array("scores", -kMaxScore, kMaxScore, kMaxSeats);
+    m.dues = r.int_array("dues", 0, kMaxScore, kMaxSeats);
+    decode_queen(r, "queen", m.queen);
+    m.extra_turn = r.boolean("extra_turn");
+    m.next_turn = static_cast<int>(r.integer("next_turn", 0, kMaxTurn));
+    m.next_seat = read_seat(r, "next_seat");
+    m.board_over = r.boolean("board_over");
+    m.game_over = r.boolean("game_over");
+    m.winner = r.small_int("winner", -1, kMaxSeatIndex);
+}
+
+// --- error, pong ---
+json encode_body(const Error& m) { return json{{"code", m.code}, {"message", m.message}}; }
+void decode_body(FieldReader& r, Error& m) {
+    m.code = r.text("code", 1, 64);
+    m.message = r.text("message", 0, kMaxTextBytes);
+}
+json encode_body(const Pong& m) {
+    return json{{"nonce", m.nonce}, {"server_time_ms", m.server_time_ms}};
+}
+void decode_body(FieldReader& r, Pong& m) {
+    m.nonce = r.integer("nonce", 0, kMaxNonce);
+    m.server_time_ms = r.integer("server_time_ms", 0, kMaxTimeMs);
+}
+
+template <class M> Decoded<ServerMessage> decode_as(const json& value) {
+    FieldReader reader(value, "");
+    M message;
+    decode_body(reader, message);
+    if (!reader.ok()) {
+        return {std::nullopt, *reader.error()};
+    }
+    return {ServerMessage{std::move(message)}, {}};
+}
+
+template <std::size_t I = 0>
+Decoded<ServerMessage> decode_index(std::size_t index, const json& value) {
+    if constexpr (I < std::variant_size_v<ServerMessage>) {
+        if (index == I) {
+            return decode_as<std::variant_alternative_t<I, ServerMessage>>(value);
+        }
+        return decode_index<I + 1>(index, value);
+    } else {
+        return {std::nullopt, Error{std::string(code::kInternal), "No such message index."}};
+    }
+}
+
+} // namespace
+
+std::string_view type_name(const ServerMessage& message) {
+    return detail::kServerTypeNames[message.index()];
+}
+
+std::string_view event_kind(const Event& event) {
+    return detail::kEventKindNames[event.index()];
+}
+
+json to_json(const ServerMessage& message) {
+    json out = std::visit([](const auto& m) { return encode_body(m); }, message);
+    out["type"] = type_name(message);
+    return out;
+}
+
+Decoded<ServerMessage> server_from_json(const json& value) {
+    const auto type = detail::message_type(value);
+    if (!type.ok()) {
+        return {std::nullopt, type.error};
+    }
+    const auto index = detail::find_type(detail::kServerTypeNames, type.name);
+    if (!index) {
+        return {std::nullopt, detail::unknown_type_error(type.name)};
+    }
+    return decode_index(*index, value);
+}
+
+} // namespace carrom::proto

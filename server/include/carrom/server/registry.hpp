@@ -1,0 +1,164 @@
+#pragma once
+// The server-wide registry, shared by all threads (one mutex, short critical sections): rooms by
+// code (with the room limit), players by resume token, and the quick-match queue. It never
+// touches a room's state; the room type is a parameter so tests can use a plain one.
+
+#include "carrom/proto/error.hpp"
+#include "carrom/proto/types.hpp"
+#include "carrom/server/random.hpp"
+
+#include <algorithm>
+#include <cstdint>
+#include <deque>
+#include <functional>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <unordered_map>
+#include <variant>
+#include <vector>
+
+namespace carrom::server {
+
+struct PlayerRecord {
+    std::int64_t player_id = 0;
+    std::string token;
+    std::string room_code; // the room the player last took a seat in ("" if none)
+};
+
+template <class RoomT, class WaiterT> class Registry {
+public:
+    Registry(RandomSource& random, std::size_t max_rooms) : random_(random), max_rooms_(max_rooms) {}
+
+    // --- players ---
+    PlayerRecord new_player() {
+        std::lock_guard lock(mutex_);
+        PlayerRecord record;
+        record.player_id = next_player_id_++;
+        do {
+            record.token = make_resume_token(random_);
+        } while (players_.count(record.token) != 0);
+        players_[record.token] = record;
+        return record;
+    }
+    std::optional<PlayerRecord> find_player(const std::string& token) const {
+        std::lock_guard lock(mutex_);
+        const auto it = players_.find(token);
+        if (it == players_.end()) {
+            return std::nullopt;
+        }
+        return it->second;
+    }
+    void set_player_room(const std::string& token, const std::string& room_code) {
+        std::lock_guard lock(mutex_);
+        if (auto it = players_.find(token); it != players_.end()) {
+            it->second.room_code = room_code;
+        }
+    }
+    // Forgets a player whose connection ended while not seated anywhere.
+    void forget_player(const std::string& token) {
+        std::lock_guard lock(mutex_);
+        players_.erase(token);
+    }
+    std::size_t player_count() const {
+        std::lock_guard lock(mutex_);
+        return players_.size();
+    }
+
+    // --- rooms ---
+    using RoomFactory = std::function<std::shared_ptr<RoomT>(const std::string& code)>;
+    // A new room with a fresh code, or too_many_rooms.
+    std::variant<std::shared_ptr<RoomT>, proto::Error> create_room(const RoomFactory& make) {
+        std::lock_guard lock(mutex_);
+        if (rooms_.size() >= max_rooms_) {
+            return proto::Error{std::string(proto::code::kTooManyRooms),
+                                "The server has no room for another room; try again later."};
+        }
+        std::string code;
+        do {
+            code = make_room_code(random_);
+        } while (rooms_.count(code) != 0);
+        auto room = make(code);
+        rooms_[code] = room;
+        return room;
+    }
+    std::shared_ptr<RoomT> find_room(const std::string& code) const {
+        std::lock_guard lock(mutex_);
+        const auto it = rooms_.find(code);
+        return it == rooms_.end() ? nullptr : it->second;
+    }
+    // Removes the room; players last seated there no longer point at it.
+    void remove_room(const std::string& code) {
+        std::lock_guard lock(mutex_);
+        rooms_.erase(code);
+        for (auto& [token, record] : players_) {
+            if (record.room_code == code) {
+                record.room_code.clear();
+            }
+        }
+    }
+    std::size_t room_count() const {
+        std::lock_guard lock(mutex_);
+        return rooms_.size();
+    }
+    template <class F> void for_each_room(F&& f) const {
+        std::vector<std::shared_ptr<RoomT>> rooms;
+        {
+            std::lock_guard lock(mutex_);
+            for (const auto& [code, room] : rooms_) {
+                rooms.push_back(room);
+            }
+        }
+        for (auto& room : rooms) {
+            f(room);
+        }
+    }
+
+    // --- quick match ---
+    // Pairs the waiter with the longest-waiting one of the same rule set (returned, and removed
+    // from the queue), or queues it. A player already queued is not queued twice.
+    std::optional<WaiterT> quick_match(proto::RuleSet rule_set, std::int64_t player_id,
+                                       WaiterT waiter) {
+        std::lock_guard lock(mutex_);
+        auto& queue = queues_[rule_set];
+        for (auto it = queue.begin(); it != queue.end(); ++it) {
+            if (it->first != player_id) {
+                WaiterT partner = std::move(it->second);
+                queue.erase(it);
+                return partner;
+            }
+        }
+        if (std::none_of(queue.begin(), queue.end(),
+                         [&](const auto& w) { return w.first == player_id; })) {
+            queue.emplace_back(player_id, std::move(waiter));
+        }
+        return std::nullopt;
+    }
+    void cancel_quick_match(std::int64_t player_id) {
+        std::lock_guard lock(mutex_);
+        for (auto& [rule_set, queue] : queues_) {
+            std::erase_if(queue, [&](const auto& w) { return w.first == player_id; });
+        }
+    }
+    std::size_t waiting_count() const {
+        std::lock_guard lock(mutex_);
+        std::size_t n = 0;
+        for (const auto& [rule_set, queue] : queues_) {
+            n += queue.size();
+        }
+        return n;
+    }
+
+private:
+    mutable std::mutex mutex_;
+    RandomSource& random_;
+    std::size_t max_rooms_;
+    std::int64_t next_player_id_ = 1;
+    std::unordered_map<std::string, PlayerRecord> players_;
+    std::unordered_map<std::string, std::shared_ptr<RoomT>> rooms_;
+    std::map<proto::RuleSet, std::deque<std::pair<std::int64_t, WaiterT>>> queues_;
+};
+
+} // namespace carrom::server

@@ -1,0 +1,76 @@
+#include "carrom/server/metrics.hpp"
+
+#include <cstdio>
+#include <sstream>
+
+namespace carrom::server {
+
+void Metrics::observe_snapshot_lag_ms(double lag_ms) {
+    for (std::size_t i = 0; i < kLagBucketsMs.size(); ++i) {
+        if (lag_ms <= kLagBucketsMs[i]) {
+            lag_buckets[i].fetch_add(1, std::memory_order_relaxed);
+        }
+    }
+    lag_count.fetch_add(1, std::memory_order_relaxed);
+    lag_sum_us.fetch_add(static_cast<std::int64_t>(lag_ms * 1000.0), std::memory_order_relaxed);
+}
+
+namespace {
+
+void metric(std::ostringstream& out, const char* name, const char* type, const char* help,
+            const std::atomic<std::int64_t>& value) {
+    out << "# HELP " << name << ' ' << help << "\n# TYPE " << name << ' ' << type << '\n'
+        << name << ' ' << value.load(std::memory_order_relaxed) << '\n';
+}
+
+std::string bucket_label(double bound) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", bound / 1000.0);
+    return text;
+}
+
+} // namespace
+
+std::string Metrics::prometheus_text() const {
+    std::ostringstream out;
+    metric(out, "carrom_connections", "gauge", "Open WebSocket connections.", connections);
+    metric(out, "carrom_connections_total", "counter", "Accepted WebSocket connections.",
+           connections_total);
+    metric(out, "carrom_rejected_connections_total", "counter",
+           "Connections refused at the connection limit.", rejected_connections_total);
+    metric(out, "carrom_rooms", "gauge", "Open rooms.", rooms);
+    metric(out, "carrom_matches", "gauge", "Rooms with a game in progress.", matches);
+    metric(out, "carrom_matches_started_total", "counter", "Games started.",
+           matches_started_total);
+    metric(out, "carrom_matches_finished_total", "counter", "Games finished.",
+           matches_finished_total);
+    metric(out, "carrom_shots_total", "counter", "Shots played.", shots_total);
+    metric(out, "carrom_messages_in_total", "counter", "Messages received.", messages_in_total);
+    metric(out, "carrom_messages_out_total", "counter", "Messages sent.", messages_out_total);
+    metric(out, "carrom_bytes_in_total", "counter", "Payload bytes received.", bytes_in_total);
+    metric(out, "carrom_bytes_out_total", "counter", "Payload bytes sent.", bytes_out_total);
+    metric(out, "carrom_errors_sent_total", "counter", "Error messages sent.", errors_sent_total);
+    metric(out, "carrom_snapshots_total", "counter", "Snapshot broadcasts.", snapshots_total);
+    metric(out, "carrom_snapshots_dropped_total", "counter",
+           "Snapshots dropped for slow clients.", snapshots_dropped_total);
+    metric(out, "carrom_slow_client_disconnects_total", "counter",
+           "Clients disconnected for a full write queue.", slow_client_disconnects_total);
+    metric(out, "carrom_http_requests_total", "counter", "Plain HTTP requests.",
+           http_requests_total);
+    out << "# HELP carrom_snapshot_lag_seconds Snapshot send time minus its scheduled time.\n"
+        << "# TYPE carrom_snapshot_lag_seconds histogram\n";
+    for (std::size_t i = 0; i < kLagBucketsMs.size(); ++i) {
+        out << "carrom_snapshot_lag_seconds_bucket{le=\"" << bucket_label(kLagBucketsMs[i])
+            << "\"} " << lag_buckets[i].load(std::memory_order_relaxed) << '\n';
+    }
+    const auto count = lag_count.load(std::memory_order_relaxed);
+    char sum[32];
+    std::snprintf(sum, sizeof sum, "%.6f",
+                  static_cast<double>(lag_sum_us.load(std::memory_order_relaxed)) / 1e6);
+    out << "carrom_snapshot_lag_seconds_bucket{le=\"+Inf\"} " << count << '\n'
+        << "carrom_snapshot_lag_seconds_sum " << sum << '\n'
+        << "carrom_snapshot_lag_seconds_count " << count << '\n';
+    return out.str();
+}
+
+} // namespace carrom::server

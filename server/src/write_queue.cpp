@@ -1,0 +1,40 @@
+#include "carrom/server/write_queue.hpp"
+
+namespace carrom::server {
+
+WriteQueue::WriteQueue(std::size_t max_bytes, std::size_t snapshot_backlog)
+    : max_bytes_(max_bytes), snapshot_backlog_(snapshot_backlog) {}
+
+WriteQueue::Push WriteQueue::push(Outgoing message) {
+    const std::size_t waiting = queue_.size() - (writing_ ? 1U : 0U);
+    if (message.kind == MessageKind::Snapshot && waiting >= snapshot_backlog_) {
+        return Push::DroppedSnapshot;
+    }
+    const std::size_t size = message.text ? message.text->size() : 0;
+    if (bytes_ + size > max_bytes_) {
+        return Push::Overflow;
+    }
+    bytes_ += size;
+    queue_.push_back(std::move(message));
+    return Push::Queued;
+}
+
+std::optional<Outgoing> WriteQueue::start_write() {
+    if (writing_ || queue_.empty()) {
+        return std::nullopt;
+    }
+    writing_ = true;
+    return queue_.front();
+}
+
+void WriteQueue::finish_write() {
+    if (!writing_ || queue_.empty()) {
+        return;
+    }
+    const std::size_t size = queue_.front().text ? queue_.front().text->size() : 0;
+    bytes_ -= size;
+    queue_.pop_front();
+    writing_ = false;
+}
+
+} // namespace carrom::server

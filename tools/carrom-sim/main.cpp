@@ -1,0 +1,144 @@
+// carrom-sim: simulates a scene given as JSON (a file argument or stdin) and prints the result
+// as JSON. Bad input prints {"error": {"code", "path", "message"}} on stderr and exits 2.
+// See docs/carrom-sim.md.
+
+#include "rules_mode.hpp"
+#include "sim_cli.hpp"
+
+#include <CLI/CLI.hpp>
+
+#include <cmath>
+#include <exception>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+using carrom::proto::JsonError;
+using Json = nlohmann::json;
+
+constexpr int kExitBadInput = 2;
+constexpr int kExitInternal = 1;
+
+int fail(const JsonError& error) {
+    std::cerr << carrom::proto::error_to_json(error).dump() << '\n';
+    return kExitBadInput;
+}
+
+// Reads a little over kMaxSceneBytes at most, so that oversized input is rejected by the
+// decoder without reading all of it.
+bool read_input(const std::string& path, std::string& text, JsonError& error) {
+    std::ifstream file;
+    std::istream* in = &std::cin;
+    if (!path.empty() && path != "-") {
+        file.open(path, std::ios::binary);
+        if (!file) {
+            error = {"io_error", "", "cannot open the scene file '" + path + "'"};
+            return false;
+        }
+        in = &file;
+    }
+    std::vector<char> chunk(65536);
+    while (text.size() <= carrom::proto::kMaxSceneBytes) {
+        in->read(chunk.data(), static_cast<std::streamsize>(chunk.size()));
+        const auto got = in->gcount();
+        if (got <= 0) {
+            break;
+        }
+        text.append(chunk.data(), static_cast<std::size_t>(got));
+    }
+    if (in->bad()) {
+        error = {"io_error", "", "reading the scene failed"};
+        return false;
+    }
+    return true;
+}
+
+int run_rules(const std::string& path) {
+    if (path.empty() || path == "-") {
+        return carrom::run_rules_mode(std::cin, std::cout, std::cerr);
+    }
+    std::ifstream file(path, std::ios::binary);
+    if (!file) {
+        return fail({"io_error", "", "cannot open the rules file '" + path + "'"});
+    }
+    return carrom::run_rules_mode(file, std::cout, std::cerr);
+}
+
+int run(int argc, char** argv) {
+    using carrom::sim_cli::Integrator;
+    CLI::App app{"carrom-sim: simulate a carrom scene given as JSON and print the result as JSON "
+                 "(docs/carrom-sim.md)"};
+    carrom::sim_cli::RunOptions options;
+    std::string path;
+    double at_s = 0.0;
+    bool pretty = false;
+    bool no_events = false;
+    bool rules = false;
+    const std::map<std::string, Integrator> integrators{{"exact", Integrator::Exact},
+                                                        {"fixed", Integrator::Fixed}};
+    app.add_option("scene", path, "scene JSON file; '-' or none reads stdin");
+    app.add_option("--integrator", options.integrator, "exact (default) or fixed")
+        ->transform(CLI::CheckedTransformer(integrators, CLI::ignore_case));
+    app.add_option("--dt", options.frame_dt_s, "fixed: frame time step, s (default 1/60)")
+        ->check(CLI::PositiveNumber)
+        ->check(CLI::Range(0.0, 1.0));
+    app.add_option("--substeps", options.substeps, "fixed: steps per frame (default 1)")
+        ->check(CLI::Range(1, 1000000));
+    auto* at = app.add_option("--at", at_s, "print the state at time T, s, instead of the end")
+                   ->check(CLI::Range(0.0, 1e6));
+    app.add_option("--repeat", options.repeat, "run N times; report median and minimum wall time")
+        ->check(CLI::Range(1, 1000000));
+    app.add_flag("--no-events", no_events, "leave the event list out");
+    app.add_flag("--pretty", pretty, "indent the JSON output");
+    app.add_flag("--invariants", options.invariants,
+                 "exact: check overlap, cushions and kinetic energy at every event time");
+    app.add_flag("--rules", rules, "rules mode: read a rules scenario instead of a scene");
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+        return fail({"bad_argument", "", e.what()});
+    }
+    if (!std::isfinite(options.frame_dt_s) || !std::isfinite(at_s)) {
+        return fail({"bad_argument", "", "--dt and --at must be finite numbers"});
+    }
+    if (rules) {
+        return run_rules(path);
+    }
+    options.record_events = !no_events;
+    if (at->count() > 0) {
+        options.at_s = at_s;
+    }
+    std::string text;
+    JsonError error;
+    if (!read_input(path, text, error)) {
+        return fail(error);
+    }
+    const auto scene = carrom::proto::decode_scene_text(text);
+    if (!scene.ok()) {
+        return fail(*scene.error);
+    }
+    const auto output = carrom::sim_cli::run_scene(scene.value, options);
+    if (output.error) {
+        return fail(*output.error);
+    }
+    std::cout << output.document.dump(pretty ? 2 : -1) << '\n';
+    return 0;
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    try {
+        return run(argc, argv);
+    } catch (const std::exception& e) {
+        std::cerr << carrom::proto::error_to_json({"internal", "", e.what()}).dump() << '\n';
+        return kExitInternal;
+    }
+}
