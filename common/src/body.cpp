@@ -5,10 +5,14 @@ namespace carrom {
 
 std::string_view to_string(BodyKind kind) {
     switch (kind) {
-    case BodyKind::Black: return "black";
-    case BodyKind::White: return "white";
-    case BodyKind::Queen: return "queen";
-    case BodyKind::Striker: return "striker";
+    case BodyKind::Black:
+        return "black";
+    case BodyKind::White:
+        return "white";
+    case BodyKind::Queen:
+        return "queen";
+    case BodyKind::Striker:
+        return "striker";
     }
     return "unknown";
 }
@@ -25,10 +29,14 @@ bool parse_body_kind(std::string_view text, BodyKind& out) {
 
 std::string_view to_string(EventKind kind) {
     switch (kind) {
-    case EventKind::Collision: return "collision";
-    case EventKind::Cushion: return "cushion";
-    case EventKind::Pocket: return "pocket";
-    case EventKind::Stop: return "stop";
+    case EventKind::Collision:
+        return "collision";
+    case EventKind::Cushion:
+        return "cushion";
+    case EventKind::Pocket:
+        return "pocket";
+    case EventKind::Stop:
+        return "stop";
     }
     return "unknown";
 }

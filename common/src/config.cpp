@@ -14,9 +14,15 @@ std::optional<ConfigError> require(bool ok, const char* field, const char* messa
     return ConfigError{field, std::string(field) + " " + message};
 }
 
-bool positive(double v) { return std::isfinite(v) && v > 0.0; }
-bool non_negative(double v) { return std::isfinite(v) && v >= 0.0; }
-bool unit_interval(double v) { return std::isfinite(v) && v >= 0.0 && v <= 1.0; }
+bool positive(double v) {
+    return std::isfinite(v) && v > 0.0;
+}
+bool non_negative(double v) {
+    return std::isfinite(v) && v >= 0.0;
+}
+bool unit_interval(double v) {
+    return std::isfinite(v) && v >= 0.0 && v <= 1.0;
+}
 
 } // namespace
 

@@ -19,9 +19,9 @@
 namespace carrom::detail {
 
 struct Contact {
-    int a = -1;          // body index
-    int b = -1;          // body index, or -1 for a cushion (infinite mass, at rest)
-    Vec2 normal{};       // unit vector from a towards b (for a cushion: out of the board)
+    int a = -1;    // body index
+    int b = -1;    // body index, or -1 for a cushion (infinite mass, at rest)
+    Vec2 normal{}; // unit vector from a towards b (for a cushion: out of the board)
     double restitution = 0.0;
     double impulse = 0.0; // out: total normal impulse applied, mass * px/s, >= 0
 };
@@ -35,7 +35,8 @@ double normal_velocity(const Contact& c, std::span<const Vec2> vel);
 // smallest restitution of the group for all its contacts (which provably cannot).
 class ContactSolver {
 public:
-    void resolve(std::span<Contact> contacts, std::span<Vec2> vel, std::span<const double> inv_mass);
+    void resolve(std::span<Contact> contacts, std::span<Vec2> vel,
+                 std::span<const double> inv_mass);
 
 private:
     // Compression impulses J for the contacts (Murty's least-index principal pivoting, finite
@@ -50,7 +51,7 @@ private:
     std::vector<double> compression_; // J
     std::vector<double> residual_;    // w = A J + u-
     std::vector<char> active_;
-    std::vector<double> lu_;          // scratch for the dense solves
+    std::vector<double> lu_; // scratch for the dense solves
     std::vector<int> index_;
     std::vector<Vec2> saved_vel_;
 };

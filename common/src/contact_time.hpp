@@ -26,13 +26,19 @@ inline double time_to_reach(Vec2 d, Vec2 w, double reach, double s_max) {
     if (b >= 0.0) {
         return kNever; // not approaching
     }
-    const double dist = std::sqrt(dot(d, d));
-    const double gap = dist - reach;
-    if (gap <= kTouchTolerancePx) {
-        return -b > kApproachTolerancePxS * dist ? 0.0 : kNever;
+    const double dd = dot(d, d);
+    const double touch = reach + kTouchTolerancePx;
+    if (dd <= touch * touch) {
+        return -b > kApproachTolerancePxS * std::sqrt(dd) ? 0.0 : kNever;
+    }
+    // c = |d|^2 - reach^2. Far apart, the direct difference loses nothing; near touching it is
+    // computed as (|d| - reach)(|d| + reach) to keep the small gap exact.
+    double c = dd - reach * reach;
+    if (dd < 4.0 * reach * reach) {
+        const double dist = std::sqrt(dd);
+        c = (dist - reach) * (dist + reach);
     }
     const double a = dot(w, w);
-    const double c = gap * (dist + reach);
     const double disc = b * b - a * c;
     if (disc < 0.0) {
         return kNever;

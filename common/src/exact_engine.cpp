@@ -12,7 +12,12 @@
 #include "contact_time.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 namespace carrom {
 
@@ -25,8 +30,13 @@ namespace {
 
 enum class Next : std::uint8_t { None, Pair, Cushion, Pocket, Stop };
 
+// Events are keyed by u = e^(-k t), which decreases with time: a prediction made at `now` for
+// travel factor s has u = u_now (1 - k s), with no logarithm. The earliest event has the
+// largest key; kNoEvent is below every real key (real keys are > 0).
+constexpr double kNoEvent = -1.0;
+
 struct Prediction {
-    double t_s = kNever;
+    double key = kNoEvent;
     Next kind = Next::None;
     int other = -1; // body index (Pair), cushion index (Cushion), pocket index (Pocket)
 };
@@ -66,21 +76,29 @@ struct ExactEngine::Impl {
 
     // Per body, in input order.
     std::vector<int> ids;
-    std::vector<Vec2> pos;       // px, at `now`; far outside the board once pocketed
-    std::vector<Vec2> vel;       // px/s, at `now`
-    std::vector<double> speed;   // |vel|, px/s
-    std::vector<double> radius;  // px
+    std::vector<Vec2> pos;      // px, at `now`; far outside the board once pocketed
+    std::vector<Vec2> vel;      // px/s, at `now`
+    std::vector<double> speed;  // |vel|, px/s
+    std::vector<double> radius; // px
     std::vector<double> inv_mass;
-    std::vector<double> lo, hi;  // cushion limits of the centre, px
-    double max_radius = 0.0;     // largest radius in the scene, px
-    std::vector<char> active;    // not pocketed
-    std::vector<char> moving;    // speed above the stop speed
+    std::vector<double> lo, hi; // cushion limits of the centre, px
+    double max_radius = 0.0;    // largest radius in the scene, px
+    std::vector<char> active;   // not pocketed
+    std::vector<char> moving;   // speed above the stop speed
     // Box covering the rest of each body's current path (radius included), px, stored as
     // separate arrays so the broad-phase loop runs without branches.
     std::vector<double> sweep_x0, sweep_y0, sweep_x1, sweep_y1;
     std::vector<Vec2> pocketed_at; // where a pocketed body entered its pocket, px
-    std::vector<int> candidates;   // scratch for predict
+    // near[i] bit j (== near[j] bit i): the path boxes of i and j overlap. predict(i) runs after
+    // every change of i's box and updates row and column i, so two bodies can touch only if
+    // their bit is set. Used when the scene has at most 64 bodies; larger scenes test every pair.
+    std::vector<std::uint64_t> near;
+    bool use_near = false;
+    std::uint64_t box_overlaps(std::size_t i) const;
+
     std::vector<Prediction> next;
+    std::vector<int> moving_list; // indices of moving bodies, rebuilt when stale
+    bool moving_list_stale = true;
 
     // Scratch for one instant of simultaneous impacts.
     std::vector<Contact> contacts;
@@ -89,7 +107,8 @@ struct ExactEngine::Impl {
     std::vector<double> solve_inv_mass; // 0 for bodies pinned by the stop rule at this instant
     detail::ContactSolver solver;
 
-    double now = 0.0;
+    double now = 0.0;   // s
+    double u_now = 1.0; // e^(-k now)
     SimOptions options;
     SimResult result;
 
@@ -99,9 +118,8 @@ struct ExactEngine::Impl {
     void finish();
 
     double stop_s(std::size_t i) const { return (1.0 - config.stop_speed_px_s / speed[i]) * inv_k; }
-    double time_after(double s) const { return s <= 0.0 ? 0.0 : -std::log1p(-k * s) * inv_k; }
     void refresh(std::size_t i);
-    void advance(double t_s);
+    void advance(double key);
     void predict(std::size_t i);
     void emit(EventKind kind, std::size_t a, int b, double impulse);
     void record_segment(std::size_t i);
@@ -138,12 +156,16 @@ void ExactEngine::Impl::load(std::span<const Body> bodies) {
     hi.resize(n);
     active.resize(n);
     moving.resize(n);
-    sweep_x0.resize(n);
-    sweep_y0.resize(n);
-    sweep_x1.resize(n);
-    sweep_y1.resize(n);
+    // Padded to an even length with empty boxes (see box_overlaps).
+    const std::size_t padded = n + (n % 2);
+    sweep_x0.assign(padded, kNever);
+    sweep_y0.assign(padded, kNever);
+    sweep_x1.assign(padded, -kNever);
+    sweep_y1.assign(padded, -kNever);
     pocketed_at.assign(n, Vec2{});
-    candidates.resize(n);
+    near.assign(n, 0);
+    moving_list_stale = true;
+    use_near = n <= 64;
     next.assign(n, Prediction{});
     in_frontier.assign(n, 0);
     is_touched.assign(n, 0);
@@ -172,6 +194,7 @@ void ExactEngine::Impl::load(std::span<const Body> bodies) {
         max_radius = std::max(max_radius, r);
     }
     now = 0.0;
+    u_now = 1.0;
     result.bodies.assign(bodies.begin(), bodies.end());
     result.events.clear();
     result.trajectory.initial.clear();
@@ -186,7 +209,9 @@ void ExactEngine::Impl::load(std::span<const Body> bodies) {
 
 void ExactEngine::Impl::refresh(std::size_t i) {
     speed[i] = length(vel[i]);
-    moving[i] = active[i] && speed[i] > 0.0;
+    const char now_moving = active[i] && speed[i] > 0.0;
+    moving_list_stale = moving_list_stale || now_moving != moving[i];
+    moving[i] = now_moving;
     const double r = radius[i];
     Vec2 end = pos[i];
     if (moving[i]) {
@@ -229,22 +254,31 @@ void ExactEngine::Impl::pocket_body(std::size_t i, int pocket) {
     refresh(i);
 }
 
-void ExactEngine::Impl::advance(double t_s) {
-    const double dt = t_s - now;
-    if (dt <= 0.0) {
+// Moves every body to the time whose key is u (u <= u_now).
+void ExactEngine::Impl::advance(double u) {
+    if (u >= u_now) {
         return;
     }
-    const double s = -std::expm1(-k * dt) * inv_k;
-    const double decay = std::exp(-k * dt);
-    // Bodies at rest and pocketed bodies have a velocity of exactly zero, so updating every
-    // body leaves them bit-for-bit unchanged and keeps the loop free of branches.
+    const double decay = u / u_now;         // e^(-k dt)
+    const double s = (1.0 - decay) * inv_k; // (1 - e^(-k dt)) / k
     const std::size_t n = pos.size();
-    for (std::size_t i = 0; i < n; ++i) {
+    if (moving_list_stale) {
+        moving_list.clear();
+        for (std::size_t i = 0; i < n; ++i) {
+            if (moving[i]) {
+                moving_list.push_back(static_cast<int>(i));
+            }
+        }
+        moving_list_stale = false;
+    }
+    for (int mi : moving_list) {
+        const auto i = static_cast<std::size_t>(mi);
         pos[i] += vel[i] * s;
         vel[i] *= decay;
         speed[i] *= decay;
     }
-    now = t_s;
+    u_now = u;
+    now = -std::log(u) * inv_k;
 }
 
 void ExactEngine::Impl::predict(std::size_t i) {
@@ -282,31 +316,75 @@ void ExactEngine::Impl::predict(std::size_t i) {
             }
         }
     }
-    // Broad phase: bodies whose path boxes overlap body i's, found without branches.
+    // Broad phase: only bodies whose path boxes overlap body i's.
     const std::size_t n = pos.size();
-    const double x0 = sweep_x0[i], y0 = sweep_y0[i], x1 = sweep_x1[i], y1 = sweep_y1[i];
-    std::size_t count = 0;
-    for (std::size_t j = 0; j < n; ++j) {
-        candidates[count] = static_cast<int>(j);
-        count += static_cast<std::size_t>((x0 <= sweep_x1[j]) & (sweep_x0[j] <= x1) &
-                                          (y0 <= sweep_y1[j]) & (sweep_y0[j] <= y1));
+    std::uint64_t row = 0;
+    if (use_near) {
+        row = box_overlaps(i) & ~(std::uint64_t{1} << i);
+        // Keep near symmetric: flip bit i of every body whose bit in row i changed.
+        for (std::uint64_t diff = row ^ near[i]; diff != 0; diff &= diff - 1) {
+            near[static_cast<std::size_t>(std::countr_zero(diff))] ^= std::uint64_t{1} << i;
+        }
+        near[i] = row;
     }
-    for (std::size_t c = 0; c < count; ++c) {
-        const auto j = static_cast<std::size_t>(candidates[c]);
+    for (std::size_t scan = 0; scan < (use_near ? std::size_t{64} : n); ++scan) {
+        std::size_t j = scan;
+        if (use_near) {
+            if (row == 0) {
+                break;
+            }
+            j = static_cast<std::size_t>(std::countr_zero(row));
+            row &= row - 1;
+        } else if (!(sweep_x0[i] <= sweep_x1[j] && sweep_x0[j] <= sweep_x1[i] &&
+                     sweep_y0[i] <= sweep_y1[j] && sweep_y0[j] <= sweep_y1[i])) {
+            continue;
+        }
         if (j == i || !active[j] || (!moving[i] && !moving[j])) {
             continue;
         }
         ++result.stats.pair_tests;
-        const double s = detail::time_to_reach(pos[j] - pos[i], vel[j] - vel[i],
-                                               radius[i] + radius[j], best_s);
+        const double s =
+            detail::time_to_reach(pos[j] - pos[i], vel[j] - vel[i], radius[i] + radius[j], best_s);
         // The contact counts only if it comes before body j stops.
         if (s < best_s && (!moving[j] || s < stop_s(j))) {
             best_s = s;
             best = {0.0, Next::Pair, static_cast<int>(j)};
         }
     }
-    best.t_s = best.kind == Next::None ? kNever : now + time_after(best_s);
+    best.key = best.kind == Next::None ? kNoEvent : u_now * (1.0 - k * best_s);
     next[i] = best;
+}
+
+// Bit j set: the path boxes of i and j overlap (i itself included). n <= 64. The box arrays
+// are padded to an even length with empty boxes, so SSE2 can test two bodies at a time.
+std::uint64_t ExactEngine::Impl::box_overlaps(std::size_t i) const {
+    const double* bx0 = sweep_x0.data();
+    const double* by0 = sweep_y0.data();
+    const double* bx1 = sweep_x1.data();
+    const double* by1 = sweep_y1.data();
+    std::uint64_t row = 0;
+    const std::size_t n = sweep_x0.size();
+#if defined(__SSE2__)
+    const __m128d x0 = _mm_set1_pd(bx0[i]);
+    const __m128d y0 = _mm_set1_pd(by0[i]);
+    const __m128d x1 = _mm_set1_pd(bx1[i]);
+    const __m128d y1 = _mm_set1_pd(by1[i]);
+    for (std::size_t j = 0; j < n; j += 2) {
+        const __m128d hit_x = _mm_and_pd(_mm_cmple_pd(x0, _mm_loadu_pd(bx1 + j)),
+                                         _mm_cmple_pd(_mm_loadu_pd(bx0 + j), x1));
+        const __m128d hit_y = _mm_and_pd(_mm_cmple_pd(y0, _mm_loadu_pd(by1 + j)),
+                                         _mm_cmple_pd(_mm_loadu_pd(by0 + j), y1));
+        const auto bits = static_cast<std::uint64_t>(_mm_movemask_pd(_mm_and_pd(hit_x, hit_y)));
+        row |= bits << j;
+    }
+#else
+    const double x0 = bx0[i], y0 = by0[i], x1 = bx1[i], y1 = by1[i];
+    for (std::size_t j = 0; j < n; ++j) {
+        const bool hit = (x0 <= bx1[j]) & (bx0[j] <= x1) & (y0 <= by1[j]) & (by0[j] <= y1);
+        row |= static_cast<std::uint64_t>(hit) << j;
+    }
+#endif
+    return row;
 }
 
 double ExactEngine::Impl::restitution(double approach_px_s, bool cushion) const {
@@ -329,8 +407,16 @@ void ExactEngine::Impl::collect_impacts() {
         }
         const Vec2 pa = pos[a];
         const double reach_max = radius[a] + max_radius + kTouchTolerancePx;
-        const std::size_t count = pos.size();
-        for (std::size_t b = 0; b < count; ++b) {
+        const std::uint64_t near_a = use_near ? near[a] : 0;
+        const std::size_t count =
+            use_near ? static_cast<std::size_t>(std::popcount(near_a)) : pos.size();
+        std::uint64_t bits = near_a;
+        for (std::size_t scan = 0; scan < count; ++scan) {
+            std::size_t b = scan;
+            if (use_near) {
+                b = static_cast<std::size_t>(std::countr_zero(bits));
+                bits &= bits - 1;
+            }
             // Cheapest rejection first: most bodies are far away.
             const Vec2 d = pos[b] - pa;
             if (std::fabs(d.x) > reach_max || std::fabs(d.y) > reach_max || b == a || !active[b] ||
@@ -599,11 +685,12 @@ void ExactEngine::Impl::settle_initial_state() {
 }
 
 void ExactEngine::Impl::run_events() {
+    const double u_until = std::exp(-k * options.until_s); // 0 when there is no end time
     std::vector<int>& seeds = event_seeds;
     while (!next.empty()) {
         std::size_t first = 0;
         for (std::size_t i = 1; i < next.size(); ++i) {
-            if (next[i].t_s < next[first].t_s) {
+            if (next[i].key > next[first].key) {
                 first = i;
             }
         }
@@ -611,8 +698,9 @@ void ExactEngine::Impl::run_events() {
             break;
         }
         const Prediction event = next[first];
-        if (event.t_s > options.until_s) {
-            advance(options.until_s);
+        if (event.key < u_until) {
+            advance(u_until);
+            now = options.until_s; // exact, rather than recomputed from the key
             return;
         }
         if (result.stats.events >= config.max_events) {
@@ -624,17 +712,24 @@ void ExactEngine::Impl::run_events() {
             }
             return;
         }
-        advance(event.t_s);
+        advance(event.key);
         seeds.assign(1, static_cast<int>(first));
         switch (event.kind) {
-        case Next::Stop: stop_body(first); break;
-        case Next::Pocket: pocket_body(first, event.other); break;
+        case Next::Stop:
+            stop_body(first);
+            break;
+        case Next::Pocket:
+            pocket_body(first, event.other);
+            break;
         case Next::Pair:
             seeds.push_back(event.other);
             process_instant(seeds);
             break;
-        case Next::Cushion: process_instant(seeds); break;
-        case Next::None: break;
+        case Next::Cushion:
+            process_instant(seeds);
+            break;
+        case Next::None:
+            break;
         }
         // Recompute the seeds, every body changed at this instant, and every body whose
         // prediction names one of them.
@@ -665,7 +760,9 @@ void ExactEngine::Impl::finish() {
 ExactEngine::ExactEngine(const PhysicsConfig& config) : impl_(std::make_unique<Impl>(config)) {}
 ExactEngine::~ExactEngine() = default;
 
-const PhysicsConfig& ExactEngine::config() const { return impl_->config; }
+const PhysicsConfig& ExactEngine::config() const {
+    return impl_->config;
+}
 
 ExactEngine::Outcome ExactEngine::run(std::span<const Body> bodies, const SimOptions& options) {
     if (auto error = validate_scene(impl_->config, bodies)) {

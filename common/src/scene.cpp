@@ -93,9 +93,10 @@ std::optional<SceneError> validate_scene(const PhysicsConfig& config, std::span<
                                   "body " + std::to_string(b.id) + " appears more than once"};
             }
         }
-        const std::pair<const char*, double> fields[] = {
-            {"pos.x", b.pos_px.x}, {"pos.y", b.pos_px.y},
-            {"vel.x", b.vel_px_s.x}, {"vel.y", b.vel_px_s.y}};
+        const std::pair<const char*, double> fields[] = {{"pos.x", b.pos_px.x},
+                                                         {"pos.y", b.pos_px.y},
+                                                         {"vel.x", b.vel_px_s.x},
+                                                         {"vel.y", b.vel_px_s.y}};
         for (const auto& [field, value] : fields) {
             if (!std::isfinite(value)) {
                 return SceneError{"not_finite", b.id, field,

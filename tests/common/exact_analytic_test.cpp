@@ -17,12 +17,20 @@ const PhysicsConfig kConfig;
 const double kK = kConfig.damping_per_s;
 
 // Closed form of damped free motion until the stop speed.
-double travel_until_stop_px(double speed) { return (speed - kConfig.stop_speed_px_s) / kK; }
-double time_until_stop_s(double speed) { return std::log(speed / kConfig.stop_speed_px_s) / kK; }
+double travel_until_stop_px(double speed) {
+    return (speed - kConfig.stop_speed_px_s) / kK;
+}
+double time_until_stop_s(double speed) {
+    return std::log(speed / kConfig.stop_speed_px_s) / kK;
+}
 // Speed after travelling distance d from speed v: v - k d (since dv/dx = -k).
-double speed_after_px(double v, double d) { return v - kK * d; }
+double speed_after_px(double v, double d) {
+    return v - kK * d;
+}
 // Time to travel d starting at speed v.
-double time_to_travel_s(double v, double d) { return -std::log1p(-kK * d / v) / kK; }
+double time_to_travel_s(double v, double d) {
+    return -std::log1p(-kK * d / v) / kK;
+}
 
 const Event* find_event(const SimResult& r, EventKind kind, int a) {
     for (const Event& e : r.events) {
@@ -226,8 +234,8 @@ TEST(ExactAnalytic, EveryPocketIsReachableAlongItsDiagonal) {
     const auto pockets = kConfig.pocket_centres();
     for (std::size_t p = 0; p < 4; ++p) {
         const Vec2 dir{pockets[p].x < 300.0 ? -1.0 : 1.0, pockets[p].y < 300.0 ? -1.0 : 1.0};
-        const std::vector<Body> scene{coin(1, 300.0 + 100.0 * dir.x, 300.0 + 100.0 * dir.y,
-                                           400.0 * dir.x, 400.0 * dir.y)};
+        const std::vector<Body> scene{
+            coin(1, 300.0 + 100.0 * dir.x, 300.0 + 100.0 * dir.y, 400.0 * dir.x, 400.0 * dir.y)};
         const SimulateResult sim = simulate_exact(kConfig, scene);
         EXPECT_TRUE(sim.result.bodies[0].pocketed) << "pocket " << p;
     }

@@ -18,7 +18,9 @@ std::vector<Body> centred_break(const PhysicsConfig& config, double speed = 1500
     return scene;
 }
 
-bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+bool same_bits(double a, double b) {
+    return std::memcmp(&a, &b, sizeof a) == 0;
+}
 
 TEST(ExactDeterminism, RepeatsAreBitIdenticalAndEngineReuseChangesNothing) {
     const PhysicsConfig config;
@@ -85,9 +87,9 @@ TEST(ExactDeterminism, SimultaneousImpactOnTwoCoinsConservesMomentumAndLosesEner
     const PhysicsConfig config;
     // Striker moving up meets two coins placed symmetrically at +-30 degrees at one instant.
     const double reach = 32.0;
-    const std::vector<Body> scene{
-        striker(19, 300.0, 400.0, 0.0, -600.0),
-        coin(1, 300.0 - reach * 0.5, 300.0), coin(2, 300.0 + reach * 0.5, 300.0)};
+    const std::vector<Body> scene{striker(19, 300.0, 400.0, 0.0, -600.0),
+                                  coin(1, 300.0 - reach * 0.5, 300.0),
+                                  coin(2, 300.0 + reach * 0.5, 300.0)};
     SimOptions options;
     options.until_s = 0.2; // just after the impact, before anything stops
     const SimulateResult sim = simulate_exact(config, scene, options);

@@ -60,7 +60,8 @@ TEST(ExactStiff, CoinPinnedBetweenCushionAndCoin) {
         PhysicsConfig c = config;
         c.disc_restitution = e;
         c.cushion_restitution = std::min(e, 0.8);
-        const std::vector<Body> scene{coin(1, wall, 300.0), coin(2, wall - 28.0, 300.0, 800.0, 0.0)};
+        const std::vector<Body> scene{coin(1, wall, 300.0),
+                                      coin(2, wall - 28.0, 300.0, 800.0, 0.0)};
         expect_invariants(run_checked(c, scene), 200);
         const std::vector<Body> struck{coin(1, wall, 300.0), coin(2, wall - 28.0, 300.0),
                                        striker(19, 300.0, 300.0, 1500.0, 0.0)};

@@ -11,11 +11,11 @@ namespace carrom {
 enum class BodyKind : std::uint8_t { Black, White, Queen, Striker };
 
 struct Body {
-    int id = 0;                 // caller's id, unique within a scene; events name bodies by it
+    int id = 0; // caller's id, unique within a scene; events name bodies by it
     BodyKind kind = BodyKind::Black;
-    Vec2 pos_px{};              // centre
-    Vec2 vel_px_s{};            // zero for a body at rest
-    bool pocketed = false;      // a pocketed body takes no part in the simulation
+    Vec2 pos_px{};         // centre
+    Vec2 vel_px_s{};       // zero for a body at rest
+    bool pocketed = false; // a pocketed body takes no part in the simulation
 };
 
 std::string_view to_string(BodyKind kind);

@@ -23,16 +23,16 @@ struct PhysicsConfig {
     // Linear damping rate k in dv/dt = -k v, 1/s. The seed multiplies velocity by 0.985 every
     // 1/60 s frame, so k = 60 ln(1 / 0.985) = 0.906818... 1/s.
     double damping_per_s = 60.0 * std::log(1.0 / 0.985);
-    double stop_speed_px_s = 6.0;        // a body stops when its speed falls to this (0.1 px/frame)
-    double cushion_restitution = 0.8;    // normal velocity scale at a cushion
-    double disc_restitution = 0.9;       // coefficient e between two discs
+    double stop_speed_px_s = 6.0;     // a body stops when its speed falls to this (0.1 px/frame)
+    double cushion_restitution = 0.8; // normal velocity scale at a cushion
+    double disc_restitution = 0.9;    // coefficient e between two discs
     // Remedy for inelastic collapse: a contact whose approach speed is below this is plastic
     // (restitution 0). See docs/physics.md, "Simultaneous and stiff contacts".
     double restitution_floor_px_s = 2.0;
-    double pocket_radius_px = 22.0;      // pocket circles touch both cushion faces
-    double max_power = 25.0;             // shot power range [0, max_power], seed px/frame
-    double power_to_speed = 60.0;        // px/s per unit of power (the seed's frames per second)
-    double baseline_offset_px = 80.0;    // baseline y distance from the near board edge
+    double pocket_radius_px = 22.0;       // pocket circles touch both cushion faces
+    double max_power = 25.0;              // shot power range [0, max_power], seed px/frame
+    double power_to_speed = 60.0;         // px/s per unit of power (the seed's frames per second)
+    double baseline_offset_px = 80.0;     // baseline y distance from the near board edge
     double baseline_end_margin_px = 60.0; // baseline x range: frame + margin + striker radius
     int max_events = 200000;              // hard safety bound per simulation
 

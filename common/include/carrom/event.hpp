@@ -18,12 +18,12 @@ enum class EventKind : std::uint8_t {
 enum Cushion : int { kCushionLeft = 0, kCushionRight = 1, kCushionTop = 2, kCushionBottom = 3 };
 
 struct Event {
-    double t_s = 0.0;       // time since the start of the simulation
+    double t_s = 0.0; // time since the start of the simulation
     EventKind kind = EventKind::Collision;
-    int a = -1;             // body id
-    int b = -1;             // body id (Collision), cushion index (Cushion), pocket index (Pocket)
-    double impulse = 0.0;   // magnitude of the normal impulse, mass * px/s (Collision, Cushion)
-    Vec2 pos_px{};          // centre of body a at the event
+    int a = -1;           // body id
+    int b = -1;           // body id (Collision), cushion index (Cushion), pocket index (Pocket)
+    double impulse = 0.0; // magnitude of the normal impulse, mass * px/s (Collision, Cushion)
+    Vec2 pos_px{};        // centre of body a at the event
 };
 
 std::string_view to_string(EventKind kind);

@@ -46,7 +46,7 @@ Body make_striker(const PhysicsConfig& config, Baseline baseline, const Shot& sh
 
 // A scene error names the body (by id, -1 for the scene as a whole) and the field.
 struct SceneError {
-    std::string code;    // stable machine-readable code, e.g. "overlap", "outside_cushions"
+    std::string code; // stable machine-readable code, e.g. "overlap", "outside_cushions"
     int body_id = -1;
     std::string field;   // e.g. "pos.x", "vel.y", "id"
     std::string message; // one plain sentence

@@ -33,10 +33,20 @@ struct Vec2 {
     friend constexpr bool operator==(Vec2 a, Vec2 b) = default;
 };
 
-constexpr double dot(Vec2 a, Vec2 b) { return a.x * b.x + a.y * b.y; }
-constexpr double cross(Vec2 a, Vec2 b) { return a.x * b.y - a.y * b.x; }
-constexpr double length_squared(Vec2 a) { return dot(a, a); }
-inline double length(Vec2 a) { return std::sqrt(dot(a, a)); }
-inline bool is_finite(Vec2 a) { return std::isfinite(a.x) && std::isfinite(a.y); }
+constexpr double dot(Vec2 a, Vec2 b) {
+    return a.x * b.x + a.y * b.y;
+}
+constexpr double cross(Vec2 a, Vec2 b) {
+    return a.x * b.y - a.y * b.x;
+}
+constexpr double length_squared(Vec2 a) {
+    return dot(a, a);
+}
+inline double length(Vec2 a) {
+    return std::sqrt(dot(a, a));
+}
+inline bool is_finite(Vec2 a) {
+    return std::isfinite(a.x) && std::isfinite(a.y);
+}
 
 } // namespace carrom
