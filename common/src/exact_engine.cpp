@@ -687,6 +687,7 @@ void ExactEngine::Impl::settle_initial_state() {
 void ExactEngine::Impl::run_events() {
     const double u_until = std::exp(-k * options.until_s); // 0 when there is no end time
     std::vector<int>& seeds = event_seeds;
+    long pops = 0;
     while (!next.empty()) {
         std::size_t first = 0;
         for (std::size_t i = 1; i < next.size(); ++i) {
@@ -703,7 +704,10 @@ void ExactEngine::Impl::run_events() {
             now = options.until_s; // exact, rather than recomputed from the key
             return;
         }
-        if (result.stats.events >= config.max_events) {
+        // Every pop normally emits at least one event; the pop count guards the bound even if
+        // rounding ever made a predicted event a no-op.
+        ++pops;
+        if (result.stats.events >= config.max_events || pops > 4L * config.max_events) {
             result.truncated = true;
             for (std::size_t i = 0; i < pos.size(); ++i) {
                 if (moving[i]) {
