@@ -2,6 +2,7 @@
 
 #include "board_painter.hpp"
 #include "carrom/client/aim_controller.hpp"
+#include "carrom/client/board_report.hpp"
 #include "carrom/client/demo_link.hpp"
 #include "carrom/client/match_model.hpp"
 #include "carrom/client/screen_mapping.hpp"
@@ -19,8 +20,11 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <ctime>
+#include <fstream>
 #include <iostream>
 #include <numbers>
+#include <optional>
 #include <vector>
 
 namespace carrom::client::app {
@@ -56,22 +60,36 @@ double percentile(std::vector<double> v, double p) {
 struct FrameStats {
     std::vector<double> all_ms;
     std::vector<double> moving_ms;
+    std::vector<double> cpu_ms; // CPU time of the whole process (renderer threads included)
 };
 
-void print_bench(const FrameStats& s, unsigned w, unsigned h) {
-    std::printf("{\"width\": %u, \"height\": %u, \"frames\": %zu, \"p50_ms\": %.3f, "
-                "\"p99_ms\": %.3f, \"max_ms\": %.3f, \"moving_frames\": %zu, "
-                "\"moving_p50_ms\": %.3f, \"moving_p99_ms\": %.3f}\n",
-                w, h, s.all_ms.size(), percentile(s.all_ms, 0.5), percentile(s.all_ms, 0.99),
+struct LayerCounts {
+    long board = 0; // board band and piece atlas paints
+    long hud = 0;   // HUD bar paints
+};
+
+void print_bench(const FrameStats& s, unsigned w, unsigned h, unsigned msaa,
+                 const LayerCounts& paints) {
+    std::printf("{\"width\": %u, \"height\": %u, \"msaa\": %u, \"frames\": %zu, "
+                "\"p50_ms\": %.3f, \"p99_ms\": %.3f, \"max_ms\": %.3f, \"moving_frames\": %zu, "
+                "\"moving_p50_ms\": %.3f, \"moving_p99_ms\": %.3f, \"cpu_p50_ms\": %.3f, "
+                "\"cpu_p99_ms\": %.3f, \"board_paints\": %ld, \"hud_paints\": %ld}\n",
+                w, h, msaa, s.all_ms.size(), percentile(s.all_ms, 0.5), percentile(s.all_ms, 0.99),
                 percentile(s.all_ms, 1.0), s.moving_ms.size(), percentile(s.moving_ms, 0.5),
-                percentile(s.moving_ms, 0.99));
+                percentile(s.moving_ms, 0.99), percentile(s.cpu_ms, 0.5),
+                percentile(s.cpu_ms, 0.99), paints.board, paints.hud);
+}
+
+// Demo screenshots and the benchmark step a fixed 1/60 s per frame (reproducible pictures); a
+// networked client always follows real time, as the server does.
+bool fixed_step(const AppOptions& o) {
+    return o.demo && (!o.screenshot_path.empty() || o.bench_frames > 0);
 }
 
 class App {
 public:
     App(const AppOptions& options, const sf::Font& font)
-        : options_(options), font_(font), clock_(!options.screenshot_path.empty() ||
-                                                 options.bench_frames > 0),
+        : options_(options), font_(font), clock_(fixed_step(options)),
           geometry_(make_board_geometry(physics_)), model_(physics_), aim_(physics_),
           board_painter_(geometry_), hud_(font), lobby_(font),
           sound_(!options.mute && options.bench_frames == 0 && options.screenshot_path.empty()),
@@ -89,7 +107,8 @@ private:
         demo.autoplay_after_s = options_.demo_autoplay_s;
         const PhysicsConfig physics = physics_;
         return [this, demo, physics]() -> std::unique_ptr<MessageLink> {
-            return std::make_unique<DemoLink>(physics, [this] { return clock_.now(); }, demo);
+            return std::make_unique<DemoLink>(
+                physics, [this] { return clock_.now(); }, demo);
         };
     }
     void handle_event(const sf::Event& e);
@@ -100,6 +119,9 @@ private:
     void draw_aim();
     void draw_status_panel(const std::string& title, const std::string& detail);
     bool save_screenshot();
+    bool screenshot_due(int frame) const;
+    int finish_screenshot();
+    void announce_room();
     ScreenMapping mapping() const {
         return make_mapping(layout_.board, physics_.board_size_px, model_.flipped());
     }
@@ -111,6 +133,7 @@ private:
     BoardGeometry geometry_;
     MatchModel model_;
     AimController aim_;
+    Blitter blitter_;
     BoardPainter board_painter_;
     HudPainter hud_;
     LobbyView lobby_;
@@ -123,6 +146,9 @@ private:
     int shot_sent_turn_ = -1; // the turn we already shot in (no double shots)
     double last_aim_sent_s_ = -1.0;
     bool aim_dirty_ = false;
+    int shots_seen_ = 0;                    // shot results received
+    std::optional<Vec2> aim_striker_drawn_; // a striker being placed, drawn this frame
+    std::string announced_room_;            // the room code last printed on stdout
 };
 
 void App::handle_event(const sf::Event& e) {
@@ -177,8 +203,7 @@ void App::handle_match_input(const sf::Event& e) {
             int dir = e.key.code == sf::Keyboard::Left ? -1 : 1;
             dir = model_.flipped() ? -dir : dir;
             aim_.nudge(dir, e.key.shift, pieces);
-        } else if (e.key.code == sf::Keyboard::R &&
-                   model_.view().phase == proto::Phase::GameOver) {
+        } else if (e.key.code == sf::Keyboard::R && model_.view().phase == proto::Phase::GameOver) {
             session_.send_game(proto::Rematch{});
             model_.log().post("Rematch asked for", Tone::Info, clock_.now());
         }
@@ -224,19 +249,25 @@ void App::update(double now) {
         if (std::holds_alternative<proto::Error>(m)) {
             shot_sent_turn_ = -1; // a rejected shot: aim again
         }
+        if (std::holds_alternative<proto::ShotResult>(m)) {
+            ++shots_seen_;
+        }
         model_.handle(m, now);
     }
     for (const ClientSession::PongSample& p : session_.take_pongs()) {
         model_.server_clock().round_trip(p.server_ms, p.sent_s, p.received_s);
     }
-    sync_aim(now);
+    // Render first: the aim starts in the very frame the board comes to rest.
     bodies_ = model_.render(now);
+    sync_aim(now);
+    announce_room();
     for (const SoundCue& cue : model_.take_sounds()) {
         sound_.play(cue);
     }
 }
 
 void App::draw_aim() {
+    aim_striker_drawn_.reset();
     const ScreenMapping m = mapping();
     const MatchView& v = model_.view();
     if (aim_.phase() != AimPhase::Inactive) {
@@ -263,25 +294,28 @@ void App::draw_aim() {
             window_.draw(tris);
             const Vec2 label = m.to_screen(s + Vec2{0.0, 0.0}) +
                                Vec2{0.0, -m.length_to_screen(physics_.striker_radius_px + 22.0)};
-            draw_text(window_, font_, "Power " + std::to_string(std::lround(100.0 * frac)) + "%",
-                      static_cast<unsigned>(std::max(12.0, m.length_to_screen(11.0))),
-                      f(label.x), f(label.y), sf::Color::White, Align::Centre);
+            hud_.texts().draw(window_, "Power " + std::to_string(std::lround(100.0 * frac)) + "%",
+                              static_cast<unsigned>(std::max(12.0, m.length_to_screen(11.0))),
+                              f(label.x), f(label.y), sf::Color::White, Align::Centre);
         }
-        board_painter_.draw_striker(window_, m, s, 1.0, !aim_.placement().legal);
+        board_painter_.draw_striker(window_, blitter_, m, s, 1.0, !aim_.placement().legal);
+        aim_striker_drawn_ = s;
         if (!aim_.placement().legal) {
-            const Vec2 label = m.to_screen(s) +
-                               Vec2{0.0, m.length_to_screen(physics_.striker_radius_px + 16.0)};
-            draw_text(window_, font_, "Overlaps a piece",
-                      static_cast<unsigned>(std::max(12.0, m.length_to_screen(10.0))),
-                      f(label.x), f(label.y), sf::Color(255, 90, 80), Align::Centre);
+            const Vec2 label =
+                m.to_screen(s) + Vec2{0.0, m.length_to_screen(physics_.striker_radius_px + 16.0)};
+            hud_.texts().draw(window_, "Overlaps a piece",
+                              static_cast<unsigned>(std::max(12.0, m.length_to_screen(10.0))),
+                              f(label.x), f(label.y), sf::Color(255, 90, 80), Align::Centre);
         }
         return;
     }
     if (v.phase == proto::Phase::Aiming && !model_.animating() && v.to_play != v.you) {
         // The opponent's striker, where they are placing it.
         const double x = v.aim_x_px.value_or(physics_.centre().x);
-        const Vec2 s{clamp_baseline_x(physics_, x), baseline_y(physics_, model_.seat_baseline(v.to_play))};
-        board_painter_.draw_striker(window_, m, s, 0.85, false);
+        const Vec2 s{clamp_baseline_x(physics_, x),
+                     baseline_y(physics_, model_.seat_baseline(v.to_play))};
+        board_painter_.draw_striker(window_, blitter_, m, s, 0.85, false);
+        aim_striker_drawn_ = s;
     }
 }
 
@@ -289,24 +323,36 @@ void App::draw_status_panel(const std::string& title, const std::string& detail)
     const Rect& b = layout_.board;
     draw_panel(window_, b, sf::Color(20, 12, 8, 200));
     const float cx = f(b.x + b.w / 2.0);
-    draw_text(window_, font_, title, static_cast<unsigned>(std::clamp(b.h * 0.05, 18.0, 44.0)),
-              cx, f(b.y + b.h * 0.42), sf::Color(236, 184, 64), Align::Centre);
-    draw_text(window_, font_, detail, static_cast<unsigned>(std::clamp(b.h * 0.024, 12.0, 22.0)),
-              cx, f(b.y + b.h * 0.52), sf::Color(242, 232, 214), Align::Centre);
+    draw_text(window_, font_, title, static_cast<unsigned>(std::clamp(b.h * 0.05, 18.0, 44.0)), cx,
+              f(b.y + b.h * 0.42), sf::Color(236, 184, 64), Align::Centre);
+    // One sentence per line, so long reasons stay inside the window.
+    const auto size = static_cast<unsigned>(std::clamp(b.h * 0.024, 12.0, 22.0));
+    std::size_t start = 0;
+    double y = b.y + b.h * 0.52;
+    while (start < detail.size()) {
+        std::size_t end = detail.find(". ", start);
+        end = end == std::string::npos ? detail.size() : end + 1;
+        draw_text(window_, font_, detail.substr(start, end - start), size, cx, f(y),
+                  sf::Color(242, 232, 214), Align::Centre);
+        y += size * 1.5;
+        start = end < detail.size() ? end + 1 : end;
+    }
 }
 
 void App::draw(double now) {
-    window_.clear(sf::Color(28, 18, 12));
     const ScreenMapping m = mapping();
-    board_painter_.draw_board(window_, m);
     const SessionPhase phase = session_.phase();
+    const Rect band{0.0, layout_.top_bar.h, layout_.top_bar.w,
+                    layout_.bottom_bar.y - layout_.top_bar.h};
     if (model_.view().in_room) {
-        board_painter_.draw_pieces(window_, m, bodies_);
+        // The bars and the band between them cover the window: no clear.
+        board_painter_.draw_board(window_, blitter_, m, band);
+        board_painter_.draw_pieces(window_, blitter_, m, bodies_);
         draw_aim();
         ConnectionLine line{session_.status_text(),
                             phase == SessionPhase::InRoom || phase == SessionPhase::Joining,
                             session_.rtt_ms()};
-        hud_.draw(window_, layout_, model_, line, now);
+        hud_.draw(window_, blitter_, layout_, model_, line, now);
         if (phase == SessionPhase::Reconnecting || phase == SessionPhase::Failed ||
             phase == SessionPhase::Connecting || phase == SessionPhase::Greeting) {
             draw_status_panel(phase == SessionPhase::Failed ? "Disconnected" : "Reconnecting",
@@ -314,6 +360,8 @@ void App::draw(double now) {
         }
         return;
     }
+    window_.clear(BoardPainter::kMargin);
+    board_painter_.draw_board(window_, blitter_, m, band);
     std::string error;
     for (const HudLine& l : model_.log().visible(now)) {
         if (l.tone == Tone::Error) {
@@ -337,6 +385,51 @@ void App::draw(double now) {
     }
 }
 
+// "room CODE" on stdout once per room, for scripts that start a second player (or a bot) with
+// that code.
+void App::announce_room() {
+    const MatchView& v = model_.view();
+    if (!v.in_room || v.code.empty() || v.code == announced_room_) {
+        return;
+    }
+    announced_room_ = v.code;
+    std::cout << "room " << v.code << std::endl;
+}
+
+bool App::screenshot_due(int frame) const {
+    if (options_.screenshot_path.empty() || frame < options_.frames) {
+        return false;
+    }
+    return options_.after_shots <= 0 ||
+           (shots_seen_ >= options_.after_shots && !model_.animating());
+}
+
+int App::finish_screenshot() {
+    const bool saved = save_screenshot();
+    if (!saved) {
+        std::cerr << "carrom-client: could not save " << options_.screenshot_path << "\n";
+        return 1;
+    }
+    if (!options_.report_path.empty()) {
+        const sf::Vector2u size = window_.getSize();
+        std::ofstream out(options_.report_path);
+        std::vector<RenderedBody> drawn = bodies_;
+        if (aim_striker_drawn_) {
+            drawn.push_back(
+                RenderedBody{-1, BodyKind::Striker, *aim_striker_drawn_, 1.0, 1.0, false});
+        }
+        const ReportContext context{static_cast<double>(size.x), static_cast<double>(size.y),
+                                    shots_seen_, hud_.overlay_area()};
+        out << board_report_json(model_.view(), drawn, mapping(), context) << "\n";
+        if (!out) {
+            std::cerr << "carrom-client: could not write " << options_.report_path << "\n";
+            return 1;
+        }
+    }
+    std::cout << "saved " << options_.screenshot_path << std::endl;
+    return 0;
+}
+
 bool App::save_screenshot() {
     sf::Texture shot;
     const sf::Vector2u size = window_.getSize();
@@ -349,7 +442,7 @@ bool App::save_screenshot() {
 
 int App::run() {
     sf::ContextSettings settings;
-    settings.antialiasingLevel = 4;
+    settings.antialiasingLevel = options_.msaa;
     window_.create(sf::VideoMode(options_.width, options_.height),
                    "Carrom" + std::string(options_.demo ? " (demo)" : ""), sf::Style::Default,
                    settings);
@@ -357,11 +450,12 @@ int App::run() {
         std::cerr << "carrom-client: could not open a window (is DISPLAY set?)\n";
         return 1;
     }
-    const bool fixed = !options_.screenshot_path.empty() || options_.bench_frames > 0;
-    if (!fixed) {
+    if (!fixed_step(options_)) {
         window_.setVerticalSyncEnabled(true);
-        window_.setFramerateLimit(144);
+        // A screenshot of a networked match counts frames at 60 per second of real time.
+        window_.setFramerateLimit(options_.screenshot_path.empty() ? 144 : 60);
     }
+    const auto started = std::chrono::steady_clock::now();
     const sf::Vector2u size = window_.getSize();
     window_.setView(sf::View(sf::FloatRect(0.0f, 0.0f, f(size.x), f(size.y))));
     layout_ = make_layout(size.x, size.y);
@@ -374,6 +468,7 @@ int App::run() {
     constexpr int kWarmupFrames = 10;
     while (window_.isOpen()) {
         const auto t0 = std::chrono::steady_clock::now();
+        const std::clock_t cpu0 = std::clock();
         sf::Event event;
         while (window_.pollEvent(event)) {
             handle_event(event);
@@ -382,15 +477,18 @@ int App::run() {
         update(now);
         draw(now);
         ++frame;
-        if (!options_.screenshot_path.empty() && frame >= options_.frames) {
-            const bool saved = save_screenshot();
+        if (screenshot_due(frame)) {
+            const int code = finish_screenshot();
             window_.close();
-            if (!saved) {
-                std::cerr << "carrom-client: could not save " << options_.screenshot_path << "\n";
-                return 1;
-            }
-            std::cout << "saved " << options_.screenshot_path << "\n";
-            return 0;
+            return code;
+        }
+        if (options_.timeout_s > 0.0 &&
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count() >
+                options_.timeout_s) {
+            std::cerr << "carrom-client: gave up after " << options_.timeout_s << " s ("
+                      << session_.status_text() << ", " << shots_seen_ << " shots seen)\n";
+            window_.close();
+            return 3;
         }
         window_.display();
         const double ms =
@@ -398,12 +496,15 @@ int App::run() {
                 .count();
         if (options_.bench_frames > 0 && frame > kWarmupFrames) {
             stats.all_ms.push_back(ms);
+            stats.cpu_ms.push_back(1000.0 * static_cast<double>(std::clock() - cpu0) /
+                                   CLOCKS_PER_SEC);
             if (model_.animating()) {
                 stats.moving_ms.push_back(ms);
             }
             if (frame >= options_.bench_frames + kWarmupFrames) {
                 window_.close();
-                print_bench(stats, size.x, size.y);
+                print_bench(stats, size.x, size.y, options_.msaa,
+                            {board_painter_.repaints(), hud_.bar_repaints()});
                 return 0;
             }
         }

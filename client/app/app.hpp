@@ -15,13 +15,21 @@ struct AppOptions {
     std::optional<RoomRequest> request; // from the flags; else the lobby asks
     bool demo = false;                  // offline: a local stand-in server (DemoLink)
     double demo_break_at_s = 1.5;
-    double demo_autoplay_s = -1.0;      // >= 0: the demo plays our shots too
+    double demo_autoplay_s = -1.0; // >= 0: the demo plays our shots too
     bool mute = false;
+    // Window multisampling (antialiasing) level; 0 = off. The board and the pieces are painted
+    // antialiased into textures anyway; MSAA on the window only smooths the aim line.
+    unsigned msaa = 0;
     unsigned width = 900;
     unsigned height = 900;
     std::string screenshot_path; // non-empty: save a PNG after `frames` frames and exit
     int frames = 120;
-    int bench_frames = 0; // > 0: render that many demo frames and print frame times as JSON
+    // With a screenshot: also wait until this many shot results have arrived and the board is
+    // drawn at rest again.
+    int after_shots = 0;
+    std::string report_path; // with a screenshot: what it shows as JSON (board_report.hpp)
+    double timeout_s = 0.0;  // > 0: exit with code 3 if still running after this many seconds
+    int bench_frames = 0;    // > 0: render that many demo frames and print frame times as JSON
 };
 
 // Runs until the window closes; returns the process exit code.

@@ -1,6 +1,7 @@
 #include "board_painter.hpp"
 
 #include "draw_util.hpp"
+#include "text.hpp"
 
 #include <cmath>
 #include <cstdint>
@@ -13,7 +14,8 @@ constexpr double kPi = std::numbers::pi;
 
 // Smooth value noise in [0, 1] for the wood grain (deterministic).
 double hash01(int x, int y) {
-    auto h = static_cast<std::uint32_t>(x) * 374761393u + static_cast<std::uint32_t>(y) * 668265263u;
+    auto h =
+        static_cast<std::uint32_t>(x) * 374761393u + static_cast<std::uint32_t>(y) * 668265263u;
     h = (h ^ (h >> 13)) * 1274126177u;
     return static_cast<double>(h ^ (h >> 16)) / 4294967295.0;
 }
@@ -140,10 +142,32 @@ void add_pockets(sf::VertexArray& t, const BoardGeometry& g, const ScreenMapping
         for (int i = 0; i < kRings; ++i) {
             const double k = 1.0 - static_cast<double>(i) / kRings;
             const auto v = static_cast<sf::Uint8>(12 + 26 * k);
-            add_disc(t, c, r * (1.0 - 0.12 * i), sf::Color{v, static_cast<sf::Uint8>(v * 0.8),
-                                                           static_cast<sf::Uint8>(v * 0.6)});
+            add_disc(
+                t, c, r * (1.0 - 0.12 * i),
+                sf::Color{v, static_cast<sf::Uint8>(v * 0.8), static_cast<sf::Uint8>(v * 0.6)});
         }
     }
+}
+
+// A piece as triangles, centred at c with radius r (window px): shadow, rim, face, ring, highlight.
+void add_piece_shape(sf::VertexArray& t, Vec2 c, double r, BodyKind kind, const PieceLook& look) {
+    const int seg = r > 20.0 ? 48 : 32;
+    add_disc(t, c + Vec2{r * 0.12, r * 0.18}, r * 1.02, sf::Color(0, 0, 0, 70), seg);
+    add_disc(t, c, r, look.rim, seg);
+    add_disc(t, c, r * 0.88, look.fill, seg);
+    const double ring_w = kind == BodyKind::Striker ? r * 0.12 : r * 0.06;
+    add_arc(t, c, r * 0.62, ring_w, 0.0, 2.0 * kPi, look.ring, seg);
+    if (kind == BodyKind::Striker) {
+        add_arc(t, c, r * 0.3, r * 0.08, 0.0, 2.0 * kPi, kRed, seg);
+    }
+    // A soft highlight on the upper left.
+    add_arc(t, c, r * 0.78, r * 0.08, 1.1 * kPi, 1.45 * kPi, sf::Color(255, 255, 255, 60), 8);
+}
+
+constexpr int kKinds = 4; // BodyKind: Black, White, Queen, Striker
+
+bool same_rect(const Rect& a, const Rect& b) {
+    return a.x == b.x && a.y == b.y && a.w == b.w && a.h == b.h;
 }
 
 } // namespace
@@ -162,95 +186,137 @@ PieceLook piece_look(BodyKind kind) {
     return {{128, 128, 128}, {64, 64, 64}, {96, 96, 96}};
 }
 
-BoardPainter::BoardPainter(const BoardGeometry& geometry)
-    : geometry_(geometry), pieces_(sf::Triangles) {}
-
-void BoardPainter::repaint(unsigned side) {
-    texture_ = std::make_unique<sf::RenderTexture>();
+bool BoardPainter::repaint_band(sf::RenderTarget& target, Blitter& blitter,
+                                const ScreenMapping& mapping, const Rect& band) {
+    const auto w = static_cast<unsigned>(std::lround(band.w));
+    const auto h = static_cast<unsigned>(std::lround(band.h));
+    const auto side =
+        static_cast<unsigned>(std::lround(mapping.length_to_screen(geometry_.board_size_px)));
+    if (w == 0 || h == 0 || side == 0) {
+        return false;
+    }
+    sf::RenderTexture canvas;
     sf::ContextSettings settings;
     settings.antialiasingLevel = 4;
-    if (!texture_->create(side, side, settings)) {
-        texture_.reset();
-        return;
+    if (!canvas.create(w, h, settings)) {
+        return false;
     }
     sf::Image wood;
     wood.create(side, side);
     paint_wood(wood, geometry_, side);
     sf::Texture wood_texture;
     wood_texture.loadFromImage(wood);
-    texture_->clear();
-    texture_->draw(sf::Sprite(wood_texture));
-    const ScreenMapping local =
-        make_mapping({0.0, 0.0, static_cast<double>(side), static_cast<double>(side)},
-                     geometry_.board_size_px, false);
+    canvas.clear(kMargin);
+    // Board px -> band px; the markings are symmetric under a half turn, so a flipped view
+    // uses the same picture.
+    const Rect board{std::round(mapping.origin_x) - band.x, std::round(mapping.origin_y) - band.y,
+                     static_cast<double>(side), static_cast<double>(side)};
+    sf::Sprite sprite(wood_texture);
+    sprite.setPosition(f(board.x), f(board.y));
+    canvas.draw(sprite);
+    const ScreenMapping local = make_mapping(board, geometry_.board_size_px, false);
     sf::VertexArray tris(sf::Triangles);
     add_markings(tris, geometry_, local);
     add_pockets(tris, geometry_, local);
-    texture_->draw(tris);
-    texture_->display();
-    texture_->setSmooth(true);
-    painted_side_ = side;
+    canvas.draw(tris);
+    canvas.display();
+    ++repaints_;
+    return blitter.upload(target, band_, canvas.getTexture().copyToImage());
 }
 
-void BoardPainter::draw_board(sf::RenderTarget& target, const ScreenMapping& mapping) {
-    const auto side = static_cast<unsigned>(std::lround(mapping.length_to_screen(
-        geometry_.board_size_px)));
-    if (side == 0) {
-        return;
+bool BoardPainter::repaint_atlas(sf::RenderTarget& target, Blitter& blitter, double scale) {
+    const double striker_r = geometry_.striker_r_px * scale;
+    cell_px_ = 2.0 * std::ceil(striker_r * 1.25 + 2.0);
+    const auto cell = static_cast<unsigned>(cell_px_);
+    sf::RenderTexture canvas;
+    sf::ContextSettings settings;
+    settings.antialiasingLevel = 4;
+    if (!canvas.create(cell * kKinds, cell, settings)) {
+        return false;
     }
-    if (!texture_ || side != painted_side_) {
-        repaint(side);
+    // Drawn with the usual alpha blend over transparent black: opaque parts and the black
+    // shadow come out the same premultiplied or not, antialiased edges come out premultiplied.
+    canvas.clear(sf::Color::Transparent);
+    sf::VertexArray tris(sf::Triangles);
+    for (int k = 0; k < kKinds; ++k) {
+        const auto kind = static_cast<BodyKind>(k);
+        const double r =
+            (kind == BodyKind::Striker ? geometry_.striker_r_px : geometry_.coin_r_px) * scale;
+        add_piece_shape(tris, {cell_px_ * (k + 0.5), cell_px_ * 0.5}, r, kind, piece_look(kind));
     }
-    if (!texture_) {
-        return;
-    }
-    // The markings are symmetric under a half turn, so a flipped view uses the same texture.
-    sf::Sprite sprite(texture_->getTexture());
-    sprite.setPosition(f(mapping.origin_x), f(mapping.origin_y));
-    target.draw(sprite);
+    canvas.draw(tris);
+    canvas.display();
+    ++repaints_;
+    return blitter.upload(target, atlas_, canvas.getTexture().copyToImage());
 }
 
-void BoardPainter::add_piece(sf::VertexArray& t, const ScreenMapping& m, BodyKind kind, Vec2 pos,
-                             double scale, double alpha) const {
-    const PieceLook look = piece_look(kind);
-    const double r = m.length_to_screen(kind == BodyKind::Striker ? geometry_.striker_r_px
-                                                                  : geometry_.coin_r_px) *
-                     scale;
-    const Vec2 c = m.to_screen(pos);
-    const int seg = r > 20.0 ? 48 : 32;
-    add_disc(t, c + Vec2{r * 0.12, r * 0.18}, r * 1.02, sf::Color(0, 0, 0, static_cast<sf::Uint8>(70 * alpha)), seg);
-    add_disc(t, c, r, with_alpha(look.rim, alpha), seg);
-    add_disc(t, c, r * 0.88, with_alpha(look.fill, alpha), seg);
-    const double ring_w = kind == BodyKind::Striker ? r * 0.12 : r * 0.06;
-    add_arc(t, c, r * 0.62, ring_w, 0.0, 2.0 * kPi, with_alpha(look.ring, alpha), seg);
-    if (kind == BodyKind::Striker) {
-        add_arc(t, c, r * 0.3, r * 0.08, 0.0, 2.0 * kPi, with_alpha(kRed, alpha), seg);
+void BoardPainter::draw_board(sf::RenderTarget& target, Blitter& blitter,
+                              const ScreenMapping& mapping, const Rect& band) {
+    const Vec2 origin{mapping.origin_x, mapping.origin_y};
+    if (!band_ok_ || !same_rect(band, painted_band_) || !(origin == painted_origin_) ||
+        mapping.scale != painted_scale_) {
+        band_ok_ = repaint_band(target, blitter, mapping, band);
+        painted_band_ = band;
+        painted_origin_ = origin;
+        painted_scale_ = mapping.scale;
     }
-    // A soft highlight on the upper left.
-    add_arc(t, c, r * 0.78, r * 0.08, 1.1 * kPi, 1.45 * kPi,
-            sf::Color(255, 255, 255, static_cast<sf::Uint8>(60 * alpha)), 8);
+    if (band_ok_) {
+        blitter.copy(target, band_, f(band.x), f(band.y));
+    } else {
+        draw_panel(target, band, kMargin);
+    }
 }
 
-void BoardPainter::draw_pieces(sf::RenderTarget& target, const ScreenMapping& mapping,
+void BoardPainter::draw_pieces(sf::RenderTarget& target, Blitter& blitter,
+                               const ScreenMapping& mapping,
                                const std::vector<RenderedBody>& bodies) {
-    pieces_.clear();
-    for (const RenderedBody& b : bodies) {
-        add_piece(pieces_, mapping, b.kind, b.pos_px, b.scale, b.alpha);
+    if (atlas_scale_ != mapping.scale) {
+        atlas_ok_ = repaint_atlas(target, blitter, mapping.scale);
+        atlas_scale_ = mapping.scale;
     }
-    target.draw(pieces_);
+    if (!atlas_ok_) {
+        return;
+    }
+    resting_.clear();
+    falling_.clear();
+    for (const RenderedBody& b : bodies) {
+        const Vec2 c = mapping.to_screen(b.pos_px);
+        const Rect cell{cell_px_ * static_cast<int>(b.kind), 0.0, cell_px_, cell_px_};
+        if (b.scale == 1.0 && b.alpha >= 1.0) {
+            // Whole px, so the texels land 1:1 (nearest sampling).
+            const Rect dst{std::round(c.x - cell_px_ / 2.0), std::round(c.y - cell_px_ / 2.0),
+                           cell_px_, cell_px_};
+            Blitter::add_rect(resting_, dst, cell);
+            continue;
+        }
+        // Fading: all four channels scaled, as the colours are premultiplied.
+        const double half = cell_px_ * 0.5 * b.scale;
+        const auto a = static_cast<sf::Uint8>(std::lround(std::clamp(b.alpha, 0.0, 1.0) * 255.0));
+        Blitter::add_rect(falling_, {c.x - half, c.y - half, 2.0 * half, 2.0 * half}, cell,
+                          sf::Color(a, a, a, a));
+    }
+    if (falling_.getVertexCount() > 0) {
+        target.draw(falling_, sf::RenderStates(Blitter::kPremultiplied, sf::Transform::Identity,
+                                               &atlas_, nullptr));
+    }
+    if (resting_.getVertexCount() > 0) {
+        blitter.draw_premultiplied(target, resting_, atlas_);
+    }
 }
 
-void BoardPainter::draw_striker(sf::RenderTarget& target, const ScreenMapping& mapping,
-                                Vec2 pos_px, double alpha, bool warning) {
-    pieces_.clear();
-    add_piece(pieces_, mapping, BodyKind::Striker, pos_px, 1.0, alpha);
+void BoardPainter::draw_striker(sf::RenderTarget& target, Blitter& blitter,
+                                const ScreenMapping& mapping, Vec2 pos_px, double alpha,
+                                bool warning) {
+    draw_pieces(target, blitter, mapping,
+                {RenderedBody{0, BodyKind::Striker, pos_px, 1.0, alpha, false}});
     if (warning) {
+        overlay_.clear();
         const double r = mapping.length_to_screen(geometry_.striker_r_px);
-        add_disc(pieces_, mapping.to_screen(pos_px), r, sf::Color(220, 30, 30, 140), 48);
-        add_arc(pieces_, mapping.to_screen(pos_px), r + 2.0, 3.0, 0.0, 2.0 * kPi,
+        add_disc(overlay_, mapping.to_screen(pos_px), r, sf::Color(220, 30, 30, 140), 48);
+        add_arc(overlay_, mapping.to_screen(pos_px), r + 2.0, 3.0, 0.0, 2.0 * kPi,
                 sf::Color(230, 20, 20), 48);
+        target.draw(overlay_);
     }
-    target.draw(pieces_);
 }
 
 } // namespace carrom::client::app

@@ -4,6 +4,7 @@
 // the board geometry. The static board is painted once per size into a texture; the pieces are
 // drawn every frame on top.
 
+#include "blitter.hpp"
 #include "carrom/client/board_geometry.hpp"
 #include "carrom/client/interpolation_buffer.hpp"
 #include "carrom/client/screen_mapping.hpp"
@@ -23,28 +24,50 @@ struct PieceLook {
 
 PieceLook piece_look(BodyKind kind);
 
+// Per frame the board and its margins cost one opaque rectangle copy and each resting piece
+// one small premultiplied rectangle, cut from an atlas; both are painted once per window size
+// with antialiasing and handed to the Blitter. Under a software renderer (Xvfb, llvmpipe) fill
+// rate is what a frame costs, so nothing is drawn twice and nothing needs a per-pixel shader.
 class BoardPainter {
 public:
-    explicit BoardPainter(const BoardGeometry& geometry);
+    explicit BoardPainter(const BoardGeometry& geometry) : geometry_(geometry) {}
 
-    // The static board for a square of side_px window px (repainted when the size changes).
-    void draw_board(sf::RenderTarget& target, const ScreenMapping& mapping);
+    // Covers `band` (whole window px, the space between the HUD bars) with the board and the
+    // margins beside it: every pixel of the band exactly once, so the window needs no clear.
+    void draw_board(sf::RenderTarget& target, Blitter& blitter, const ScreenMapping& mapping,
+                    const Rect& band);
     // Pieces at their rendered positions (falling ones shrink and fade).
-    void draw_pieces(sf::RenderTarget& target, const ScreenMapping& mapping,
+    void draw_pieces(sf::RenderTarget& target, Blitter& blitter, const ScreenMapping& mapping,
                      const std::vector<RenderedBody>& bodies);
     // One striker, e.g. while aiming; `warning` draws it red (illegal placement).
-    void draw_striker(sf::RenderTarget& target, const ScreenMapping& mapping, Vec2 pos_px,
-                      double alpha, bool warning);
+    void draw_striker(sf::RenderTarget& target, Blitter& blitter, const ScreenMapping& mapping,
+                      Vec2 pos_px, double alpha, bool warning);
+    // How often the board band and the piece atlas were painted (once per window size).
+    long repaints() const { return repaints_; }
+
+    static inline const sf::Color kMargin{28, 18, 12};
 
 private:
-    void repaint(unsigned side_px);
-    void add_piece(sf::VertexArray& tris, const ScreenMapping& mapping, BodyKind kind, Vec2 pos,
-                   double scale, double alpha) const;
+    bool repaint_band(sf::RenderTarget& target, Blitter& blitter, const ScreenMapping& mapping,
+                      const Rect& band);
+    bool repaint_atlas(sf::RenderTarget& target, Blitter& blitter, double scale);
 
     BoardGeometry geometry_;
-    std::unique_ptr<sf::RenderTexture> texture_;
-    unsigned painted_side_ = 0;
-    sf::VertexArray pieces_;
+    sf::Texture band_;
+    Rect painted_band_;
+    Vec2 painted_origin_;
+    double painted_scale_ = 0.0;
+    bool band_ok_ = false;
+    // One cell per piece kind (BodyKind order), each a square of cell_px_ window px with the
+    // piece (and its shadow) centred in it; colours premultiplied by alpha.
+    sf::Texture atlas_;
+    double atlas_scale_ = 0.0;
+    double cell_px_ = 0.0;
+    bool atlas_ok_ = false;
+    sf::VertexArray resting_{sf::Triangles};
+    sf::VertexArray falling_{sf::Triangles};
+    sf::VertexArray overlay_{sf::Triangles};
+    long repaints_ = 0;
 };
 
 } // namespace carrom::client::app

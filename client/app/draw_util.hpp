@@ -8,8 +8,12 @@
 
 namespace carrom::client::app {
 
-inline sf::Vector2f to_sf(Vec2 v) { return {static_cast<float>(v.x), static_cast<float>(v.y)}; }
-inline float f(double v) { return static_cast<float>(v); }
+inline sf::Vector2f to_sf(Vec2 v) {
+    return {static_cast<float>(v.x), static_cast<float>(v.y)};
+}
+inline float f(double v) {
+    return static_cast<float>(v);
+}
 inline sf::Color with_alpha(sf::Color c, double alpha) {
     c.a = static_cast<sf::Uint8>(std::clamp(alpha, 0.0, 1.0) * c.a);
     return c;

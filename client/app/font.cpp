@@ -10,12 +10,11 @@ std::vector<std::string> font_candidates() {
     if (const char* env = std::getenv("CARROM_FONT"); env != nullptr && *env != '\0') {
         out.emplace_back(env);
     }
-    for (const char* p : {"/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf",
-                          "/usr/share/fonts/TTF/DejaVuSans.ttf",
-                          "/usr/share/fonts/dejavu/DejaVuSans.ttf",
-                          "/usr/share/fonts/dejavu-sans-fonts/DejaVuSans.ttf",
-                          "/usr/local/share/fonts/DejaVuSans.ttf",
-                          "/Library/Fonts/DejaVuSans.ttf"}) {
+    for (const char* p :
+         {"/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf", "/usr/share/fonts/TTF/DejaVuSans.ttf",
+          "/usr/share/fonts/dejavu/DejaVuSans.ttf",
+          "/usr/share/fonts/dejavu-sans-fonts/DejaVuSans.ttf",
+          "/usr/local/share/fonts/DejaVuSans.ttf", "/Library/Fonts/DejaVuSans.ttf"}) {
         out.emplace_back(p);
     }
     return out;

@@ -65,26 +65,31 @@ std::string queen_text(const MatchModel& model) {
 
 } // namespace
 
-void HudPainter::draw(sf::RenderTarget& target, const ScreenLayout& layout,
-                      const MatchModel& model, const ConnectionLine& connection,
-                      double local_s) const {
-    draw_panel(target, layout.top_bar, kBar);
-    draw_panel(target, layout.bottom_bar, kBar);
-    const Rect& top = layout.top_bar;
-    const double side_w = top.w * 0.34;
-    // Our seat on the left (a spectator sees seat 0 there).
-    const int left_seat = model.view().you >= 0 ? model.view().you : 0;
-    draw_seat(target, {top.x, top.y, side_w, top.h}, model, left_seat, false);
-    draw_seat(target, {top.x + top.w - side_w, top.y, side_w, top.h}, model, 1 - left_seat,
-              true);
-    draw_centre(target, {top.x + side_w, top.y, top.w - 2.0 * side_w, top.h}, model, local_s);
-    draw_bottom(target, layout.bottom_bar, model, connection);
-    draw_messages(target, layout.board, model, local_s);
-    draw_room_code(target, layout.board, model);
+void HudPainter::draw(sf::RenderTarget& target, Blitter& blitter, const ScreenLayout& layout,
+                      const MatchModel& model, const ConnectionLine& connection, double local_s) {
+    top_.draw(target, blitter, texts_, layout.top_bar, kBar,
+              top_bar(layout.top_bar, model, local_s));
+    bottom_.draw(target, blitter, texts_, layout.bottom_bar, kBar,
+                 bottom_bar(layout.bottom_bar, model, connection));
+    Sketch over_board;
+    sketch_messages(over_board, layout.board, model, local_s);
+    sketch_room_code(over_board, layout.board, model);
+    over_board_.draw_overlay(target, blitter, texts_, over_board);
 }
 
-void HudPainter::draw_seat(sf::RenderTarget& target, const Rect& area, const MatchModel& model,
-                           int seat, bool right) const {
+Sketch HudPainter::top_bar(const Rect& top, const MatchModel& model, double local_s) const {
+    Sketch s;
+    const double side_w = std::round(top.w * 0.34);
+    // Our seat on the left (a spectator sees seat 0 there).
+    const int left_seat = model.view().you >= 0 ? model.view().you : 0;
+    sketch_seat(s, {top.x, top.y, side_w, top.h}, model, left_seat, false);
+    sketch_seat(s, {top.x + top.w - side_w, top.y, side_w, top.h}, model, 1 - left_seat, true);
+    sketch_centre(s, {top.x + side_w, top.y, top.w - 2.0 * side_w, top.h}, model, local_s);
+    return s;
+}
+
+void HudPainter::sketch_seat(Sketch& sk, const Rect& area, const MatchModel& model, int seat,
+                             bool right) const {
     const MatchView& v = model.view();
     if (seat < 0 || static_cast<std::size_t>(seat) >= v.seats.size()) {
         return;
@@ -92,20 +97,18 @@ void HudPainter::draw_seat(sf::RenderTarget& target, const Rect& area, const Mat
     const SeatView& s = v.seats[static_cast<std::size_t>(seat)];
     const bool to_play = v.phase == proto::Phase::Aiming && v.to_play == seat;
     const Rect inner{area.x + 6.0, area.y + 5.0, area.w - 12.0, area.h - 10.0};
-    draw_panel(target, inner, to_play ? sf::Color(92, 60, 28) : sf::Color(52, 34, 22),
-               to_play ? kGold : sf::Color(80, 56, 40), to_play ? 2.0f : 1.0f);
+    sk.panel(inner, to_play ? sf::Color(92, 60, 28) : sf::Color(52, 34, 22),
+             to_play ? kGold : sf::Color(80, 56, 40), to_play ? 2.0f : 1.0f);
     const float mid = static_cast<float>(inner.y + inner.h / 2.0);
     const double coin_r = inner.h * 0.26;
     const double pad = inner.h * 0.25;
     const double coin_x = right ? inner.x + inner.w - pad - coin_r : inner.x + pad + coin_r;
-    sf::VertexArray tris(sf::Triangles);
-    const BodyKind kind = s.colour == proto::Colour::White ? BodyKind::White
+    const BodyKind kind = s.colour == proto::Colour::White   ? BodyKind::White
                           : s.colour == proto::Colour::Black ? BodyKind::Black
                                                              : BodyKind::Striker;
     const PieceLook look = piece_look(kind);
-    add_disc(tris, {coin_x, mid}, coin_r, look.rim);
-    add_disc(tris, {coin_x, mid}, coin_r * 0.85, look.fill);
-    target.draw(tris);
+    sk.disc({coin_x, mid}, coin_r, look.rim);
+    sk.disc({coin_x, mid}, coin_r * 0.85, look.fill);
     const unsigned name_size = text_size(inner.h, 0.34);
     const unsigned score_size = text_size(inner.h, 0.62);
     std::string name = s.occupied ? s.name : "(empty seat)";
@@ -115,26 +118,26 @@ void HudPainter::draw_seat(sf::RenderTarget& target, const Rect& area, const Mat
     if (seat == v.you) {
         name += " (you)";
     }
-    const std::string score = std::to_string(s.score);
     std::string sub = colour_word(s.colour);
     if (s.dues > 0) {
-        sub += (sub.empty() ? "" : ", ") + std::string("owes ") + count_words(s.dues, "due", "dues");
+        sub +=
+            (sub.empty() ? "" : ", ") + std::string("owes ") + count_words(s.dues, "due", "dues");
     }
     const float text_x = static_cast<float>(right ? coin_x - coin_r - pad : coin_x + coin_r + pad);
     const Align align = right ? Align::Right : Align::Left;
     const float name_y = sub.empty() ? mid : mid - static_cast<float>(inner.h * 0.16);
-    draw_text(target, font_, name, name_size, text_x, name_y, kText, align);
+    sk.text(name, name_size, text_x, name_y, kText, align);
     if (!sub.empty()) {
-        draw_text(target, font_, sub, text_size(inner.h, 0.26), text_x,
-                  mid + static_cast<float>(inner.h * 0.22), s.dues > 0 ? kAlert : kDim, align);
+        sk.text(sub, text_size(inner.h, 0.26), text_x, mid + static_cast<float>(inner.h * 0.22),
+                s.dues > 0 ? kAlert : kDim, align);
     }
     const float score_x = static_cast<float>(right ? inner.x + pad : inner.x + inner.w - pad);
-    draw_text(target, font_, score, score_size, score_x, mid, to_play ? kGold : kText,
-              right ? Align::Left : Align::Right);
+    sk.text(std::to_string(s.score), score_size, score_x, mid, to_play ? kGold : kText,
+            right ? Align::Left : Align::Right);
 }
 
-void HudPainter::draw_centre(sf::RenderTarget& target, const Rect& area, const MatchModel& model,
-                             double local_s) const {
+void HudPainter::sketch_centre(Sketch& sk, const Rect& area, const MatchModel& model,
+                               double local_s) const {
     const MatchView& v = model.view();
     const float cx = static_cast<float>(area.x + area.w / 2.0);
     const float mid = static_cast<float>(area.y + area.h / 2.0);
@@ -155,7 +158,7 @@ void HudPainter::draw_centre(sf::RenderTarget& target, const Rect& area, const M
         status = "Board " + std::to_string(v.board_number) + " over";
         break;
     case proto::Phase::GameOver:
-        status = v.winner < 0 ? "Game drawn"
+        status = v.winner < 0        ? "Game drawn"
                  : v.winner == v.you ? "You won!"
                                      : model.seat_name(v.winner) + " won";
         colour = kGold;
@@ -168,14 +171,15 @@ void HudPainter::draw_centre(sf::RenderTarget& target, const Rect& area, const M
             colour = kAlert;
         }
     }
-    draw_text(target, font_, status, text_size(area.h, 0.34), cx,
-              mid - static_cast<float>(area.h * 0.14), colour, Align::Centre);
-    draw_text(target, font_, queen_text(model), text_size(area.h, 0.24), cx,
-              mid + static_cast<float>(area.h * 0.26), kDim, Align::Centre);
+    sk.text(status, text_size(area.h, 0.34), cx, mid - static_cast<float>(area.h * 0.14), colour,
+            Align::Centre);
+    sk.text(queen_text(model), text_size(area.h, 0.24), cx, mid + static_cast<float>(area.h * 0.26),
+            kDim, Align::Centre);
 }
 
-void HudPainter::draw_bottom(sf::RenderTarget& target, const Rect& area, const MatchModel& model,
-                             const ConnectionLine& connection) const {
+Sketch HudPainter::bottom_bar(const Rect& area, const MatchModel& model,
+                              const ConnectionLine& connection) const {
+    Sketch sk;
     const MatchView& v = model.view();
     const float mid = static_cast<float>(area.y + area.h / 2.0);
     const unsigned size = text_size(area.h, 0.48);
@@ -187,51 +191,50 @@ void HudPainter::draw_bottom(sf::RenderTarget& target, const Rect& area, const M
     if (v.you < 0) {
         left += "  \xc2\xb7  spectating";
     }
-    draw_text(target, font_, left, size, static_cast<float>(area.x + 10.0), mid, kDim);
+    sk.text(left, size, static_cast<float>(area.x + 10.0), mid, kDim);
     std::string right = connection.text;
     if (connection.rtt_ms) {
         std::ostringstream rtt;
         rtt << "  \xc2\xb7  RTT " << static_cast<int>(std::lround(*connection.rtt_ms)) << " ms";
         right += rtt.str();
     }
-    draw_text(target, font_, right, size, static_cast<float>(area.x + area.w - 10.0), mid,
-              connection.healthy ? kOk : kAlert, Align::Right);
+    sk.text(right, size, static_cast<float>(area.x + area.w - 10.0), mid,
+            connection.healthy ? kOk : kAlert, Align::Right);
+    return sk;
 }
 
-void HudPainter::draw_messages(sf::RenderTarget& target, const Rect& board,
-                               const MatchModel& model, double local_s) const {
+void HudPainter::sketch_messages(Sketch& sk, const Rect& board, const MatchModel& model,
+                                 double local_s) {
     const std::vector<HudLine> lines = model.log().visible(local_s);
     const double line_h = std::clamp(board.h * 0.036, 16.0, 30.0);
     const unsigned size = static_cast<unsigned>(line_h * 0.6);
-    double y = board.y + board.h * 0.075;
+    double y = board.y + board.h * 0.2; // between the top baseline and the centre circle
     for (const HudLine& line : lines) {
-        sf::Text probe(sf::String::fromUtf8(line.text.begin(), line.text.end()), font_, size);
-        const double w = static_cast<double>(probe.getLocalBounds().width) + line_h;
-        const Rect panel{board.x + board.w / 2.0 - w / 2.0, y, w, line_h};
-        draw_panel(target, panel, sf::Color(20, 12, 8, 190));
-        draw_text(target, font_, line.text, size, static_cast<float>(board.x + board.w / 2.0),
-                  static_cast<float>(y + line_h / 2.0), tone_colour(line.tone), Align::Centre);
+        const double w = static_cast<double>(texts_.width(line.text, size)) + line_h;
+        sk.panel({std::round(board.x + board.w / 2.0 - w / 2.0), std::round(y), std::round(w),
+                  std::round(line_h)},
+                 sf::Color(20, 12, 8, 190));
+        sk.text(line.text, size, static_cast<float>(board.x + board.w / 2.0),
+                static_cast<float>(y + line_h / 2.0), tone_colour(line.tone), Align::Centre);
         y += line_h + 3.0;
     }
 }
 
-void HudPainter::draw_room_code(sf::RenderTarget& target, const Rect& board,
-                                const MatchModel& model) const {
+void HudPainter::sketch_room_code(Sketch& sk, const Rect& board, const MatchModel& model) const {
     const MatchView& v = model.view();
     if (v.phase != proto::Phase::Waiting || v.code.empty()) {
         return;
     }
     const Rect panel{board.x + board.w * 0.18, board.y + board.h * 0.36, board.w * 0.64,
                      board.h * 0.28};
-    draw_panel(target, panel, sf::Color(20, 12, 8, 215), kGold, 2.0f);
+    sk.panel(panel, sf::Color(20, 12, 8, 215), kGold, 2.0f);
     const float cx = static_cast<float>(panel.x + panel.w / 2.0);
-    draw_text(target, font_, "Room code", text_size(panel.h, 0.1), cx,
-              static_cast<float>(panel.y + panel.h * 0.17), kDim, Align::Centre);
-    draw_text(target, font_, v.code, text_size(panel.h, 0.34), cx,
-              static_cast<float>(panel.y + panel.h * 0.5), kGold, Align::Centre);
-    draw_text(target, font_, "Share it: your opponent joins with this code",
-              text_size(panel.h, 0.085), cx, static_cast<float>(panel.y + panel.h * 0.83), kText,
-              Align::Centre);
+    sk.text("Room code", text_size(panel.h, 0.1), cx, static_cast<float>(panel.y + panel.h * 0.17),
+            kDim, Align::Centre);
+    sk.text(v.code, text_size(panel.h, 0.34), cx, static_cast<float>(panel.y + panel.h * 0.5),
+            kGold, Align::Centre);
+    sk.text("Share it: your opponent joins with this code", text_size(panel.h, 0.085), cx,
+            static_cast<float>(panel.y + panel.h * 0.83), kText, Align::Centre);
 }
 
 } // namespace carrom::client::app

@@ -3,8 +3,10 @@
 // and the queen in the middle; room, rule set, connection and round trip along the bottom;
 // recent messages over the board; the room code large while the room waits for a player.
 
+#include "cached_layer.hpp"
 #include "carrom/client/match_model.hpp"
 #include "carrom/client/screen_mapping.hpp"
+#include "sketch.hpp"
 
 #include <SFML/Graphics.hpp>
 
@@ -14,30 +16,40 @@
 namespace carrom::client::app {
 
 struct ConnectionLine {
-    std::string text;               // "Connected", "Reconnecting (attempt 2)..."
+    std::string text; // "Connected", "Reconnecting (attempt 2)..."
     bool healthy = true;
     std::optional<double> rtt_ms;
 };
 
+// The bars are sketched every frame (cheap, plain data) but painted into their textures only
+// when the sketch differs from the last one: the shot clock repaints the top bar once a second.
 class HudPainter {
 public:
-    explicit HudPainter(const sf::Font& font) : font_(font) {}
-    void draw(sf::RenderTarget& target, const ScreenLayout& layout, const MatchModel& model,
-              const ConnectionLine& connection, double local_s) const;
+    explicit HudPainter(const sf::Font& font) : texts_(font) {}
+    void draw(sf::RenderTarget& target, Blitter& blitter, const ScreenLayout& layout,
+              const MatchModel& model, const ConnectionLine& connection, double local_s);
+    // How often the bars and the messages were painted into their textures.
+    long bar_repaints() const {
+        return top_.repaints() + bottom_.repaints() + over_board_.repaints();
+    }
+    TextCache& texts() { return texts_; }
+    // The part of the board the last draw covered with messages or the room code, if any.
+    const std::optional<Rect>& overlay_area() const { return over_board_.last_overlay(); }
 
 private:
-    void draw_seat(sf::RenderTarget& target, const Rect& area, const MatchModel& model, int seat,
-                   bool right) const;
-    void draw_centre(sf::RenderTarget& target, const Rect& area, const MatchModel& model,
-                     double local_s) const;
-    void draw_bottom(sf::RenderTarget& target, const Rect& area, const MatchModel& model,
-                     const ConnectionLine& connection) const;
-    void draw_messages(sf::RenderTarget& target, const Rect& board, const MatchModel& model,
-                       double local_s) const;
-    void draw_room_code(sf::RenderTarget& target, const Rect& board,
-                        const MatchModel& model) const;
+    Sketch top_bar(const Rect& area, const MatchModel& model, double local_s) const;
+    void sketch_seat(Sketch& s, const Rect& area, const MatchModel& model, int seat,
+                     bool right) const;
+    void sketch_centre(Sketch& s, const Rect& area, const MatchModel& model, double local_s) const;
+    Sketch bottom_bar(const Rect& area, const MatchModel& model,
+                      const ConnectionLine& connection) const;
+    void sketch_messages(Sketch& s, const Rect& board, const MatchModel& model, double local_s);
+    void sketch_room_code(Sketch& s, const Rect& board, const MatchModel& model) const;
 
-    const sf::Font& font_;
+    TextCache texts_;
+    CachedLayer top_;
+    CachedLayer bottom_;
+    CachedLayer over_board_;
 };
 
 } // namespace carrom::client::app

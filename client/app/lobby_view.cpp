@@ -93,8 +93,7 @@ std::optional<RoomRequest> LobbyView::on_event(const sf::Event& event, const Rec
 }
 
 void LobbyView::draw(sf::RenderTarget& target, const Rect& area, const std::string& name,
-                     const std::string& status, const std::string& error,
-                     bool can_choose) const {
+                     const std::string& status, const std::string& error, bool can_choose) const {
     draw_panel(target, area, sf::Color(20, 12, 8, 200));
     const float cx = static_cast<float>(area.x + area.w / 2.0);
     const auto big = static_cast<unsigned>(std::clamp(area.h * 0.09, 24.0, 72.0));
@@ -106,8 +105,8 @@ void LobbyView::draw(sf::RenderTarget& target, const Rect& area, const std::stri
     draw_text(target, font_, status, mid, cx, static_cast<float>(area.y + area.h * 0.30), kDim,
               Align::Centre);
     if (can_choose) {
-        const char* labels[kControlCount] = {"Create room", "Play the bot", "Quick match",
-                                             "",            "Join",         "Watch"};
+        const char* labels[kControlCount] = {"Create room", "Play the bot", "Quick match", "",
+                                             "Join",        "Watch"};
         for (int c = 0; c < kControlCount; ++c) {
             const Rect r = control_rect(static_cast<Control>(c), area);
             const bool field = c == kCode;

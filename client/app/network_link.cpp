@@ -1,10 +1,78 @@
 #include "network_link.hpp"
 
+#ifdef CARROM_CLIENT_HAS_NET
+#include "carrom/net/connection.hpp"
+#include "carrom/net/ws_url.hpp"
+
+#include <variant>
+#endif
+
 #include <charconv>
 
 namespace carrom::client::app {
+#ifdef CARROM_CLIENT_HAS_NET
+namespace {
+
+// MessageLink over a net::Connection (WebSocket, its own I/O thread; thread-safe, so the UI
+// thread calls it directly). The connection encodes, decodes and validates; frames that fail
+// to decode are skipped there and only counted, which the status detail mentions.
+class NetworkLink final : public MessageLink {
+public:
+    explicit NetworkLink(const std::string& url) : connection_(net::Connection::open(url)) {}
+    ~NetworkLink() override = default; // the connection closes and joins its thread
+
+    NetworkLink(const NetworkLink&) = delete;
+    NetworkLink& operator=(const NetworkLink&) = delete;
+
+    void send(const proto::ClientMessage& message) override { connection_->send(message); }
+    std::vector<proto::ServerMessage> poll() override { return connection_->poll(); }
+    LinkStatus status() const override {
+        const net::ConnectionStatus s = connection_->status();
+        LinkStatus out;
+        switch (s.state) {
+        case net::ConnectionState::Connecting:
+            out.state = LinkState::Connecting;
+            break;
+        case net::ConnectionState::Open:
+            out.state = LinkState::Open;
+            break;
+        case net::ConnectionState::Closed:
+            out.state = LinkState::Closed;
+            break;
+        }
+        out.detail = s.detail;
+        if (const int bad = connection_->decode_errors(); bad > 0) {
+            out.detail += (out.detail.empty() ? "" : " ") + std::to_string(bad) +
+                          (bad == 1 ? " message" : " messages") +
+                          " from the server could not be read and were ignored.";
+        }
+        return out;
+    }
+    void close() override { connection_->close(); }
+
+private:
+    std::unique_ptr<net::Connection> connection_;
+};
+
+} // namespace
 
 std::string check_url(const std::string& url) {
+    const auto parsed = net::parse_ws_url(url);
+    if (const auto* problem = std::get_if<std::string>(&parsed)) {
+        return *problem;
+    }
+    return {};
+}
+
+LinkFactory make_network_link_factory(const std::string& url) {
+    return [url] { return std::make_unique<NetworkLink>(url); };
+}
+
+#else
+namespace {
+
+// The shape of a server address, for builds without net/ (which then refuse to connect anyway).
+std::string check_url_shape(const std::string& url) {
     const std::string scheme = "ws://";
     if (url.rfind(scheme, 0) != 0) {
         return "The server address must start with ws:// (for example ws://127.0.0.1:8080).";
@@ -27,9 +95,6 @@ std::string check_url(const std::string& url) {
     return {};
 }
 
-#ifndef CARROM_CLIENT_HAS_NET
-namespace {
-
 class UnavailableLink final : public MessageLink {
 public:
     void send(const proto::ClientMessage&) override {}
@@ -42,6 +107,10 @@ public:
 };
 
 } // namespace
+
+std::string check_url(const std::string& url) {
+    return check_url_shape(url);
+}
 
 LinkFactory make_network_link_factory(const std::string&) {
     return [] { return std::make_unique<UnavailableLink>(); };

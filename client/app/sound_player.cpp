@@ -8,6 +8,7 @@ SoundPlayer::SoundPlayer(bool enabled) {
     if (!enabled) {
         return;
     }
+    buffers_.resize(3);
     bool ok = true;
     for (SoundKind kind : {SoundKind::Click, SoundKind::Cushion, SoundKind::Pocket}) {
         const std::vector<std::int16_t> samples = synth_sound(kind);
@@ -15,6 +16,9 @@ SoundPlayer::SoundPlayer(bool enabled) {
                        samples.data(), samples.size(), 1, kSampleRate);
     }
     enabled_ = ok;
+    if (enabled_) {
+        voices_.resize(12);
+    }
 }
 
 void SoundPlayer::play(const SoundCue& cue) {

@@ -8,6 +8,7 @@
 
 #include <array>
 #include <memory>
+#include <vector>
 
 namespace carrom::client::app {
 
@@ -19,8 +20,8 @@ public:
 
 private:
     bool enabled_ = false;
-    std::array<sf::SoundBuffer, 3> buffers_;
-    std::array<sf::Sound, 12> voices_;
+    std::vector<sf::SoundBuffer> buffers_; // created only when audio is on (opens the device)
+    std::vector<sf::Sound> voices_;        // created only when audio is on
     std::size_t next_ = 0;
 };
 

@@ -46,9 +46,13 @@ void AimController::begin_turn(Baseline baseline, double x_px) {
     moved_ = false;
 }
 
-void AimController::end_turn() { phase_ = AimPhase::Inactive; }
+void AimController::end_turn() {
+    phase_ = AimPhase::Inactive;
+}
 
-Vec2 AimController::striker_px() const { return {x_px_, baseline_y(config_, baseline_)}; }
+Vec2 AimController::striker_px() const {
+    return {x_px_, baseline_y(config_, baseline_)};
+}
 
 void AimController::set_x(double x_px, std::span<const BodyState> pieces) {
     const double x = clamp_baseline_x(config_, x_px);

@@ -7,6 +7,21 @@
 namespace carrom::client {
 namespace {
 
+// `text` as a sentence: with a full stop unless it already ends with one (links give sentences).
+std::string as_sentence(const std::string& text) {
+    if (!text.empty() && (text.back() == '.' || text.back() == '!' || text.back() == '?')) {
+        return text;
+    }
+    return text + ".";
+}
+
+// Errors that answer a room request with no: the player picks something else in the lobby.
+bool refuses_request(const std::string& code) {
+    return code == proto::code::kRoomNotFound || code == proto::code::kRoomFull ||
+           code == proto::code::kUnsupported || code == proto::code::kTooManyRooms ||
+           code == proto::code::kBadField;
+}
+
 std::string seconds_text(double s) {
     std::ostringstream out;
     out.precision(s < 10.0 ? 1 : 0);
@@ -19,7 +34,9 @@ std::string seconds_text(double s) {
 ClientSession::ClientSession(LinkFactory factory, std::string name, const SessionConfig& config)
     : factory_(std::move(factory)), name_(std::move(name)), config_(config) {}
 
-void ClientSession::start(double local_s) { open_link(local_s); }
+void ClientSession::start(double local_s) {
+    open_link(local_s);
+}
 
 void ClientSession::open_link(double local_s) {
     link_ = factory_ ? factory_() : nullptr;
@@ -88,19 +105,19 @@ void ClientSession::on_link_lost(double local_s, const std::string& why) {
         lost_since_s_ = local_s;
     }
     ++attempts_;
-    const std::string reason = why.empty() ? "The connection was lost" : why;
+    const std::string reason = as_sentence(why.empty() ? "The connection was lost" : why);
     if (local_s - lost_since_s_ >= config_.give_up_after_s) {
         phase_ = SessionPhase::Failed;
-        status_ = reason + ". Gave up after " + seconds_text(local_s - lost_since_s_) + ".";
+        status_ = reason + " Gave up after " + seconds_text(local_s - lost_since_s_) + ".";
         return;
     }
     retry_delay_s_ = attempts_ == 1 ? config_.first_retry_s
                                     : std::min(2.0 * retry_delay_s_, config_.max_retry_s);
     retry_at_s_ = local_s + retry_delay_s_;
-    resuming_ = resuming_ || (!token_.empty() && (phase_ == SessionPhase::InRoom ||
-                                                  phase_ == SessionPhase::Joining));
+    resuming_ = resuming_ || (!token_.empty() &&
+                              (phase_ == SessionPhase::InRoom || phase_ == SessionPhase::Joining));
     phase_ = ever_welcomed_ ? SessionPhase::Reconnecting : SessionPhase::Connecting;
-    status_ = reason + ". Retrying in " + seconds_text(retry_delay_s_) + " (attempt " +
+    status_ = reason + " Retrying in " + seconds_text(retry_delay_s_) + " (attempt " +
               std::to_string(attempts_) + ")";
 }
 
@@ -190,9 +207,7 @@ bool ClientSession::handle(const proto::ServerMessage& m, double local_s) {
             phase_ = SessionPhase::Lobby;
             request_.reset();
             status_ = "Connected (your old seat is gone)";
-        } else if (phase_ == SessionPhase::Joining &&
-                   (error->code == proto::code::kRoomNotFound ||
-                    error->code == proto::code::kRoomFull)) {
+        } else if (phase_ == SessionPhase::Joining && refuses_request(error->code)) {
             phase_ = SessionPhase::Lobby;
             request_.reset();
             status_ = "Connected";

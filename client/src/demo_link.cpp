@@ -11,9 +11,7 @@
 namespace carrom::client {
 namespace {
 
-template <class... F> struct Overloaded : F... {
-    using F::operator()...;
-};
+template <class... F> struct Overloaded : F... { using F::operator()...; };
 template <class... F> Overloaded(F...) -> Overloaded<F...>;
 
 proto::QueenInfo queen_info(const rules::QueenState& q) {
@@ -54,7 +52,9 @@ std::string sentence_for(rules::RuleCode code) {
     return text;
 }
 
-Baseline baseline_of(int seat) { return seat == 0 ? Baseline::Bottom : Baseline::Top; }
+Baseline baseline_of(int seat) {
+    return seat == 0 ? Baseline::Bottom : Baseline::Top;
+}
 
 } // namespace
 
@@ -63,8 +63,7 @@ DemoLink::DemoLink(const PhysicsConfig& physics, std::function<double()> clock,
     : physics_(physics), clock_(std::move(clock)), config_(config), engine_(physics) {}
 
 std::int64_t DemoLink::server_ms(double now_s) const {
-    return static_cast<std::int64_t>(std::llround(now_s * 1000.0)) +
-           config_.server_clock_offset_ms;
+    return static_cast<std::int64_t>(std::llround(now_s * 1000.0)) + config_.server_clock_offset_ms;
 }
 
 LinkStatus DemoLink::status() const {
@@ -72,47 +71,51 @@ LinkStatus DemoLink::status() const {
                  : LinkStatus{LinkState::Closed, "The demo ended"};
 }
 
-void DemoLink::close() { open_ = false; }
+void DemoLink::close() {
+    open_ = false;
+}
 
 void DemoLink::send(const proto::ClientMessage& message) {
     if (!open_) {
         return;
     }
     const double now = clock_();
-    std::visit(
-        Overloaded{
-            [&](const proto::Hello&) {
-                outbox_.push_back(proto::Welcome{proto::kProtocolVersion, 1,
-                                                 "0123456789abcdef0123456789abcdef",
-                                                 server_ms(now)});
-            },
-            [&](const proto::CreateRoom&) { open_room(now); },
-            [&](const proto::JoinRoom&) { open_room(now); },
-            [&](const proto::QuickMatch&) { open_room(now); },
-            [&](const proto::Aim&) {},
-            [&](const proto::Shoot& s) {
-                if (!in_room_ || streaming_ || match_.phase != rules::Phase::AwaitingShot) {
-                    outbox_.push_back(proto::Error{std::string(proto::code::kInMotion),
-                                                   "Wait until the pieces stop."});
-                } else if (match_.turn_seat != 0) {
-                    outbox_.push_back(proto::Error{std::string(proto::code::kNotYourTurn),
-                                                   "It is not your turn."});
-                } else if (s.turn != match_.turn_number) {
-                    outbox_.push_back(proto::Error{std::string(proto::code::kStaleTurn),
-                                                   "That shot was for another turn."});
-                } else {
-                    start_shot(0, Shot{s.x_px, s.angle_rad, s.power}, now);
-                }
-            },
-            [&](const proto::Rematch&) {
-                if (match_.phase == rules::Phase::GameOver) {
-                    open_room(now);
-                }
-            },
-            [&](const proto::Leave&) { open_ = false; },
-            [&](const proto::Ping& p) { outbox_.push_back(proto::Pong{p.nonce, server_ms(now)}); },
-        },
-        message);
+    std::visit(Overloaded{
+                   [&](const proto::Hello& h) {
+                       player_name_ = h.name;
+                       outbox_.push_back(proto::Welcome{proto::kProtocolVersion, 1,
+                                                        "0123456789abcdef0123456789abcdef",
+                                                        server_ms(now)});
+                   },
+                   [&](const proto::CreateRoom&) { open_room(now); },
+                   [&](const proto::JoinRoom&) { open_room(now); },
+                   [&](const proto::QuickMatch&) { open_room(now); },
+                   [&](const proto::Aim&) {},
+                   [&](const proto::Shoot& s) {
+                       if (!in_room_ || streaming_ || match_.phase != rules::Phase::AwaitingShot) {
+                           outbox_.push_back(proto::Error{std::string(proto::code::kInMotion),
+                                                          "Wait until the pieces stop."});
+                       } else if (match_.turn_seat != 0) {
+                           outbox_.push_back(proto::Error{std::string(proto::code::kNotYourTurn),
+                                                          "It is not your turn."});
+                       } else if (s.turn != match_.turn_number) {
+                           outbox_.push_back(proto::Error{std::string(proto::code::kStaleTurn),
+                                                          "That shot was for another turn."});
+                       } else {
+                           start_shot(0, Shot{s.x_px, s.angle_rad, s.power}, now);
+                       }
+                   },
+                   [&](const proto::Rematch&) {
+                       if (match_.phase == rules::Phase::GameOver) {
+                           open_room(now);
+                       }
+                   },
+                   [&](const proto::Leave&) { open_ = false; },
+                   [&](const proto::Ping& p) {
+                       outbox_.push_back(proto::Pong{p.nonce, server_ms(now)});
+                   },
+               },
+               message);
 }
 
 std::vector<proto::ServerMessage> DemoLink::poll() {
@@ -138,20 +141,20 @@ void DemoLink::open_room(double now_s) {
 
 proto::RoomState DemoLink::room_state(double now_s) const {
     proto::RoomState r;
-    r.code = "DEMO42";
+    r.code = "DEMXYZ"; // a valid room code (no 0, O, 1, I, L)
     r.you = 0;
     r.rule_set = proto::RuleSet::Icf;
     r.options = {match_.config.target_points, match_.config.max_boards, config_.shot_clock_s};
     for (int seat = 0; seat < 2; ++seat) {
         proto::SeatInfo s;
         s.occupied = true;
-        s.name = seat == 0 ? "You" : "Demo bot";
+        s.name = seat == 0 ? player_name_ : "Demo bot";
         s.connected = true;
         s.bot = seat == 1;
         const auto colour = rules::team_colour(match_, seat);
-        s.colour = !colour                          ? proto::Colour::None
+        s.colour = !colour                      ? proto::Colour::None
                    : *colour == BodyKind::White ? proto::Colour::White
-                                                    : proto::Colour::Black;
+                                                : proto::Colour::Black;
         s.baseline = baseline_of(seat);
         r.seats.push_back(s);
     }
@@ -205,10 +208,11 @@ Shot DemoLink::demo_shot(int seat) const {
     double x = std::clamp(target.x, lo, hi);
     for (int step = 0; step < 20; ++step) {
         const Vec2 s{x, by};
-        const bool free = std::none_of(match_.bodies.begin(), match_.bodies.end(), [&](const Body& b) {
-            const double d = physics_.striker_radius_px + physics_.coin_radius_px;
-            return !b.pocketed && length_squared(b.pos_px - s) < d * d;
-        });
+        const bool free =
+            std::none_of(match_.bodies.begin(), match_.bodies.end(), [&](const Body& b) {
+                const double d = physics_.striker_radius_px + physics_.coin_radius_px;
+                return !b.pocketed && length_squared(b.pos_px - s) < d * d;
+            });
         if (free) {
             break;
         }
@@ -252,8 +256,8 @@ void DemoLink::start_shot(int seat, const Shot& shot, double now_s) {
     options.record_trajectory = true;
     rules::PlayResult play = rules::play_shot(match_, seat, shot, engine_, options);
     if (play.error) {
-        outbox_.push_back(proto::Error{std::string(proto::code::kIllegalPlacement),
-                                       play.error->message});
+        outbox_.push_back(
+            proto::Error{std::string(proto::code::kIllegalPlacement), play.error->message});
         return;
     }
     Streaming s;
@@ -278,8 +282,8 @@ void DemoLink::stream(double now_s) {
              ++s.next_event) {
             const Event& e = sim.events[s.next_event];
             if (e.kind == EventKind::Collision) {
-                outbox_.push_back(proto::Event{
-                    proto::CollisionEvent{s.turn, e.t_s, e.a, e.b, e.impulse}});
+                outbox_.push_back(
+                    proto::Event{proto::CollisionEvent{s.turn, e.t_s, e.a, e.b, e.impulse}});
             } else if (e.kind == EventKind::Cushion) {
                 outbox_.push_back(
                     proto::Event{proto::CushionEvent{s.turn, e.t_s, e.a, e.b, e.impulse}});
@@ -299,10 +303,10 @@ void DemoLink::stream(double now_s) {
                 snap.pocketed.push_back(b.id);
             } else if (!b.pocketed && (b.pos_px != before.pos_px || b.vel_px_s != before.vel_px_s ||
                                        s.next_frame == 0)) {
-                snap.bodies.push_back({b.id,
-                                       {proto::quantise(b.pos_px.x), proto::quantise(b.pos_px.y)},
-                                       {proto::quantise(b.vel_px_s.x),
-                                        proto::quantise(b.vel_px_s.y)}});
+                snap.bodies.push_back(
+                    {b.id,
+                     {proto::quantise(b.pos_px.x), proto::quantise(b.pos_px.y)},
+                     {proto::quantise(b.vel_px_s.x), proto::quantise(b.vel_px_s.y)}});
             }
         }
         s.last_sent = now;
@@ -336,16 +340,16 @@ void DemoLink::finish_shot(double now_s) {
     const std::vector<int> dues_before = match_.dues_owed;
     match_ = s.play.state;
     for (const rules::Foul& f : o.fouls) {
-        outbox_.push_back(proto::Event{proto::FoulEvent{
-            f.seat, std::string(rules::to_string(f.code)), sentence_for(f.code)}});
+        outbox_.push_back(proto::Event{
+            proto::FoulEvent{f.seat, std::string(rules::to_string(f.code)), sentence_for(f.code)}});
     }
     if (queen_info(queen_before) != queen_info(match_.queen)) {
         outbox_.push_back(proto::Event{proto::QueenEvent{queen_info(match_.queen)}});
     }
     for (std::size_t team = 0; team < match_.dues_owed.size(); ++team) {
         if (team >= dues_before.size() || dues_before[team] != match_.dues_owed[team]) {
-            outbox_.push_back(proto::Event{
-                proto::DueEvent{static_cast<int>(team), match_.dues_owed[team]}});
+            outbox_.push_back(
+                proto::Event{proto::DueEvent{static_cast<int>(team), match_.dues_owed[team]}});
         }
     }
     proto::ShotResult r;
@@ -377,13 +381,13 @@ void DemoLink::finish_shot(double now_s) {
     outbox_.push_back(r);
     turn_started_s_ = now_s;
     if (o.board_end) {
-        outbox_.push_back(proto::Event{proto::BoardEndEvent{
-            o.board_end->board, o.board_end->winner_team.value_or(-1), o.board_end->points,
-            match_.scores}});
+        outbox_.push_back(proto::Event{proto::BoardEndEvent{o.board_end->board,
+                                                            o.board_end->winner_team.value_or(-1),
+                                                            o.board_end->points, match_.scores}});
     }
     if (o.game_end) {
-        outbox_.push_back(proto::Event{proto::GameEndEvent{
-            o.game_end->winner_team.value_or(-1), "score", match_.scores}});
+        outbox_.push_back(proto::Event{
+            proto::GameEndEvent{o.game_end->winner_team.value_or(-1), "score", match_.scores}});
     } else if (match_.phase == rules::Phase::AwaitingShot) {
         outbox_.push_back(proto::Event{turn_event(now_s)});
     }

@@ -8,7 +8,9 @@
 namespace carrom::client {
 namespace {
 
-bool by_id(const BodyState& a, const BodyState& b) { return a.id < b.id; }
+bool by_id(const BodyState& a, const BodyState& b) {
+    return a.id < b.id;
+}
 
 const BodyState* find_body(const std::vector<BodyState>& bodies, int id) {
     const auto it = std::lower_bound(bodies.begin(), bodies.end(), id,

@@ -9,9 +9,7 @@
 namespace carrom::client {
 namespace {
 
-template <class... F> struct Overloaded : F... {
-    using F::operator()...;
-};
+template <class... F> struct Overloaded : F... { using F::operator()...; };
 template <class... F> Overloaded(F...) -> Overloaded<F...>;
 
 constexpr std::size_t kTurnsKept = 8;
@@ -40,16 +38,17 @@ void MatchModel::reset() {
 }
 
 void MatchModel::handle(const proto::ServerMessage& message, double local_s) {
-    std::visit(Overloaded{
-                   [&](const proto::Welcome& m) { server_clock_.one_way(m.server_time_ms, local_s); },
-                   [&](const proto::RoomState& m) { on_room_state(m, local_s); },
-                   [&](const proto::Snapshot& m) { on_snapshot(m, local_s); },
-                   [&](const proto::Event& m) { on_event(m, local_s); },
-                   [&](const proto::ShotResult& m) { on_shot_result(m, local_s); },
-                   [&](const proto::Error& m) { on_error(m, local_s); },
-                   [&](const proto::Pong&) {}, // the session measures round trips
-               },
-               message);
+    std::visit(
+        Overloaded{
+            [&](const proto::Welcome& m) { server_clock_.one_way(m.server_time_ms, local_s); },
+            [&](const proto::RoomState& m) { on_room_state(m, local_s); },
+            [&](const proto::Snapshot& m) { on_snapshot(m, local_s); },
+            [&](const proto::Event& m) { on_event(m, local_s); },
+            [&](const proto::ShotResult& m) { on_shot_result(m, local_s); },
+            [&](const proto::Error& m) { on_error(m, local_s); },
+            [&](const proto::Pong&) {}, // the session measures round trips
+        },
+        message);
 }
 
 bool MatchModel::my_turn() const {
@@ -232,10 +231,10 @@ void MatchModel::on_event(const proto::Event& m, double local_s) {
                     view_.seats[i].score = e.scores[i];
                 }
                 view_.phase = proto::Phase::BoardOver;
-                log_.post(e.winner >= 0 ? "Board " + std::to_string(e.board) + " to " +
-                                              seat_name(e.winner) + " (+" +
-                                              std::to_string(e.points) + ")"
-                                        : "Board " + std::to_string(e.board) + " ends, no winner",
+                log_.post(e.winner >= 0
+                              ? "Board " + std::to_string(e.board) + " to " + seat_name(e.winner) +
+                                    " (+" + std::to_string(e.points) + ")"
+                              : "Board " + std::to_string(e.board) + " ends, no winner",
                           Tone::Good, local_s);
             },
             [&](const proto::GameEndEvent& e) {
@@ -244,8 +243,8 @@ void MatchModel::on_event(const proto::Event& m, double local_s) {
                 }
                 view_.winner = e.winner;
                 view_.phase = proto::Phase::GameOver;
-                log_.post(game_end_sentence(e.winner, e.winner == view_.you,
-                                            seat_name(e.winner), e.reason),
+                log_.post(game_end_sentence(e.winner, e.winner == view_.you, seat_name(e.winner),
+                                            e.reason),
                           Tone::Good, local_s);
             },
             [&](const proto::PlayerDroppedEvent& e) {

@@ -22,10 +22,9 @@ void ServerClock::round_trip(std::int64_t server_ms, double sent_local_s, double
         samples_.pop_front();
     }
     rtt_ms_ = rtt;
-    const auto best = std::min_element(samples_.begin(), samples_.end(),
-                                       [](const Sample& a, const Sample& b) {
-                                           return a.rtt_ms < b.rtt_ms;
-                                       });
+    const auto best =
+        std::min_element(samples_.begin(), samples_.end(),
+                         [](const Sample& a, const Sample& b) { return a.rtt_ms < b.rtt_ms; });
     offset_ms_ = best->offset_ms;
 }
 

@@ -83,9 +83,8 @@ void SoundCueQueue::push(const SoundCue& cue) {
     if (!std::isfinite(cue.time_s)) {
         return;
     }
-    const auto at = std::upper_bound(
-        cues_.begin(), cues_.end(), cue.time_s,
-        [](double t, const SoundCue& c) { return t < c.time_s; });
+    const auto at = std::upper_bound(cues_.begin(), cues_.end(), cue.time_s,
+                                     [](double t, const SoundCue& c) { return t < c.time_s; });
     cues_.insert(at, cue);
 }
 

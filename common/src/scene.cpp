@@ -32,6 +32,8 @@ Vec2 unit_at_degrees(int degrees) {
     return {sx * std::cos(rad), sy * std::sin(rad)};
 }
 
+constexpr double kCushionTolerancePx = 1e-6;
+
 std::string fmt(double v) {
     std::string s = std::to_string(v);
     return s;
@@ -114,7 +116,9 @@ std::optional<SceneError> validate_scene(const PhysicsConfig& config, std::span<
         const std::pair<const char*, double> axes[] = {{"pos.x", b.pos_px.x},
                                                        {"pos.y", b.pos_px.y}};
         for (const auto& [field, value] : axes) {
-            if (value < lo || value > hi) {
+            // The engine keeps centres inside to rounding (about 1e-13 px); accept up to 1e-6 px
+            // outside so that a scene saved after a cushion contact can be simulated again.
+            if (value < lo - kCushionTolerancePx || value > hi + kCushionTolerancePx) {
                 return SceneError{"outside_cushions", b.id, field,
                                   "body " + std::to_string(b.id) + " has " + field + " = " +
                                       fmt(value) + ", outside the cushions [" + fmt(lo) + ", " +

@@ -41,15 +41,27 @@ json encode_body(const CreateRoom& m) {
     }
     return out;
 }
-json encode_body(const JoinRoom& m) { return json{{"code", m.code}, {"as", to_string(m.as)}}; }
-json encode_body(const QuickMatch& m) { return json{{"rule_set", to_string(m.rule_set)}}; }
-json encode_body(const Aim& m) { return json{{"turn", m.turn}, {"x", m.x_px}}; }
+json encode_body(const JoinRoom& m) {
+    return json{{"code", m.code}, {"as", to_string(m.as)}};
+}
+json encode_body(const QuickMatch& m) {
+    return json{{"rule_set", to_string(m.rule_set)}};
+}
+json encode_body(const Aim& m) {
+    return json{{"turn", m.turn}, {"x", m.x_px}};
+}
 json encode_body(const Shoot& m) {
     return json{{"turn", m.turn}, {"x", m.x_px}, {"angle", m.angle_rad}, {"power", m.power}};
 }
-json encode_body(const Rematch&) { return json::object(); }
-json encode_body(const Leave&) { return json::object(); }
-json encode_body(const Ping& m) { return json{{"nonce", m.nonce}}; }
+json encode_body(const Rematch&) {
+    return json::object();
+}
+json encode_body(const Leave&) {
+    return json::object();
+}
+json encode_body(const Ping& m) {
+    return json{{"nonce", m.nonce}};
+}
 
 // Decoders: each reads its fields from `r`; the caller checks r.ok().
 void decode_body(FieldReader& r, Hello& m) {
@@ -132,7 +144,9 @@ void decode_body(FieldReader& r, Shoot& m) {
 
 void decode_body(FieldReader&, Rematch&) {}
 void decode_body(FieldReader&, Leave&) {}
-void decode_body(FieldReader& r, Ping& m) { m.nonce = r.integer("nonce", 0, kMaxNonce); }
+void decode_body(FieldReader& r, Ping& m) {
+    m.nonce = r.integer("nonce", 0, kMaxNonce);
+}
 
 template <class M> Decoded<ClientMessage> decode_as(const json& value) {
     FieldReader reader(value, "");

@@ -20,9 +20,9 @@ TypeField message_type(const json& value) {
     }
     const auto it = value.find("type");
     if (it == value.end() || !it->is_string()) {
-        return {{},
-                Error{std::string(code::kMissingType),
-                      "A message must have a string field 'type'."}};
+        return {
+            {},
+            Error{std::string(code::kMissingType), "A message must have a string field 'type'."}};
     }
     return {it->get<std::string>(), {}};
 }
@@ -51,18 +51,17 @@ struct Parsed {
 Parsed parse_text(std::string_view text, std::size_t max_bytes) {
     if (text.size() > max_bytes) {
         return {{},
-                Error{std::string(code::kTooLarge), "The message is " +
-                                                        std::to_string(text.size()) +
-                                                        " bytes; the limit is " +
-                                                        std::to_string(max_bytes) + "."}};
+                Error{std::string(code::kTooLarge),
+                      "The message is " + std::to_string(text.size()) + " bytes; the limit is " +
+                          std::to_string(max_bytes) + "."}};
     }
     try {
         return {json::parse(text.begin(), text.end()), {}};
     } catch (const json::parse_error& e) {
-        return {{},
-                Error{std::string(code::kMalformedJson),
-                      "The message is not valid JSON (error at byte " + std::to_string(e.byte) +
-                          ")."}};
+        return {
+            {},
+            Error{std::string(code::kMalformedJson),
+                  "The message is not valid JSON (error at byte " + std::to_string(e.byte) + ")."}};
     } catch (const std::exception&) {
         return {{}, Error{std::string(code::kMalformedJson), "The message could not be parsed."}};
     }
@@ -74,8 +73,12 @@ std::string dump(const json& value) {
 
 } // namespace
 
-std::string encode(const ClientMessage& message) { return dump(to_json(message)); }
-std::string encode(const ServerMessage& message) { return dump(to_json(message)); }
+std::string encode(const ClientMessage& message) {
+    return dump(to_json(message));
+}
+std::string encode(const ServerMessage& message) {
+    return dump(to_json(message));
+}
 
 Decoded<ClientMessage> decode_client(std::string_view text, std::size_t max_bytes) {
     Parsed parsed = parse_text(text, max_bytes);
@@ -98,6 +101,8 @@ std::string encode_error(std::string_view code, std::string_view message) {
     return dump(out);
 }
 
-double quantise(double value) { return std::round(value * 100.0) / 100.0; }
+double quantise(double value) {
+    return std::round(value * 100.0) / 100.0;
+}
 
 } // namespace carrom::proto

@@ -144,8 +144,7 @@ bool FieldReader::boolean(std::string_view key) {
     return value->get<bool>();
 }
 
-std::string FieldReader::text(std::string_view key, std::size_t min_bytes,
-                              std::size_t max_bytes) {
+std::string FieldReader::text(std::string_view key, std::size_t min_bytes, std::size_t max_bytes) {
     const json* value = find(key);
     if (value == nullptr) {
         return {};

@@ -45,7 +45,9 @@ bool parse_in(const std::array<std::pair<E, std::string_view>, N>& names, std::s
     return false;
 }
 
-Json optional_team(const std::optional<int>& team) { return team ? Json(*team) : Json(nullptr); }
+Json optional_team(const std::optional<int>& team) {
+    return team ? Json(*team) : Json(nullptr);
+}
 
 Json seats_to_json(const std::vector<rules::Seat>& seats) {
     Json out = Json::array();
@@ -87,11 +89,15 @@ Json returned_to_json(const std::vector<rules::ReturnedPiece>& returned) {
 
 } // namespace
 
-std::string_view to_string(rules::Phase phase) { return name_in(kPhaseNames, phase); }
+std::string_view to_string(rules::Phase phase) {
+    return name_in(kPhaseNames, phase);
+}
 bool parse_phase(std::string_view text, rules::Phase& out) {
     return parse_in(kPhaseNames, text, out);
 }
-std::string_view to_string(rules::QueenStatus status) { return name_in(kQueenNames, status); }
+std::string_view to_string(rules::QueenStatus status) {
+    return name_in(kQueenNames, status);
+}
 bool parse_queen_status(std::string_view text, rules::QueenStatus& out) {
     return parse_in(kQueenNames, text, out);
 }
@@ -164,23 +170,24 @@ Json match_state_to_json(const rules::MatchState& s) {
 }
 
 Json shot_outcome_to_json(const rules::ShotOutcome& o, bool include_physics) {
-    Json out = {{"seat", o.seat},
-                {"turn_number", o.turn_number},
-                {"shot_taken", o.shot_taken},
-                {"shot", o.shot_taken ? rules_shot_to_json(o.shot) : Json(nullptr)},
-                {"pocketed", o.pocketed},
-                {"striker_pocketed", o.striker_pocketed},
-                {"fouls", fouls_to_json(o.fouls)},
-                {"returned", returned_to_json(o.returned)},
-                {"dues", {{"incurred", o.dues_incurred}, {"paid", o.dues_paid},
-                          {"owed", o.dues_owed}}},
-                {"queen", {{"before", queen_state_to_json(o.queen_before)},
-                           {"after", queen_state_to_json(o.queen_after)}}},
-                {"score_changes", o.score_changes},
-                {"extra_stroke", o.extra_stroke},
-                {"next_seat", o.next_seat},
-                {"board_end", o.board_end ? board_result_to_json(*o.board_end) : Json(nullptr)},
-                {"game_end", o.game_end ? game_result_to_json(*o.game_end) : Json(nullptr)}};
+    Json out = {
+        {"seat", o.seat},
+        {"turn_number", o.turn_number},
+        {"shot_taken", o.shot_taken},
+        {"shot", o.shot_taken ? rules_shot_to_json(o.shot) : Json(nullptr)},
+        {"pocketed", o.pocketed},
+        {"striker_pocketed", o.striker_pocketed},
+        {"fouls", fouls_to_json(o.fouls)},
+        {"returned", returned_to_json(o.returned)},
+        {"dues", {{"incurred", o.dues_incurred}, {"paid", o.dues_paid}, {"owed", o.dues_owed}}},
+        {"queen",
+         {{"before", queen_state_to_json(o.queen_before)},
+          {"after", queen_state_to_json(o.queen_after)}}},
+        {"score_changes", o.score_changes},
+        {"extra_stroke", o.extra_stroke},
+        {"next_seat", o.next_seat},
+        {"board_end", o.board_end ? board_result_to_json(*o.board_end) : Json(nullptr)},
+        {"game_end", o.game_end ? game_result_to_json(*o.game_end) : Json(nullptr)}};
     if (include_physics) {
         out["physics"] = o.shot_taken ? sim_result_to_json(o.physics) : Json(nullptr);
     }

@@ -14,14 +14,13 @@ namespace carrom::proto::detail {
 
 // Same order as the ClientMessage variant.
 inline constexpr std::array<std::string_view, 9> kClientTypeNames{
-    "hello", "create_room", "join_room", "quick_match", "aim",
-    "shoot", "rematch",     "leave",     "ping"};
+    "hello", "create_room", "join_room", "quick_match", "aim", "shoot", "rematch", "leave", "ping"};
 // Same order as the ServerMessage variant.
 inline constexpr std::array<std::string_view, 7> kServerTypeNames{
     "welcome", "room_state", "snapshot", "event", "shot_result", "error", "pong"};
 // Same order as the Event variant.
 inline constexpr std::array<std::string_view, 12> kEventKindNames{
-    "collision", "cushion", "pocket",    "foul",           "queen",           "due",
+    "collision", "cushion",   "pocket",   "foul",           "queen",           "due",
     "turn",      "board_end", "game_end", "player_dropped", "player_returned", "aim"};
 
 template <std::size_t N>

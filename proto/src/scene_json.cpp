@@ -99,6 +99,18 @@ std::size_t nesting_depth(std::string_view text) {
     return deepest;
 }
 
+// The parser's messages quote the input, which may not be UTF-8: keep them printable ASCII so
+// that they can be written into JSON.
+std::string printable_ascii(std::string_view text) {
+    std::string out(text);
+    for (char& c : out) {
+        if (c < 0x20 || c > 0x7e) {
+            c = '?';
+        }
+    }
+    return out;
+}
+
 MaybeError decode_kind(const Json& j, const std::string& path, BodyKind& out) {
     std::string text;
     if (auto e = read_string(j, path, 16, text)) {
@@ -250,11 +262,11 @@ Decoded<nlohmann::json> parse_json_text(std::string_view text, std::size_t max_b
         out.value = Json::parse(text.begin(), text.end(), track);
     } catch (const Json::exception& e) {
         out.error = make_error(scene_code::kMalformedJson, "",
-                               std::string("the text is not valid JSON: ") + e.what());
+                               "the text is not valid JSON: " + printable_ascii(e.what()));
         return out;
     } catch (const std::exception& e) {
         out.error = make_error(scene_code::kMalformedJson, "",
-                               std::string("the text could not be parsed: ") + e.what());
+                               "the text could not be parsed: " + printable_ascii(e.what()));
         return out;
     }
     if (!keys.duplicate.empty()) {

@@ -56,8 +56,8 @@ void decode_body(FieldReader& r, Welcome& m) {
 
 // --- room_state ---
 json encode_seat(const SeatInfo& s) {
-    return json{{"occupied", s.occupied},     {"name", s.name},
-                {"connected", s.connected},   {"bot", s.bot},
+    return json{{"occupied", s.occupied},        {"name", s.name},
+                {"connected", s.connected},      {"bot", s.bot},
                 {"colour", to_string(s.colour)}, {"baseline", baseline_name(s.baseline)}};
 }
 void decode_seat(FieldReader& r, SeatInfo& s) {
@@ -70,8 +70,12 @@ void decode_seat(FieldReader& r, SeatInfo& s) {
 }
 
 json encode_board_body(const BoardBody& b) {
-    return json{{"id", b.id},           {"kind", body_kind_name(b.kind)}, {"x", b.pos_px.x},
-                {"y", b.pos_px.y},      {"vx", b.vel_px_s.x},            {"vy", b.vel_px_s.y},
+    return json{{"id", b.id},
+                {"kind", body_kind_name(b.kind)},
+                {"x", b.pos_px.x},
+                {"y", b.pos_px.y},
+                {"vx", b.vel_px_s.x},
+                {"vy", b.vel_px_s.y},
                 {"pocketed", b.pocketed}};
 }
 void decode_board_body(FieldReader& r, BoardBody& b) {
@@ -181,9 +185,12 @@ json encode_body(const Snapshot& m) {
     for (const auto& b : m.bodies) {
         bodies.push_back(json::array({b.id, b.pos_px.x, b.pos_px.y, b.vel_px_s.x, b.vel_px_s.y}));
     }
-    return json{{"seq", m.seq},          {"turn", m.turn},
-                {"t", m.t_s},            {"keyframe", m.keyframe},
-                {"bodies", std::move(bodies)}, {"pocketed", m.pocketed}};
+    return json{{"seq", m.seq},
+                {"turn", m.turn},
+                {"t", m.t_s},
+                {"keyframe", m.keyframe},
+                {"bodies", std::move(bodies)},
+                {"pocketed", m.pocketed}};
 }
 bool decode_snapshot_body(const json& item, SnapshotBody& b) {
     if (!item.is_array() || item.size() != 5) {
@@ -232,8 +239,12 @@ json encode_event(const PocketEvent& e) {
 json encode_event(const FoulEvent& e) {
     return json{{"seat", e.seat}, {"rule", e.rule}, {"message", e.message}};
 }
-json encode_event(const QueenEvent& e) { return json{{"queen", encode_queen(e.queen)}}; }
-json encode_event(const DueEvent& e) { return json{{"seat", e.seat}, {"owed", e.owed}}; }
+json encode_event(const QueenEvent& e) {
+    return json{{"queen", encode_queen(e.queen)}};
+}
+json encode_event(const DueEvent& e) {
+    return json{{"seat", e.seat}, {"owed", e.owed}};
+}
 json encode_event(const TurnEvent& e) {
     json out{{"turn", e.turn}, {"seat", e.seat}, {"server_time_ms", e.server_time_ms}};
     if (e.deadline_ms) {
@@ -253,14 +264,22 @@ json encode_event(const PlayerDroppedEvent& e) {
                 {"grace_deadline_ms", e.grace_deadline_ms},
                 {"server_time_ms", e.server_time_ms}};
 }
-json encode_event(const PlayerReturnedEvent& e) { return json{{"seat", e.seat}}; }
+json encode_event(const PlayerReturnedEvent& e) {
+    return json{{"seat", e.seat}};
+}
 json encode_event(const AimEvent& e) {
     return json{{"seat", e.seat}, {"turn", e.turn}, {"x", e.x_px}};
 }
 
-int read_turn(FieldReader& r) { return static_cast<int>(r.integer("turn", 0, kMaxTurn)); }
-double read_time(FieldReader& r) { return r.number("t", 0.0, kMaxMatchTimeS); }
-int read_seat(FieldReader& r, std::string_view key) { return r.small_int(key, 0, kMaxSeatIndex); }
+int read_turn(FieldReader& r) {
+    return static_cast<int>(r.integer("turn", 0, kMaxTurn));
+}
+double read_time(FieldReader& r) {
+    return r.number("t", 0.0, kMaxMatchTimeS);
+}
+int read_seat(FieldReader& r, std::string_view key) {
+    return r.small_int(key, 0, kMaxSeatIndex);
+}
 
 void decode_event(FieldReader& r, CollisionEvent& e) {
     e.turn = read_turn(r);
@@ -287,7 +306,9 @@ void decode_event(FieldReader& r, FoulEvent& e) {
     e.rule = r.text("rule", 1, kMaxTextBytes);
     e.message = r.text("message", 0, kMaxTextBytes);
 }
-void decode_event(FieldReader& r, QueenEvent& e) { decode_queen(r, "queen", e.queen); }
+void decode_event(FieldReader& r, QueenEvent& e) {
+    decode_queen(r, "queen", e.queen);
+}
 void decode_event(FieldReader& r, DueEvent& e) {
     e.seat = read_seat(r, "seat");
     e.owed = r.small_int("owed", 0, kMaxScore);
@@ -314,14 +335,17 @@ void decode_event(FieldReader& r, PlayerDroppedEvent& e) {
     e.grace_deadline_ms = r.integer("grace_deadline_ms", 0, kMaxTimeMs);
     e.server_time_ms = r.integer("server_time_ms", 0, kMaxTimeMs);
 }
-void decode_event(FieldReader& r, PlayerReturnedEvent& e) { e.seat = read_seat(r, "seat"); }
+void decode_event(FieldReader& r, PlayerReturnedEvent& e) {
+    e.seat = read_seat(r, "seat");
+}
 void decode_event(FieldReader& r, AimEvent& e) {
     e.seat = read_seat(r, "seat");
     e.turn = read_turn(r);
     e.x_px = r.number("x", 0.0, kMaxCoordinatePx);
 }
 
-template <std::size_t I = 0> bool decode_event_index(std::size_t index, FieldReader& r, Event& out) {
+template <std::size_t I = 0>
+bool decode_event_index(std::size_t index, FieldReader& r, Event& out) {
     if constexpr (I < std::variant_size_v<Event>) {
         if (index == I) {
             std::variant_alternative_t<I, Event> e;
@@ -404,7 +428,9 @@ void decode_body(FieldReader& r, ShotResult& m) {
 }
 
 // --- error, pong ---
-json encode_body(const Error& m) { return json{{"code", m.code}, {"message", m.message}}; }
+json encode_body(const Error& m) {
+    return json{{"code", m.code}, {"message", m.message}};
+}
 void decode_body(FieldReader& r, Error& m) {
     m.code = r.text("code", 1, 64);
     m.message = r.text("message", 0, kMaxTextBytes);

@@ -10,11 +10,9 @@ namespace carrom::proto {
 
 namespace {
 
-template <class E, std::size_t N>
-using NameTable = std::array<std::pair<E, std::string_view>, N>;
+template <class E, std::size_t N> using NameTable = std::array<std::pair<E, std::string_view>, N>;
 
-template <class E, std::size_t N>
-std::string_view name_of(const NameTable<E, N>& table, E value) {
+template <class E, std::size_t N> std::string_view name_of(const NameTable<E, N>& table, E value) {
     for (const auto& [e, name] : table) {
         if (e == value) {
             return name;
@@ -54,8 +52,7 @@ constexpr NameTable<BotLevel, 4> kBotLevels{{{BotLevel::Random, "random"},
                                              {BotLevel::Easy, "easy"},
                                              {BotLevel::Medium, "medium"},
                                              {BotLevel::Hard, "hard"}}};
-constexpr NameTable<Baseline, 2> kBaselines{
-    {{Baseline::Bottom, "bottom"}, {Baseline::Top, "top"}}};
+constexpr NameTable<Baseline, 2> kBaselines{{{Baseline::Bottom, "bottom"}, {Baseline::Top, "top"}}};
 constexpr NameTable<BodyKind, 4> kBodyKinds{{{BodyKind::Black, "black"},
                                              {BodyKind::White, "white"},
                                              {BodyKind::Queen, "queen"},
@@ -63,23 +60,55 @@ constexpr NameTable<BodyKind, 4> kBodyKinds{{{BodyKind::Black, "black"},
 
 } // namespace
 
-std::string_view to_string(RuleSet value) { return name_of(kRuleSets, value); }
-std::string_view to_string(Role value) { return name_of(kRoles, value); }
-std::string_view to_string(Colour value) { return name_of(kColours, value); }
-std::string_view to_string(Phase value) { return name_of(kPhases, value); }
-std::string_view to_string(QueenState value) { return name_of(kQueenStates, value); }
-std::string_view to_string(BotLevel value) { return name_of(kBotLevels, value); }
-std::string_view baseline_name(Baseline value) { return name_of(kBaselines, value); }
-std::string_view body_kind_name(BodyKind value) { return name_of(kBodyKinds, value); }
+std::string_view to_string(RuleSet value) {
+    return name_of(kRuleSets, value);
+}
+std::string_view to_string(Role value) {
+    return name_of(kRoles, value);
+}
+std::string_view to_string(Colour value) {
+    return name_of(kColours, value);
+}
+std::string_view to_string(Phase value) {
+    return name_of(kPhases, value);
+}
+std::string_view to_string(QueenState value) {
+    return name_of(kQueenStates, value);
+}
+std::string_view to_string(BotLevel value) {
+    return name_of(kBotLevels, value);
+}
+std::string_view baseline_name(Baseline value) {
+    return name_of(kBaselines, value);
+}
+std::string_view body_kind_name(BodyKind value) {
+    return name_of(kBodyKinds, value);
+}
 
-bool parse(std::string_view text, RuleSet& out) { return parse_name(kRuleSets, text, out); }
-bool parse(std::string_view text, Role& out) { return parse_name(kRoles, text, out); }
-bool parse(std::string_view text, Colour& out) { return parse_name(kColours, text, out); }
-bool parse(std::string_view text, Phase& out) { return parse_name(kPhases, text, out); }
-bool parse(std::string_view text, QueenState& out) { return parse_name(kQueenStates, text, out); }
-bool parse(std::string_view text, BotLevel& out) { return parse_name(kBotLevels, text, out); }
-bool parse(std::string_view text, Baseline& out) { return parse_name(kBaselines, text, out); }
-bool parse(std::string_view text, BodyKind& out) { return parse_name(kBodyKinds, text, out); }
+bool parse(std::string_view text, RuleSet& out) {
+    return parse_name(kRuleSets, text, out);
+}
+bool parse(std::string_view text, Role& out) {
+    return parse_name(kRoles, text, out);
+}
+bool parse(std::string_view text, Colour& out) {
+    return parse_name(kColours, text, out);
+}
+bool parse(std::string_view text, Phase& out) {
+    return parse_name(kPhases, text, out);
+}
+bool parse(std::string_view text, QueenState& out) {
+    return parse_name(kQueenStates, text, out);
+}
+bool parse(std::string_view text, BotLevel& out) {
+    return parse_name(kBotLevels, text, out);
+}
+bool parse(std::string_view text, Baseline& out) {
+    return parse_name(kBaselines, text, out);
+}
+bool parse(std::string_view text, BodyKind& out) {
+    return parse_name(kBodyKinds, text, out);
+}
 
 bool is_room_code(std::string_view text) {
     if (text.size() != kRoomCodeLength) {

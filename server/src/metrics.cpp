@@ -40,8 +40,7 @@ std::string Metrics::prometheus_text() const {
            "Connections refused at the connection limit.", rejected_connections_total);
     metric(out, "carrom_rooms", "gauge", "Open rooms.", rooms);
     metric(out, "carrom_matches", "gauge", "Rooms with a game in progress.", matches);
-    metric(out, "carrom_matches_started_total", "counter", "Games started.",
-           matches_started_total);
+    metric(out, "carrom_matches_started_total", "counter", "Games started.", matches_started_total);
     metric(out, "carrom_matches_finished_total", "counter", "Games finished.",
            matches_finished_total);
     metric(out, "carrom_shots_total", "counter", "Shots played.", shots_total);
@@ -51,8 +50,8 @@ std::string Metrics::prometheus_text() const {
     metric(out, "carrom_bytes_out_total", "counter", "Payload bytes sent.", bytes_out_total);
     metric(out, "carrom_errors_sent_total", "counter", "Error messages sent.", errors_sent_total);
     metric(out, "carrom_snapshots_total", "counter", "Snapshot broadcasts.", snapshots_total);
-    metric(out, "carrom_snapshots_dropped_total", "counter",
-           "Snapshots dropped for slow clients.", snapshots_dropped_total);
+    metric(out, "carrom_snapshots_dropped_total", "counter", "Snapshots dropped for slow clients.",
+           snapshots_dropped_total);
     metric(out, "carrom_slow_client_disconnects_total", "counter",
            "Clients disconnected for a full write queue.", slow_client_disconnects_total);
     metric(out, "carrom_http_requests_total", "counter", "Plain HTTP requests.",

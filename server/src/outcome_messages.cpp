@@ -1,5 +1,7 @@
 #include "carrom/server/outcome_messages.hpp"
 
+#include "carrom/proto/limits.hpp"
+
 namespace carrom::server {
 
 rules::RuleSet to_rules(proto::RuleSet rule_set) {
@@ -152,8 +154,8 @@ proto::ShotResult to_shot_result(const rules::ShotOutcome& outcome,
     r.next_seat = after.turn_seat;
     r.board_over = outcome.board_end.has_value();
     r.game_over = outcome.game_end.has_value();
-    r.winner = outcome.game_end && outcome.game_end->winner_team ? *outcome.game_end->winner_team
-                                                                 : -1;
+    r.winner =
+        outcome.game_end && outcome.game_end->winner_team ? *outcome.game_end->winner_team : -1;
     return r;
 }
 

@@ -19,7 +19,7 @@ RateLimiter::Verdict RateLimiter::on_message(std::int64_t now_ms) {
     }
     ++rejected_in_a_row_;
     return static_cast<double>(rejected_in_a_row_) >= burst_ ? Verdict::Disconnect
-                                                              : Verdict::Reject;
+                                                             : Verdict::Reject;
 }
 
 } // namespace carrom::server

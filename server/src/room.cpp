@@ -10,7 +10,7 @@ namespace carrom::server {
 
 namespace {
 
-proto::Baseline to_baseline(rules::Side side) {
+Baseline to_baseline(rules::Side side) {
     return side == rules::Side::Top ? Baseline::Top : Baseline::Bottom;
 }
 
@@ -18,7 +18,9 @@ proto::Error make_error(std::string_view code, std::string message) {
     return {std::string(code), std::move(message)};
 }
 
-std::int64_t seconds_to_ms(double s) { return static_cast<std::int64_t>(std::llround(s * 1000.0)); }
+std::int64_t seconds_to_ms(double s) {
+    return static_cast<std::int64_t>(std::llround(s * 1000.0));
+}
 
 } // namespace
 
@@ -257,7 +259,9 @@ void Room::send_error(Peer& peer, std::string_view code, std::string message) {
 
 // --- state views ------------------------------------------------------------------------------
 
-bool Room::game_running() const { return started_ && match_.phase != rules::Phase::GameOver; }
+bool Room::game_running() const {
+    return started_ && match_.phase != rules::Phase::GameOver;
+}
 
 proto::Phase Room::phase() const {
     if (streaming_) {
@@ -287,8 +291,8 @@ std::optional<std::int64_t> Room::shot_clock_deadline_ms() const {
 std::vector<Body> Room::board_with_striker() const {
     std::vector<Body> bodies = match_.bodies;
     const auto& seat = match_.seats[static_cast<std::size_t>(match_.turn_seat)];
-    const double x = std::clamp(aim_x_px_, baseline_x_min(config_.physics),
-                                baseline_x_max(config_.physics));
+    const double x =
+        std::clamp(aim_x_px_, baseline_x_min(config_.physics), baseline_x_max(config_.physics));
     bodies.push_back(rules::striker_for(config_.physics, seat.side, Shot{x, 0.0, 0.0}));
     return bodies;
 }
@@ -454,8 +458,8 @@ void Room::stream_tick(std::int64_t now_ms) {
     for (Peer* peer : members()) {
         if (peer->take_keyframe_request()) {
             if (!keyframe) {
-                keyframe = std::make_shared<const std::string>(
-                    proto::encode(s.stream.keyframe(seq_)));
+                keyframe =
+                    std::make_shared<const std::string>(proto::encode(s.stream.keyframe(seq_)));
             }
             peer->send({keyframe, MessageKind::Snapshot});
         } else {

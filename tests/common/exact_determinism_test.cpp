@@ -138,6 +138,28 @@ TEST(ExactValidation, BodyOutsideTheCushionsIsRejectedNamingTheField) {
     EXPECT_EQ(sim.error->field, "pos.y");
 }
 
+TEST(ExactValidation, ACentreARoundingErrorOutsideTheCushionIsAccepted) {
+    const PhysicsConfig config;
+    const double limit = config.cushion_max(config.coin_radius_px);
+    EXPECT_FALSE(validate_scene(config, std::vector<Body>{coin(1, 300.0, limit + 1e-9)}));
+    ASSERT_TRUE(validate_scene(config, std::vector<Body>{coin(1, 300.0, limit + 1e-5)}));
+}
+
+TEST(ExactValidation, EveryFinalStateOfRandomShotsIsAValidScene) {
+    const PhysicsConfig config;
+    ExactEngine engine(config);
+    for (int i = 0; i < 200; ++i) {
+        std::vector<Body> scene = standard_layout(config);
+        const double x = baseline_x_min(config) + 1.87 * i;
+        scene.push_back(make_striker(config, Baseline::Bottom, {x, -0.3 - 0.0127 * i, 25.0}));
+        const SimResult& result = *engine.run(scene).result;
+        std::vector<Body> after = result.bodies;
+        after.pop_back(); // the striker leaves the board after the shot
+        const auto error = validate_scene(config, after);
+        EXPECT_FALSE(error) << "shot " << i << ": " << (error ? error->message : "");
+    }
+}
+
 TEST(ExactValidation, NonFiniteNumbersAreRejectedNamingTheField) {
     const PhysicsConfig config;
     const double nan = std::nan("");

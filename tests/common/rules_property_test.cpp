@@ -109,8 +109,8 @@ void check_pieces(const MatchState& m) {
     }
     ASSERT_FALSE(test::overlaps_any(m));
     const auto scene_error = validate_scene(m.physics, m.bodies);
-    ASSERT_FALSE(scene_error.has_value()) << scene_error->code << " " << scene_error->body_id
-                                          << " " << scene_error->message;
+    ASSERT_FALSE(scene_error.has_value())
+        << scene_error->code << " " << scene_error->body_id << " " << scene_error->message;
 }
 
 void check_after(const MatchState& before, const PlayResult& r, Ledger& ledger) {

@@ -66,8 +66,7 @@ TEST(ProtoClient, CreateRoomRejectsBadOptions) {
     EXPECT_EQ(error_of(R"({"type":"create_room","rule_set":7})"), "bad_field");
     EXPECT_EQ(error_of(R"({"type":"create_room","options":[]})"), "bad_field");
     EXPECT_EQ(error_of(R"({"type":"create_room","options":{"target_points":0}})"), "bad_field");
-    EXPECT_EQ(error_of(R"({"type":"create_room","options":{"target_points":1001}})"),
-              "bad_field");
+    EXPECT_EQ(error_of(R"({"type":"create_room","options":{"target_points":1001}})"), "bad_field");
     EXPECT_EQ(error_of(R"({"type":"create_room","options":{"boards":100}})"), "bad_field");
     EXPECT_EQ(error_of(R"({"type":"create_room","options":{"shot_clock_s":-1}})"), "bad_field");
     EXPECT_EQ(error_of(R"({"type":"create_room","options":{"shot_clock_s":601}})"), "bad_field");
@@ -106,7 +105,8 @@ TEST(ProtoClient, JoinRoomRejectsBadCodes) {
 }
 
 TEST(ProtoClient, QuickMatchRoundTrip) {
-    EXPECT_EQ(round_trip(QuickMatch{RuleSet::DiscPool}), (ClientMessage{QuickMatch{RuleSet::DiscPool}}));
+    EXPECT_EQ(round_trip(QuickMatch{RuleSet::DiscPool}),
+              (ClientMessage{QuickMatch{RuleSet::DiscPool}}));
     const auto decoded = decode_client(R"({"type":"quick_match"})");
     ASSERT_TRUE(decoded.ok());
     EXPECT_EQ(std::get<QuickMatch>(*decoded.message).rule_set, RuleSet::Icf);
@@ -139,8 +139,7 @@ TEST(ProtoClient, ShootRangeEdges) {
     EXPECT_EQ(error_of(R"({"type":"shoot","turn":-1,"x":300,"angle":0,"power":1})"), "bad_field");
     EXPECT_EQ(error_of(R"({"type":"shoot","turn":1000001,"x":300,"angle":0,"power":1})"),
               "bad_field");
-    EXPECT_EQ(error_of(R"({"type":"shoot","turn":0,"x":-0.001,"angle":0,"power":1})"),
-              "bad_field");
+    EXPECT_EQ(error_of(R"({"type":"shoot","turn":0,"x":-0.001,"angle":0,"power":1})"), "bad_field");
     EXPECT_EQ(error_of(R"({"type":"shoot","turn":0,"x":10000.5,"angle":0,"power":1})"),
               "bad_field");
     EXPECT_EQ(error_of(R"({"type":"shoot","turn":0,"x":300,"angle":100.01,"power":1})"),
@@ -155,17 +154,14 @@ TEST(ProtoClient, TurnMustBeAnInteger) {
     EXPECT_EQ(error_of(R"({"type":"shoot","turn":1.0,"x":300,"angle":0,"power":1})"), "bad_field");
     EXPECT_EQ(error_of(R"({"type":"shoot","turn":1e2,"x":300,"angle":0,"power":1})"), "bad_field");
     EXPECT_EQ(error_of(R"({"type":"shoot","turn":"1","x":300,"angle":0,"power":1})"), "bad_field");
-    EXPECT_EQ(error_of(R"({"type":"shoot","turn":true,"x":300,"angle":0,"power":1})"),
-              "bad_field");
-    EXPECT_EQ(error_of(R"({"type":"shoot","turn":null,"x":300,"angle":0,"power":1})"),
-              "bad_field");
+    EXPECT_EQ(error_of(R"({"type":"shoot","turn":true,"x":300,"angle":0,"power":1})"), "bad_field");
+    EXPECT_EQ(error_of(R"({"type":"shoot","turn":null,"x":300,"angle":0,"power":1})"), "bad_field");
 }
 
 TEST(ProtoClient, NumbersMustBeNumbers) {
     EXPECT_EQ(error_of(R"({"type":"shoot","turn":0,"x":"300","angle":0,"power":1})"), "bad_field");
     EXPECT_EQ(error_of(R"({"type":"shoot","turn":0,"x":[300],"angle":0,"power":1})"), "bad_field");
-    EXPECT_EQ(error_of(R"({"type":"shoot","turn":0,"x":300,"angle":null,"power":1})"),
-              "bad_field");
+    EXPECT_EQ(error_of(R"({"type":"shoot","turn":0,"x":300,"angle":null,"power":1})"), "bad_field");
     EXPECT_EQ(error_of(R"({"type":"shoot","turn":0,"x":300,"angle":0,"power":false})"),
               "bad_field");
 }
@@ -189,8 +185,7 @@ TEST(ProtoClient, HugeAndNonFiniteNumbersAreRejected) {
     EXPECT_EQ(error_of(R"({"type":"shoot","turn":0,"x":Infinity,"angle":0,"power":1})"),
               "malformed_json");
     // Finite but far out of range.
-    EXPECT_EQ(error_of(R"({"type":"shoot","turn":0,"x":1e308,"angle":0,"power":1})"),
-              "bad_field");
+    EXPECT_EQ(error_of(R"({"type":"shoot","turn":0,"x":1e308,"angle":0,"power":1})"), "bad_field");
     EXPECT_EQ(error_of(R"({"type":"shoot","turn":18446744073709551616,"x":3,"angle":0,"power":1})"),
               "bad_field");
     EXPECT_EQ(error_of(R"({"type":"shoot","turn":18446744073709551615,"x":3,"angle":0,"power":1})"),
@@ -271,8 +266,15 @@ TEST(ProtoClient, DuplicateKeysKeepTheLast) {
 }
 
 TEST(ProtoClient, EveryTypeNameIsDistinctAndRoundTrips) {
-    const ClientMessage all[] = {Hello{1, "A", std::nullopt}, CreateRoom{}, JoinRoom{"ABCDEF"},
-                                 QuickMatch{}, Aim{}, Shoot{}, Rematch{}, Leave{}, Ping{}};
+    const ClientMessage all[] = {Hello{1, "A", std::nullopt},
+                                 CreateRoom{},
+                                 JoinRoom{"ABCDEF"},
+                                 QuickMatch{},
+                                 Aim{},
+                                 Shoot{},
+                                 Rematch{},
+                                 Leave{},
+                                 Ping{}};
     const char* names[] = {"hello", "create_room", "join_room", "quick_match", "aim",
                            "shoot", "rematch",     "leave",     "ping"};
     for (std::size_t i = 0; i < std::size(all); ++i) {

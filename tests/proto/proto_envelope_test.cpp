@@ -64,8 +64,7 @@ TEST(ProtoEnvelope, UnknownTypes) {
 }
 
 TEST(ProtoEnvelope, UnknownTypeMessageIsShortAndPrintable) {
-    const auto decoded =
-        decode_client("{\"type\":\"" + std::string(100, 'x') + "\\u0001\"}");
+    const auto decoded = decode_client("{\"type\":\"" + std::string(100, 'x') + "\\u0001\"}");
     ASSERT_FALSE(decoded.ok());
     EXPECT_EQ(decoded.error.message, "Unknown message type '" + std::string(32, 'x') + "'.");
 }
@@ -92,8 +91,8 @@ TEST(ProtoEnvelope, TooLargeIsCheckedBeforeParsing) {
 }
 
 TEST(ProtoEnvelope, DeepNestingInsideTheLimitIsHarmless) {
-    std::string deep = "{\"type\":\"leave\",\"x\":" + std::string(2000, '[') +
-                       std::string(2000, ']') + "}";
+    std::string deep =
+        "{\"type\":\"leave\",\"x\":" + std::string(2000, '[') + std::string(2000, ']') + "}";
     EXPECT_EQ(client_error(deep), "");
 }
 

@@ -180,10 +180,9 @@ TEST(ProtoServer, EveryEventKindRoundTrips) {
         PlayerReturnedEvent{1},
         AimEvent{0, 4, 250.75},
     };
-    const char* kinds[] = {"collision", "cushion",   "pocket",         "foul",
-                           "queen",     "due",       "turn",           "turn",
-                           "board_end", "game_end",  "player_dropped", "player_returned",
-                           "aim"};
+    const char* kinds[] = {
+        "collision", "cushion",   "pocket",   "foul",           "queen",           "due", "turn",
+        "turn",      "board_end", "game_end", "player_dropped", "player_returned", "aim"};
     for (std::size_t i = 0; i < std::size(events); ++i) {
         EXPECT_EQ(event_kind(events[i]), kinds[i]);
         EXPECT_EQ(to_json(ServerMessage{events[i]})["kind"], kinds[i]);

@@ -50,6 +50,17 @@ TEST(SceneJsonText, RejectsMalformedJson) {
     expect_error("{\"layout\": \"standard\"} x", "malformed_json", "");
 }
 
+TEST(SceneJsonText, InvalidUtf8IsMalformedAndTheMessageStaysPrintable) {
+    for (std::string_view text : {"\xff", "{\"a\xff\": 1}", "{\"layout\": \"\xc3\"}"}) {
+        const JsonError e = error_of(text);
+        EXPECT_EQ(e.code, "malformed_json");
+        for (char c : e.message) {
+            EXPECT_TRUE(c >= 0x20 && c <= 0x7e) << e.message;
+        }
+        EXPECT_NO_THROW((void)error_to_json(e).dump());
+    }
+}
+
 TEST(SceneJsonText, NumberOverflowIsMalformed) {
     expect_error(one_body(R"({"id": 0, "kind": "queen", "pos": [1e400, 300]})"), "malformed_json",
                  "");

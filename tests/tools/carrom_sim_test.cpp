@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <set>
 #include <sstream>
 #include <string>
 
@@ -143,6 +144,33 @@ TEST(CarromSim, AtReportsTheStateAtThatTime) {
     EXPECT_TRUE(out["events"].empty());
 }
 
+TEST(CarromSim, InvariantsHoldOnTheBreak) {
+    const SimRun run = run_scene(kBreak, "--invariants --no-events");
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    const Json inv = parse(run.out)["invariants"];
+    EXPECT_GT(inv["checked_times"].get<int>(), 10);
+    EXPECT_LT(inv["max_overlap_px"].get<double>(), 1e-6);
+    EXPECT_LT(inv["max_cushion_violation_px"].get<double>(), 1e-6);
+    EXPECT_EQ(inv["energy_increased"], false);
+}
+
+TEST(CarromSim, InvariantsSeeAnOverlapFreeHeadOnHit) {
+    // Checked at t = 0, at every event instant, and halfway between consecutive instants.
+    const SimRun run = run_scene(R"({"bodies": [
+        {"id": 0, "kind": "black", "pos": [100, 300], "vel": [800, 0]},
+        {"id": 1, "kind": "white", "pos": [220, 300]}]})",
+                                 "--invariants");
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    const Json out = parse(run.out);
+    EXPECT_EQ(out["events"][0]["kind"], "collision");
+    std::set<double> instants{0.0};
+    for (const Json& event : out["events"]) {
+        instants.insert(event["t_s"].get<double>());
+    }
+    EXPECT_EQ(out["invariants"]["checked_times"], 2 * instants.size() - 1);
+    EXPECT_LE(out["invariants"]["max_overlap_px"].get<double>(), 1e-9);
+}
+
 TEST(CarromSim, FixedIntegratorRuns) {
     const SimRun run = run_scene(kBreak, "--integrator fixed");
     ASSERT_EQ(run.exit_code, 0) << run.err;
@@ -214,6 +242,11 @@ TEST(CarromSim, BodyOutsideTheCushionsIsRejected) {
         run_scene(R"({"bodies": [{"id": 3, "kind": "queen", "pos": [20, 300]}]})"));
     EXPECT_EQ(e["code"], "outside_cushions");
     EXPECT_EQ(e["path"], "bodies[0].pos.x");
+}
+
+TEST(CarromSim, InvalidUtf8ExitsWithTwo) {
+    const Json e = expect_bad_input(run_scene("{\"a\xff\": 1}"));
+    EXPECT_EQ(e["code"], "malformed_json");
 }
 
 TEST(CarromSim, MissingFileExitsWithTwo) {

@@ -12,7 +12,6 @@
 #include <fstream>
 #include <iostream>
 #include <map>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -24,8 +23,13 @@ using Json = nlohmann::json;
 constexpr int kExitBadInput = 2;
 constexpr int kExitInternal = 1;
 
+// Text from the command line (paths, flags) may not be UTF-8: replace bad bytes when printing.
+std::string dump(const Json& j, int indent = -1) {
+    return j.dump(indent, ' ', false, Json::error_handler_t::replace);
+}
+
 int fail(const JsonError& error) {
-    std::cerr << carrom::proto::error_to_json(error).dump() << '\n';
+    std::cerr << dump(carrom::proto::error_to_json(error)) << '\n';
     return kExitBadInput;
 }
 
@@ -69,35 +73,68 @@ int run_rules(const std::string& path) {
     return carrom::run_rules_mode(file, std::cout, std::cerr);
 }
 
-int run(int argc, char** argv) {
-    using carrom::sim_cli::Integrator;
-    CLI::App app{"carrom-sim: simulate a carrom scene given as JSON and print the result as JSON "
-                 "(docs/carrom-sim.md)"};
+// Everything the command line sets.
+struct CliArgs {
     carrom::sim_cli::RunOptions options;
     std::string path;
     double at_s = 0.0;
+    bool at_given = false;
     bool pretty = false;
     bool no_events = false;
     bool rules = false;
+};
+
+void add_flags(CLI::App& app, CliArgs& args) {
+    using carrom::sim_cli::Integrator;
     const std::map<std::string, Integrator> integrators{{"exact", Integrator::Exact},
                                                         {"fixed", Integrator::Fixed}};
-    app.add_option("scene", path, "scene JSON file; '-' or none reads stdin");
-    app.add_option("--integrator", options.integrator, "exact (default) or fixed")
+    app.add_option("scene", args.path, "scene JSON file; '-' or none reads stdin");
+    app.add_option("--integrator", args.options.integrator, "exact (default) or fixed")
         ->transform(CLI::CheckedTransformer(integrators, CLI::ignore_case));
-    app.add_option("--dt", options.frame_dt_s, "fixed: frame time step, s (default 1/60)")
+    app.add_option("--dt", args.options.frame_dt_s, "fixed: frame time step, s (default 1/60)")
         ->check(CLI::PositiveNumber)
         ->check(CLI::Range(0.0, 1.0));
-    app.add_option("--substeps", options.substeps, "fixed: steps per frame (default 1)")
+    app.add_option("--substeps", args.options.substeps, "fixed: steps per frame (default 1)")
         ->check(CLI::Range(1, 1000000));
-    auto* at = app.add_option("--at", at_s, "print the state at time T, s, instead of the end")
-                   ->check(CLI::Range(0.0, 1e6));
-    app.add_option("--repeat", options.repeat, "run N times; report median and minimum wall time")
+    app.add_option("--at", args.at_s, "print the state at time T, s, instead of the end")
+        ->check(CLI::Range(0.0, 1e6));
+    app.add_option("--repeat", args.options.repeat,
+                   "run N times; report median and minimum wall time")
         ->check(CLI::Range(1, 1000000));
-    app.add_flag("--no-events", no_events, "leave the event list out");
-    app.add_flag("--pretty", pretty, "indent the JSON output");
-    app.add_flag("--invariants", options.invariants,
+    app.add_flag("--no-events", args.no_events, "leave the event list out");
+    app.add_flag("--pretty", args.pretty, "indent the JSON output");
+    app.add_flag("--invariants", args.options.invariants,
                  "exact: check overlap, cushions and kinetic energy at every event time");
-    app.add_flag("--rules", rules, "rules mode: read a rules scenario instead of a scene");
+    app.add_flag("--rules", args.rules, "rules mode: read a rules question instead of a scene");
+}
+
+int simulate(CliArgs& args) {
+    args.options.record_events = !args.no_events;
+    if (args.at_given) {
+        args.options.at_s = args.at_s;
+    }
+    std::string text;
+    JsonError error;
+    if (!read_input(args.path, text, error)) {
+        return fail(error);
+    }
+    const auto scene = carrom::proto::decode_scene_text(text);
+    if (!scene.ok()) {
+        return fail(*scene.error);
+    }
+    const auto output = carrom::sim_cli::run_scene(scene.value, args.options);
+    if (output.error) {
+        return fail(*output.error);
+    }
+    std::cout << dump(output.document, args.pretty ? 2 : -1) << '\n';
+    return 0;
+}
+
+int run(int argc, char** argv) {
+    CLI::App app{"carrom-sim: simulate a carrom scene given as JSON and print the result as JSON "
+                 "(docs/carrom-sim.md)"};
+    CliArgs args;
+    add_flags(app, args);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
@@ -105,31 +142,11 @@ int run(int argc, char** argv) {
     } catch (const CLI::ParseError& e) {
         return fail({"bad_argument", "", e.what()});
     }
-    if (!std::isfinite(options.frame_dt_s) || !std::isfinite(at_s)) {
+    if (!std::isfinite(args.options.frame_dt_s) || !std::isfinite(args.at_s)) {
         return fail({"bad_argument", "", "--dt and --at must be finite numbers"});
     }
-    if (rules) {
-        return run_rules(path);
-    }
-    options.record_events = !no_events;
-    if (at->count() > 0) {
-        options.at_s = at_s;
-    }
-    std::string text;
-    JsonError error;
-    if (!read_input(path, text, error)) {
-        return fail(error);
-    }
-    const auto scene = carrom::proto::decode_scene_text(text);
-    if (!scene.ok()) {
-        return fail(*scene.error);
-    }
-    const auto output = carrom::sim_cli::run_scene(scene.value, options);
-    if (output.error) {
-        return fail(*output.error);
-    }
-    std::cout << output.document.dump(pretty ? 2 : -1) << '\n';
-    return 0;
+    args.at_given = app.count("--at") > 0;
+    return args.rules ? run_rules(args.path) : simulate(args);
 }
 
 } // namespace
@@ -138,7 +155,7 @@ int main(int argc, char** argv) {
     try {
         return run(argc, argv);
     } catch (const std::exception& e) {
-        std::cerr << carrom::proto::error_to_json({"internal", "", e.what()}).dump() << '\n';
+        std::cerr << dump(carrom::proto::error_to_json({"internal", "", e.what()})) << '\n';
         return kExitInternal;
     }
 }

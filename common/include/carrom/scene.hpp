@@ -52,7 +52,8 @@ struct SceneError {
     std::string message; // one plain sentence
 };
 
-// Rejects non-finite numbers, duplicate ids, bodies outside the cushions, and overlapping
+// Rejects non-finite numbers, duplicate ids, bodies outside the cushions (by more than 1e-6 px,
+// which covers rounding at a cushion contact), and overlapping
 // unpocketed bodies (overlap beyond overlap_tolerance_px). Pocketed bodies are ignored except
 // for finiteness and id checks.
 std::optional<SceneError> validate_scene(const PhysicsConfig& config, std::span<const Body> bodies,

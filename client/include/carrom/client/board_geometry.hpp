@@ -14,17 +14,17 @@ namespace carrom::client {
 // base circle at each end. For the bottom and top sides the lines run along x; for the left and
 // right sides along y.
 struct BaselineMarking {
-    Vec2 start_px{};           // centre line start (first end circle centre)
-    Vec2 end_px{};             // centre line end (second end circle centre)
-    Vec2 normal{};             // unit vector across the lines (towards the board centre)
-    double half_gap_px = 0.0;  // each line lies half_gap_px from the centre line
+    Vec2 start_px{};          // centre line start (first end circle centre)
+    Vec2 end_px{};            // centre line end (second end circle centre)
+    Vec2 normal{};            // unit vector across the lines (towards the board centre)
+    double half_gap_px = 0.0; // each line lies half_gap_px from the centre line
     double end_circle_r_px = 0.0;
 };
 
 // A diagonal arrow from near a pocket towards the centre, with an arc at its inner end.
 struct ArrowMarking {
-    Vec2 tip_px{};   // arrowhead end, near the pocket
-    Vec2 tail_px{};  // inner end, towards the centre
+    Vec2 tip_px{};  // arrowhead end, near the pocket
+    Vec2 tail_px{}; // inner end, towards the centre
     double head_px = 0.0;
     double arc_r_px = 0.0; // radius of the arc around the tail
 };
@@ -37,8 +37,8 @@ struct BoardGeometry {
     double striker_r_px = 18.0;
     std::array<Vec2, 4> pockets{}; // top-left, top-right, bottom-left, bottom-right
     Vec2 centre{};
-    double centre_circle_r_px = 0.0; // the small circle the queen sits on
-    double outer_circle_r_px = 0.0;  // the circle around the starting layout
+    double centre_circle_r_px = 0.0;            // the small circle the queen sits on
+    double outer_circle_r_px = 0.0;             // the circle around the starting layout
     std::array<BaselineMarking, 4> baselines{}; // bottom, top, left, right
     std::array<ArrowMarking, 4> arrows{};       // same order as pockets
 };

@@ -20,9 +20,9 @@ namespace carrom::client {
 struct RoomRequest {
     enum class Kind { Create, Join, Spectate, Quick };
     Kind kind = Kind::Create;
-    std::string code;                       // Join, Spectate
+    std::string code; // Join, Spectate
     proto::RuleSet rule_set = proto::RuleSet::Icf;
-    std::optional<proto::BotSeat> bot;      // Create: a server bot in seat 1
+    std::optional<proto::BotSeat> bot; // Create: a server bot in seat 1
 };
 
 enum class SessionPhase {
@@ -37,7 +37,7 @@ enum class SessionPhase {
 
 struct SessionConfig {
     double ping_interval_s = 2.0;
-    double first_retry_s = 0.5;   // reconnect back-off starts here and doubles
+    double first_retry_s = 0.5; // reconnect back-off starts here and doubles
     double max_retry_s = 5.0;
     double give_up_after_s = 60.0; // the server's default grace period
 };

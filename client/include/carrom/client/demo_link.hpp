@@ -14,6 +14,7 @@
 #include <deque>
 #include <functional>
 #include <optional>
+#include <string>
 #include <vector>
 
 namespace carrom::client {
@@ -40,10 +41,10 @@ public:
 
 private:
     struct Streaming {
-        double start_s = 0.0;      // local time of t = 0
+        double start_s = 0.0; // local time of t = 0
         int turn = 0;
         std::size_t next_event = 0;
-        int next_frame = 0;        // snapshot index; t = index / rate
+        int next_frame = 0; // snapshot index; t = index / rate
         std::vector<Body> last_sent;
         rules::PlayResult play;
     };
@@ -63,6 +64,7 @@ private:
     DemoConfig config_;
     ExactEngine engine_;
     bool open_ = true;
+    std::string player_name_ = "Player";
     bool in_room_ = false;
     rules::MatchState match_;
     std::optional<Streaming> streaming_;

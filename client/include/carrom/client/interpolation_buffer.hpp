@@ -20,7 +20,7 @@ struct InterpolationConfig {
     double pocket_end_scale = 0.35; // its size, relative, at the end of that animation
     double hold_gap_s = 0.25;       // a longer gap after a board at rest is a jump, not a glide
     double max_extrapolation_s = 0.05;
-    double history_s = 2.0;         // states older than this behind the newest are dropped
+    double history_s = 2.0; // states older than this behind the newest are dropped
 };
 
 struct RenderedBody {

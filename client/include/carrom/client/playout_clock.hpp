@@ -19,15 +19,15 @@
 namespace carrom::client {
 
 struct PlayoutConfig {
-    double interval_factor = 2.0;       // delay in snapshot intervals, before jitter
+    double interval_factor = 2.0; // delay in snapshot intervals, before jitter
     double initial_interval_s = 1.0 / 60.0;
     double min_delay_s = 0.010;
     double max_delay_s = 0.300;
-    double jitter_decay_s = 3.0;        // time constant of the jitter peak's decay
-    double gap_s = 0.25;                // snapshots further apart than this are separate runs
-    std::size_t transit_window = 180;   // snapshots kept for the base transit minimum
-    double slew_rate = 0.1;             // max correction per second of elapsed time
-    double snap_threshold_s = 0.25;     // larger errors are corrected at once
+    double jitter_decay_s = 3.0;      // time constant of the jitter peak's decay
+    double gap_s = 0.25;              // snapshots further apart than this are separate runs
+    std::size_t transit_window = 180; // snapshots kept for the base transit minimum
+    double slew_rate = 0.1;           // max correction per second of elapsed time
+    double snap_threshold_s = 0.25;   // larger errors are corrected at once
 };
 
 class PlayoutClock {

@@ -22,16 +22,17 @@ struct ScreenLayout {
     Rect bottom_bar; // rule set, connection, messages
 };
 
-// Bar heights scale with the window height within fixed bounds (window px).
+// Bar heights scale with the window height within fixed bounds (window px). Every rect is on
+// whole window px (the board texture and the HUD layers are copied pixel for pixel).
 ScreenLayout make_layout(double window_w, double window_h);
 
 // Board px <-> window px. Invariant: scale > 0.
 struct ScreenMapping {
     double origin_x = 0.0; // window px of the board's top-left corner (as drawn)
     double origin_y = 0.0;
-    double scale = 1.0;    // window px per board px
+    double scale = 1.0; // window px per board px
     double board_size_px = 600.0;
-    bool flipped = false;  // half a turn: board (x, y) appears at (size - x, size - y)
+    bool flipped = false; // half a turn: board (x, y) appears at (size - x, size - y)
 
     Vec2 to_screen(Vec2 board_px) const;
     Vec2 to_board(Vec2 window_px) const;

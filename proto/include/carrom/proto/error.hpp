@@ -15,20 +15,21 @@ struct Error {
 
 namespace code {
 // Decoding (any message).
-inline constexpr std::string_view kMalformedJson = "malformed_json"; // not JSON, or a number overflows
-inline constexpr std::string_view kTooLarge = "too_large";           // text over the size limit
-inline constexpr std::string_view kNotObject = "not_object";         // top level is not an object
-inline constexpr std::string_view kMissingType = "missing_type";     // no string "type" field
-inline constexpr std::string_view kUnknownType = "unknown_type";     // "type" names no message
-inline constexpr std::string_view kBadField = "bad_field";           // a field's type, range, size
-inline constexpr std::string_view kBinaryFrame = "binary_frame";     // only text frames are used
+inline constexpr std::string_view kMalformedJson =
+    "malformed_json";                                            // not JSON, or a number overflows
+inline constexpr std::string_view kTooLarge = "too_large";       // text over the size limit
+inline constexpr std::string_view kNotObject = "not_object";     // top level is not an object
+inline constexpr std::string_view kMissingType = "missing_type"; // no string "type" field
+inline constexpr std::string_view kUnknownType = "unknown_type"; // "type" names no message
+inline constexpr std::string_view kBadField = "bad_field";       // a field's type, range, size
+inline constexpr std::string_view kBinaryFrame = "binary_frame"; // only text frames are used
 // Session.
 inline constexpr std::string_view kVersionMismatch = "version_mismatch";
 inline constexpr std::string_view kHelloRequired = "hello_required"; // first message must be hello
 inline constexpr std::string_view kAlreadyHello = "already_hello";
-inline constexpr std::string_view kBadToken = "bad_token";           // resume token unknown/expired
+inline constexpr std::string_view kBadToken = "bad_token"; // resume token unknown/expired
 inline constexpr std::string_view kRateLimited = "rate_limited";
-inline constexpr std::string_view kServerFull = "server_full";       // max connections reached
+inline constexpr std::string_view kServerFull = "server_full"; // max connections reached
 inline constexpr std::string_view kTooManyRooms = "too_many_rooms";
 inline constexpr std::string_view kHandshakeTimeout = "handshake_timeout";
 inline constexpr std::string_view kIdleTimeout = "idle_timeout";
@@ -40,11 +41,11 @@ inline constexpr std::string_view kRoomFull = "room_full";
 inline constexpr std::string_view kAlreadyInRoom = "already_in_room";
 inline constexpr std::string_view kNotInRoom = "not_in_room";
 // Game input.
-inline constexpr std::string_view kSpectator = "spectator";        // spectators send no game input
+inline constexpr std::string_view kSpectator = "spectator"; // spectators send no game input
 inline constexpr std::string_view kNotYourTurn = "not_your_turn";
-inline constexpr std::string_view kStaleTurn = "stale_turn";       // turn number is not the current
-inline constexpr std::string_view kInMotion = "in_motion";         // a shot is still being played
-inline constexpr std::string_view kWrongPhase = "wrong_phase";     // e.g. shoot before both seated
+inline constexpr std::string_view kStaleTurn = "stale_turn";   // turn number is not the current
+inline constexpr std::string_view kInMotion = "in_motion";     // a shot is still being played
+inline constexpr std::string_view kWrongPhase = "wrong_phase"; // e.g. shoot before both seated
 inline constexpr std::string_view kIllegalPlacement = "illegal_placement";
 inline constexpr std::string_view kIllegalShot = "illegal_shot";
 inline constexpr std::string_view kUnsupported = "unsupported"; // e.g. bot seats without bots

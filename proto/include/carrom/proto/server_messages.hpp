@@ -27,16 +27,16 @@ struct Welcome {
 };
 
 struct SeatInfo {
-    bool occupied = false;            // "occupied": someone (or a bot) holds the seat
-    std::string name;                 // "name", empty when not occupied
-    bool connected = false;           // "connected": false while a dropped player has grace
-    bool bot = false;                 // "bot": a server-side bot
-    Colour colour = Colour::None;     // "colour": the coins the seat plays (none in freestyle)
+    bool occupied = false;                // "occupied": someone (or a bot) holds the seat
+    std::string name;                     // "name", empty when not occupied
+    bool connected = false;               // "connected": false while a dropped player has grace
+    bool bot = false;                     // "bot": a server-side bot
+    Colour colour = Colour::None;         // "colour": the coins the seat plays (none in freestyle)
     Baseline baseline = Baseline::Bottom; // "baseline": "bottom" or "top"
     friend bool operator==(const SeatInfo&, const SeatInfo&) = default;
 };
 
-struct MatchOptions { // options with every default resolved
+struct MatchOptions {          // options with every default resolved
     int target_points = 25;    // "target_points"
     int boards = 8;            // "boards"
     double shot_clock_s = 0.0; // "shot_clock_s", 0 = off
@@ -46,23 +46,23 @@ struct MatchOptions { // options with every default resolved
 // "room_state": everything a client needs to draw the room; sent on join, rejoin, seat changes
 // and after every shot.
 struct RoomState {
-    std::string code;                  // "code"
-    int you = -1;                      // "you": the receiver's seat, -1 for a spectator
-    RuleSet rule_set = RuleSet::Icf;   // "rule_set"
-    MatchOptions options;              // "options"
-    std::vector<SeatInfo> seats;       // "seats", 2..kMaxSeats
-    int spectators = 0;                // "spectators"
-    std::vector<int> scores;           // "scores", one per seat
-    std::vector<int> dues;             // "dues": dues owed, one per seat
-    int board_number = 1;              // "board_number", 1-based
-    int turn = 0;                      // "turn": the number the next game input must carry
-    int to_play = 0;                   // "to_play": seat to shoot
+    std::string code;                // "code"
+    int you = -1;                    // "you": the receiver's seat, -1 for a spectator
+    RuleSet rule_set = RuleSet::Icf; // "rule_set"
+    MatchOptions options;            // "options"
+    std::vector<SeatInfo> seats;     // "seats", 2..kMaxSeats
+    int spectators = 0;              // "spectators"
+    std::vector<int> scores;         // "scores", one per seat
+    std::vector<int> dues;           // "dues": dues owed, one per seat
+    int board_number = 1;            // "board_number", 1-based
+    int turn = 0;                    // "turn": the number the next game input must carry
+    int to_play = 0;                 // "to_play": seat to shoot
     std::optional<std::int64_t> shot_clock_deadline_ms; // "shot_clock_deadline_ms", absent: none
-    std::int64_t server_time_ms = 0;   // "server_time_ms"
-    Phase phase = Phase::Waiting;      // "phase"
-    QueenInfo queen;                   // "queen": {"state", "seat"}
-    int winner = -1;                   // "winner": seat, -1 while none
-    std::vector<BoardBody> bodies;     // "bodies": the full board, every body with its kind
+    std::int64_t server_time_ms = 0;                    // "server_time_ms"
+    Phase phase = Phase::Waiting;                       // "phase"
+    QueenInfo queen;                                    // "queen": {"state", "seat"}
+    int winner = -1;                                    // "winner": seat, -1 while none
+    std::vector<BoardBody> bodies; // "bodies": the full board, every body with its kind
     friend bool operator==(const RoomState&, const RoomState&) = default;
 };
 
@@ -80,12 +80,12 @@ struct SnapshotBody {
 // it replaces the receiver's state (sent on join, on rejoin, at the end of every shot and after
 // a slow client's dropped snapshots).
 struct Snapshot {
-    std::int64_t seq = 0;           // "seq": per room, +1 per broadcast snapshot
-    int turn = 0;                   // "turn": the shot's turn number
-    double t_s = 0.0;               // "t": seconds since the shot started
-    bool keyframe = false;          // "keyframe"
+    std::int64_t seq = 0;             // "seq": per room, +1 per broadcast snapshot
+    int turn = 0;                     // "turn": the shot's turn number
+    double t_s = 0.0;                 // "t": seconds since the shot started
+    bool keyframe = false;            // "keyframe"
     std::vector<SnapshotBody> bodies; // "bodies": [[id, x, y, vx, vy], ...]
-    std::vector<int> pocketed;      // "pocketed": [id, ...]
+    std::vector<int> pocketed;        // "pocketed": [id, ...]
     friend bool operator==(const Snapshot&, const Snapshot&) = default;
 };
 
@@ -106,7 +106,8 @@ struct CushionEvent { // "cushion": body hit cushion 0 left, 1 right, 2 top, 3 b
     double impulse = 0.0;
     friend bool operator==(const CushionEvent&, const CushionEvent&) = default;
 };
-struct PocketEvent { // "pocket": body entered pocket 0 top-left, 1 top-right, 2 bottom-left, 3 bottom-right
+struct PocketEvent { // "pocket": body entered pocket 0 top-left, 1 top-right, 2 bottom-left, 3
+                     // bottom-right
     int turn = 0;
     double t_s = 0.0;
     int body = 0;
@@ -142,13 +143,15 @@ struct BoardEndEvent { // "board_end": board `board` won by `winner` (-1: none) 
     std::vector<int> scores;
     friend bool operator==(const BoardEndEvent&, const BoardEndEvent&) = default;
 };
-struct GameEndEvent { // "game_end"; reason: "score", "boards", "cleared", "forfeit", "left", "clock"
+struct GameEndEvent { // "game_end"; reason: "score", "boards", "cleared", "forfeit", "left",
+                      // "clock"
     int winner = -1;
     std::string reason;
     std::vector<int> scores;
     friend bool operator==(const GameEndEvent&, const GameEndEvent&) = default;
 };
-struct PlayerDroppedEvent { // "player_dropped": the seat forfeits at grace_deadline_ms unless it resumes
+struct PlayerDroppedEvent { // "player_dropped": the seat forfeits at grace_deadline_ms unless it
+                            // resumes
     int seat = 0;
     std::int64_t grace_deadline_ms = 0;
     std::int64_t server_time_ms = 0;
@@ -179,24 +182,24 @@ struct Foul {
 
 // "shot_result": the rules' outcome of turn `turn`, after the shot's final keyframe.
 struct ShotResult {
-    int turn = 0;                // "turn": the turn that was played
-    int seat = 0;                // "seat": the shooter
-    double x_px = 0.0;           // "x", "angle", "power": the shot as played
+    int turn = 0;      // "turn": the turn that was played
+    int seat = 0;      // "seat": the shooter
+    double x_px = 0.0; // "x", "angle", "power": the shot as played
     double angle_rad = 0.0;
     double power = 0.0;
-    std::vector<int> pocketed;   // "pocketed": ids pocketed by this shot (striker included)
-    std::vector<int> returned;   // "returned": ids put back on the board by the rules
-    std::vector<Foul> fouls;     // "fouls"
-    std::vector<int> points;     // "points": score change per seat
-    std::vector<int> scores;     // "scores": scores after the shot
-    std::vector<int> dues;       // "dues": dues owed per seat after the shot
-    QueenInfo queen;             // "queen"
-    bool extra_turn = false;     // "extra_turn": the shooter plays again
-    int next_turn = 0;           // "next_turn"
-    int next_seat = 0;           // "next_seat"
-    bool board_over = false;     // "board_over"
-    bool game_over = false;      // "game_over"
-    int winner = -1;             // "winner": of the game when game_over, else -1
+    std::vector<int> pocketed; // "pocketed": ids pocketed by this shot (striker included)
+    std::vector<int> returned; // "returned": ids put back on the board by the rules
+    std::vector<Foul> fouls;   // "fouls"
+    std::vector<int> points;   // "points": score change per seat
+    std::vector<int> scores;   // "scores": scores after the shot
+    std::vector<int> dues;     // "dues": dues owed per seat after the shot
+    QueenInfo queen;           // "queen"
+    bool extra_turn = false;   // "extra_turn": the shooter plays again
+    int next_turn = 0;         // "next_turn"
+    int next_seat = 0;         // "next_seat"
+    bool board_over = false;   // "board_over"
+    bool game_over = false;    // "game_over"
+    int winner = -1;           // "winner": of the game when game_over, else -1
     friend bool operator==(const ShotResult&, const ShotResult&) = default;
 };
 

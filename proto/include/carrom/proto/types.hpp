@@ -12,15 +12,20 @@
 
 namespace carrom::proto {
 
-enum class RuleSet : std::uint8_t { Icf, Seed, Freestyle, DiscPool };  // "icf" "seed" "freestyle" "discpool"
-enum class Role : std::uint8_t { Player, Spectator };                  // "player" "spectator"
-enum class Colour : std::uint8_t { None, Black, White };               // "none" "black" "white"
+enum class RuleSet : std::uint8_t {
+    Icf,
+    Seed,
+    Freestyle,
+    DiscPool
+};                                                       // "icf" "seed" "freestyle" "discpool"
+enum class Role : std::uint8_t { Player, Spectator };    // "player" "spectator"
+enum class Colour : std::uint8_t { None, Black, White }; // "none" "black" "white"
 enum class Phase : std::uint8_t { Waiting, Aiming, Moving, BoardOver, GameOver };
 // "waiting" (a seat is empty), "aiming" (to_play may shoot), "moving" (a shot is streaming),
 // "board_over" (between boards), "game_over" (rematch possible)
 enum class QueenState : std::uint8_t { OnBoard, Pending, Covered, None };
 // "on_board" "pending" "covered" "none" (a rule set without a queen: discpool)
-enum class BotLevel : std::uint8_t { Random, Easy, Medium, Hard };   // "random" "easy" ...
+enum class BotLevel : std::uint8_t { Random, Easy, Medium, Hard }; // "random" "easy" ...
 
 std::string_view to_string(RuleSet value);
 std::string_view to_string(Role value);
@@ -28,7 +33,7 @@ std::string_view to_string(Colour value);
 std::string_view to_string(Phase value);
 std::string_view to_string(QueenState value);
 std::string_view to_string(BotLevel value);
-std::string_view baseline_name(Baseline value); // "bottom" "top"
+std::string_view baseline_name(Baseline value);  // "bottom" "top"
 std::string_view body_kind_name(BodyKind value); // "black" "white" "queen" "striker"
 
 bool parse(std::string_view text, RuleSet& out);

@@ -10,11 +10,11 @@
 namespace carrom::server {
 
 struct Metrics {
-    std::atomic<std::int64_t> connections{0};        // gauge: open WebSocket connections
-    std::atomic<std::int64_t> connections_total{0};  // accepted WebSocket connections
+    std::atomic<std::int64_t> connections{0};                // gauge: open WebSocket connections
+    std::atomic<std::int64_t> connections_total{0};          // accepted WebSocket connections
     std::atomic<std::int64_t> rejected_connections_total{0}; // over max_connections
-    std::atomic<std::int64_t> rooms{0};              // gauge
-    std::atomic<std::int64_t> matches{0};            // gauge: rooms with a game in progress
+    std::atomic<std::int64_t> rooms{0};                      // gauge
+    std::atomic<std::int64_t> matches{0};                    // gauge: rooms with a game in progress
     std::atomic<std::int64_t> matches_started_total{0};
     std::atomic<std::int64_t> matches_finished_total{0};
     std::atomic<std::int64_t> shots_total{0};
@@ -23,8 +23,8 @@ struct Metrics {
     std::atomic<std::int64_t> bytes_in_total{0};
     std::atomic<std::int64_t> bytes_out_total{0};
     std::atomic<std::int64_t> errors_sent_total{0};
-    std::atomic<std::int64_t> snapshots_total{0};          // snapshot broadcasts
-    std::atomic<std::int64_t> snapshots_dropped_total{0};  // dropped for slow clients
+    std::atomic<std::int64_t> snapshots_total{0};         // snapshot broadcasts
+    std::atomic<std::int64_t> snapshots_dropped_total{0}; // dropped for slow clients
     std::atomic<std::int64_t> slow_client_disconnects_total{0};
     std::atomic<std::int64_t> http_requests_total{0};
 

@@ -23,8 +23,7 @@ proto::Error to_proto_error(const rules::RuleError& error);
 // Per-seat view of per-team numbers (singles: identical; doubles: partners share).
 std::vector<int> per_seat(const rules::MatchState& state, const std::vector<int>& per_team);
 
-proto::ShotResult to_shot_result(const rules::ShotOutcome& outcome,
-                                 const rules::MatchState& after);
+proto::ShotResult to_shot_result(const rules::ShotOutcome& outcome, const rules::MatchState& after);
 // foul, queen (if it changed), due (if a team's dues changed), board_end, game_end.
 std::vector<proto::Event> rule_events(const rules::ShotOutcome& outcome,
                                       const rules::MatchState& before,

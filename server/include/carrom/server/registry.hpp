@@ -30,7 +30,8 @@ struct PlayerRecord {
 
 template <class RoomT, class WaiterT> class Registry {
 public:
-    Registry(RandomSource& random, std::size_t max_rooms) : random_(random), max_rooms_(max_rooms) {}
+    Registry(RandomSource& random, std::size_t max_rooms)
+        : random_(random), max_rooms_(max_rooms) {}
 
     // --- players ---
     PlayerRecord new_player() {
@@ -89,15 +90,12 @@ public:
         const auto it = rooms_.find(code);
         return it == rooms_.end() ? nullptr : it->second;
     }
-    // Removes the room; players last seated there no longer point at it.
+    // Removes the room and the records of players last seated there (a room is removed only
+    // when no human holds a seat, so they are gone or elsewhere).
     void remove_room(const std::string& code) {
         std::lock_guard lock(mutex_);
         rooms_.erase(code);
-        for (auto& [token, record] : players_) {
-            if (record.room_code == code) {
-                record.room_code.clear();
-            }
-        }
+        std::erase_if(players_, [&](const auto& entry) { return entry.second.room_code == code; });
     }
     std::size_t room_count() const {
         std::lock_guard lock(mutex_);

@@ -77,7 +77,7 @@ public:
     // No human holds a seat (connected or within grace) and no spectator watches.
     bool abandoned() const;
     bool is_member(const Peer& peer) const;
-    int seat_of(const Peer& peer) const;       // -1 if none (a spectator or not a member)
+    int seat_of(const Peer& peer) const;              // -1 if none (a spectator or not a member)
     int seat_of_player(std::int64_t player_id) const; // -1 if none
     proto::Phase phase() const;
     const rules::MatchState& match() const { return match_; }
@@ -128,10 +128,10 @@ private:
     rules::MatchState match_;
     std::array<SeatSlot, 2> seats_{};
     std::vector<std::shared_ptr<Peer>> spectators_;
-    bool started_ = false;        // a game has started (both seats were filled)
+    bool started_ = false; // a game has started (both seats were filled)
     std::int64_t turn_started_ms_ = 0;
-    double aim_x_px_;             // the shooter's last aim position
-    std::int64_t seq_ = 0;        // last snapshot sequence number broadcast
+    double aim_x_px_;      // the shooter's last aim position
+    std::int64_t seq_ = 0; // last snapshot sequence number broadcast
 
     // The shot being streamed.
     struct Streaming {

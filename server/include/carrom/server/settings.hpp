@@ -9,21 +9,21 @@ namespace carrom::server {
 
 struct ServerSettings {
     std::string host = "127.0.0.1";
-    std::uint16_t port = 0;              // 0 = ephemeral
-    int threads = 2;                     // I/O threads
-    double snapshot_hz = 60.0;           // snapshots per second while pieces move
+    std::uint16_t port = 0;               // 0 = ephemeral
+    int threads = 2;                      // I/O threads
+    double snapshot_hz = 60.0;            // snapshots per second while pieces move
     std::size_t max_message_bytes = 4096; // client text frame limit
-    double max_rate = 30.0;              // client messages per second (sustained)
-    double rate_burst = 60.0;            // bucket size
-    double handshake_timeout_s = 10.0;   // WebSocket upgrade + hello
-    double idle_timeout_s = 60.0;        // nothing received (keep-alive pings at half of it)
+    double max_rate = 30.0;               // client messages per second (sustained)
+    double rate_burst = 60.0;             // bucket size
+    double handshake_timeout_s = 10.0;    // WebSocket upgrade + hello
+    double idle_timeout_s = 60.0;         // nothing received (keep-alive pings at half of it)
     int max_connections = 10000;
     int max_rooms = 5000;
-    double grace_s = 60.0;               // dropped seat kept this long
-    double shot_clock_s = 20.0;          // default per stroke; 0 = off
-    std::size_t max_queue_bytes = 1 << 20;   // per-session write queue bound
-    std::size_t snapshot_backlog = 8;        // queued messages above which snapshots are dropped
-    double shutdown_grace_s = 3.0;           // SIGINT/SIGTERM: time to close cleanly
+    double grace_s = 60.0;                 // dropped seat kept this long
+    double shot_clock_s = 20.0;            // default per stroke; 0 = off
+    std::size_t max_queue_bytes = 1 << 20; // per-session write queue bound
+    std::size_t snapshot_backlog = 8;      // queued messages above which snapshots are dropped
+    double shutdown_grace_s = 3.0;         // SIGINT/SIGTERM: time to close cleanly
 };
 
 } // namespace carrom::server

@@ -16,8 +16,7 @@
 namespace carrom::server {
 
 // A keyframe of `bodies`: every unpocketed body in "bodies", every pocketed id in "pocketed".
-proto::Snapshot make_keyframe(std::span<const Body> bodies, std::int64_t seq, int turn,
-                              double t_s);
+proto::Snapshot make_keyframe(std::span<const Body> bodies, std::int64_t seq, int turn, double t_s);
 
 class ShotStream {
 public:

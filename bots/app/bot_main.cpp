@@ -1,0 +1,185 @@
+// carrom-bot: a headless player. Creates a room, joins one by code, or asks for a quick match,
+// plays --games games with a strategy, then prints a JSON summary on stdout. Exit status 0 when
+// it played its games to the end, 1 otherwise (the summary's "failure" says why).
+#include "carrom/bots/bot_runner.hpp"
+#include "carrom/bots/scripted_strategy.hpp"
+#include "carrom/proto/types.hpp"
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+#include <spdlog/spdlog.h>
+
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+namespace {
+
+using namespace carrom;
+
+nlohmann::json summary_json(const bots::BotSummary& s, std::string_view strategy) {
+    nlohmann::json errors = nlohmann::json::object();
+    for (const auto& [code, count] : s.errors) {
+        errors[code] = count;
+    }
+    std::string result = "none";
+    if (s.games > 0) {
+        result = s.seat < 0          ? "watched"
+                 : s.wins > s.losses ? "won"
+                 : s.losses > s.wins ? "lost"
+                                     : "drawn";
+    }
+    return {{"ok", s.failure.empty() && s.finished},
+            {"strategy", strategy},
+            {"room", s.room_code},
+            {"seat", s.seat},
+            {"games", s.games},
+            {"shots", s.shots},
+            {"result", result},
+            {"wins", s.wins},
+            {"losses", s.losses},
+            {"draws", s.draws},
+            {"scores", s.scores},
+            {"reason", s.last_reason},
+            {"snapshots", s.snapshots},
+            {"keyframes", s.keyframes},
+            {"seq_gaps", s.seq_gaps},
+            {"resumes", s.resumes},
+            {"decode_errors", s.decode_errors},
+            {"errors", errors},
+            {"failure", s.failure}};
+}
+
+std::optional<std::string> read_file(const std::string& path, std::string& out) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) {
+        return "Could not open the script file '" + path + "'.";
+    }
+    std::ostringstream text;
+    text << in.rdbuf();
+    out = text.str();
+    return std::nullopt;
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    bots::BotConfig config;
+    bots::StrategyOptions strategy_options;
+    bool create = false;
+    bool quick = false;
+    std::string join_code;
+    std::string spectate_code;
+    std::string rule_set_name = "icf";
+    std::string script_path;
+    std::string log_level = "warn";
+    int target_points = 0;
+    int boards = 0;
+    double shot_clock_s = -1.0;
+    double timeout_s = 3600.0;
+    int think_ms = 300;
+
+    CLI::App app{"carrom-bot: a headless carrom player (prints a JSON summary at the end)"};
+    app.option_defaults()->always_capture_default();
+    app.add_option("--url", config.url, "Server address, ws://HOST:PORT");
+    app.add_option("--name", config.name, "Player name (1-24 bytes)");
+    auto* create_flag = app.add_flag("--create", create, "Create a private room (seat 0)");
+    auto* join_option = app.add_option("--join", join_code, "Join the room with this code");
+    auto* spectate_option =
+        app.add_option("--spectate", spectate_code, "Watch the room with this code");
+    auto* quick_flag = app.add_flag("--quick", quick, "Ask for a quick match");
+    create_flag->excludes(join_option)->excludes(spectate_option)->excludes(quick_flag);
+    join_option->excludes(spectate_option)->excludes(quick_flag);
+    spectate_option->excludes(quick_flag);
+    app.add_option("--rule-set", rule_set_name, "Rule set for --create and --quick")
+        ->check(CLI::IsMember({"icf", "seed", "freestyle", "discpool"}));
+    app.add_option("--target-points", target_points, "--create: points to win (0 = default)")
+        ->check(CLI::Range(0, 1000));
+    app.add_option("--boards", boards, "--create: most boards (0 = default)")
+        ->check(CLI::Range(0, 99));
+    app.add_option("--shot-clock", shot_clock_s,
+                   "--create: seconds per stroke (0 = off, -1 = server default)")
+        ->check(CLI::Range(-1.0, 600.0));
+    app.add_option("--strategy", strategy_options.name, "Strategy")
+        ->check(CLI::IsMember(bots::strategy_names()));
+    app.add_option("--script", script_path, "Shots for --strategy scripted (JSON lines)");
+    app.add_option("--seed", strategy_options.seed, "Random seed");
+    app.add_option("--games", config.games, "Games to play before leaving")
+        ->check(CLI::Range(1, 100000));
+    app.add_option("--think-ms", think_ms, "Time budget per decision, ms")
+        ->check(CLI::Range(0, 60000));
+    app.add_option("--timeout", timeout_s, "Give up after this many seconds")
+        ->check(CLI::Range(0.1, 864000.0));
+    app.add_option("--log-level", log_level, "trace, debug, info, warn, error, off")
+        ->check(CLI::IsMember({"trace", "debug", "info", "warn", "error", "off"}));
+    CLI11_PARSE(app, argc, argv);
+    spdlog::set_level(spdlog::level::from_str(log_level));
+
+    proto::RuleSet rule_set = proto::RuleSet::Icf;
+    proto::parse(rule_set_name, rule_set);
+    if (!join_code.empty()) {
+        config.mode = bots::JoinMode::Join;
+        config.code = join_code;
+    } else if (!spectate_code.empty()) {
+        config.mode = bots::JoinMode::Spectate;
+        config.code = spectate_code;
+    } else if (create) {
+        config.mode = bots::JoinMode::Create;
+    } else {
+        config.mode = bots::JoinMode::Quick;
+    }
+    config.create.rule_set = rule_set;
+    config.quick_rule_set = rule_set;
+    if (target_points > 0) {
+        config.create.options.target_points = target_points;
+    }
+    if (boards > 0) {
+        config.create.options.boards = boards;
+    }
+    if (shot_clock_s >= 0.0) {
+        config.create.options.shot_clock_s = shot_clock_s;
+    }
+    config.budget.time = std::chrono::milliseconds(think_ms);
+
+    if (!script_path.empty()) {
+        std::string text;
+        if (auto error = read_file(script_path, text)) {
+            std::cerr << *error << "\n";
+            return 2;
+        }
+        auto parsed = bots::parse_script(text);
+        if (auto* error = std::get_if<std::string>(&parsed)) {
+            std::cerr << script_path << ": " << *error << "\n";
+            return 2;
+        }
+        strategy_options.script = std::get<std::vector<Shot>>(std::move(parsed));
+    }
+    auto made = bots::make_strategy(strategy_options);
+    if (auto* error = std::get_if<std::string>(&made)) {
+        std::cerr << *error << "\n";
+        return 2;
+    }
+    auto strategy = std::get<std::unique_ptr<bots::Strategy>>(std::move(made));
+
+    bots::BotRunner runner(config, *strategy);
+    std::string announced_room;
+    runner.on_message = [&announced_room](const proto::ServerMessage& message) {
+        if (const auto* room = std::get_if<proto::RoomState>(&message)) {
+            if (room->code != announced_room) { // for scripts: the code others join with
+                announced_room = room->code;
+                std::fprintf(stderr, "room %s\n", room->code.c_str());
+                std::fflush(stderr);
+            }
+            spdlog::info("room {} seat {} phase {} turn {}", room->code, room->you,
+                         proto::to_string(room->phase), room->turn);
+        } else if (const auto* error = std::get_if<proto::Error>(&message)) {
+            spdlog::warn("error {}: {}", error->code, error->message);
+        }
+    };
+    runner.start();
+    runner.run_until_done(std::chrono::milliseconds(static_cast<std::int64_t>(timeout_s * 1000.0)));
+    const auto& summary = runner.summary();
+    std::cout << summary_json(summary, strategy->name()).dump() << std::endl;
+    return summary.finished && summary.failure.empty() ? 0 : 1;
+}

@@ -1,0 +1,348 @@
+#include "load_client.hpp"
+
+#include "carrom/bots/match_view.hpp"
+#include "carrom/proto/codec.hpp"
+
+#include <boost/asio/post.hpp>
+#include <boost/asio/steady_timer.hpp>
+#include <boost/beast/core/flat_buffer.hpp>
+#include <boost/beast/core/tcp_stream.hpp>
+#include <boost/beast/websocket/stream.hpp>
+
+#include <algorithm>
+#include <charconv>
+#include <deque>
+
+namespace carrom::load {
+
+namespace asio = boost::asio;
+namespace beast = boost::beast;
+namespace websocket = beast::websocket;
+using tcp = asio::ip::tcp;
+
+namespace {
+
+// "t" of a snapshot's text, without decoding the rest (0 when absent).
+double snapshot_time_s(std::string_view text) {
+    const auto at = text.find("\"t\":");
+    if (at == std::string_view::npos) {
+        return 0.0;
+    }
+    double t = 0.0;
+    const char* begin = text.data() + at + 4;
+    std::from_chars(begin, text.data() + text.size(), t);
+    return t;
+}
+
+bool is_snapshot(std::string_view text) {
+    return text.find("\"type\":\"snapshot\"") != std::string_view::npos;
+}
+
+bool is_keyframe(std::string_view text) {
+    return text.find("\"keyframe\":true") != std::string_view::npos;
+}
+
+} // namespace
+
+class MatchPair::Player : public std::enable_shared_from_this<MatchPair::Player> {
+public:
+    Player(asio::io_context& ioc, MatchPair& pair, const LoadOptions& options, LoadStats& stats,
+           bool creator, std::uint64_t seed)
+        : pair_(pair), options_(options), stats_(stats), creator_(creator), ws_(ioc), think_(ioc),
+          strategy_(seed) {}
+
+    void start(std::string code) {
+        code_ = std::move(code);
+        beast::get_lowest_layer(ws_).expires_after(std::chrono::seconds(30));
+        beast::get_lowest_layer(ws_).async_connect(
+            options_.server,
+            [self = shared_from_this()](beast::error_code ec) { self->on_connect(ec); });
+    }
+
+    bool held() const { return open_ && seated_ && !broken_; }
+
+    void close() {
+        if (!open_ || closing_) {
+            return;
+        }
+        closing_ = true;
+        think_.cancel();
+        send(proto::encode(proto::Leave{}));
+    }
+
+private:
+    void on_connect(beast::error_code ec) {
+        if (ec) {
+            return fail();
+        }
+        beast::get_lowest_layer(ws_).expires_never();
+        ws_.set_option(websocket::stream_base::timeout::suggested(beast::role_type::client));
+        ws_.read_message_max(proto::kMaxServerMessageBytes);
+        ws_.async_handshake("127.0.0.1", "/", [self = shared_from_this()](beast::error_code e) {
+            self->on_handshake(e);
+        });
+    }
+
+    void on_handshake(beast::error_code ec) {
+        if (ec) {
+            return fail();
+        }
+        open_ = true;
+        ws_.text(true);
+        send(proto::encode(
+            proto::Hello{proto::kProtocolVersion, creator_ ? "load-a" : "load-b", std::nullopt}));
+        read();
+    }
+
+    void read() {
+        ws_.async_read(buffer_, [self = shared_from_this()](beast::error_code ec, std::size_t) {
+            self->on_read(ec);
+        });
+    }
+
+    void on_read(beast::error_code ec) {
+        if (ec) {
+            if (!closing_) {
+                fail();
+            }
+            open_ = false;
+            return;
+        }
+        const auto data = buffer_.cdata();
+        const std::string_view text(static_cast<const char*>(data.data()), data.size());
+        on_text(text);
+        buffer_.consume(buffer_.size());
+        read();
+    }
+
+    void on_text(std::string_view text) {
+        const auto now = Clock::now();
+        ++stats_.messages;
+        stats_.bytes += static_cast<std::int64_t>(text.size());
+        if (moving_) {
+            moving_bytes_ += static_cast<double>(text.size());
+        }
+        if (is_snapshot(text)) {
+            return on_snapshot(text, now);
+        }
+        auto decoded = proto::decode_server(text);
+        if (!decoded.ok()) {
+            return;
+        }
+        std::visit([&](const auto& m) { on_message(m, now); }, *decoded.message);
+    }
+
+    void on_snapshot(std::string_view text, Clock::time_point now) {
+        ++stats_.snapshots;
+        if (is_keyframe(text) || pair_.shot_turn < 0) {
+            return;
+        }
+        if (!moving_) {
+            moving_ = true;
+            moving_since_ = now;
+            moving_bytes_ = static_cast<double>(text.size());
+        }
+        // Receive time minus the snapshot's match time: a constant per shot plus this
+        // snapshot's delivery delay. end_moving() subtracts the shot's smallest value.
+        const double since_shot_ms =
+            std::chrono::duration<double, std::milli>(now - pair_.shot_sent_at).count();
+        shot_offsets_ms_.push_back(since_shot_ms - snapshot_time_s(text) * 1000.0);
+    }
+
+    void end_moving(Clock::time_point now) {
+        if (!moving_) {
+            return;
+        }
+        moving_ = false;
+        if (stats_.measuring && !shot_offsets_ms_.empty()) {
+            const double fastest =
+                *std::min_element(shot_offsets_ms_.begin(), shot_offsets_ms_.end());
+            for (const double offset : shot_offsets_ms_) {
+                stats_.lag_ms.push_back(offset - fastest);
+            }
+        }
+        shot_offsets_ms_.clear();
+        if (stats_.measuring) {
+            stats_.moving_bytes += moving_bytes_;
+            stats_.moving_seconds += std::chrono::duration<double>(now - moving_since_).count();
+        }
+    }
+
+    void on_message(const proto::Welcome&, Clock::time_point) {
+        if (creator_) {
+            proto::CreateRoom create;
+            create.rule_set = options_.rule_set;
+            create.options.shot_clock_s = 0.0;
+            create.options.target_points = 1000; // the game lasts the whole run
+            create.options.boards = 99;
+            send(proto::encode(create));
+        } else {
+            send(proto::encode(proto::JoinRoom{code_, proto::Role::Player}));
+        }
+    }
+
+    void on_message(const proto::RoomState& room, Clock::time_point) {
+        if (creator_ && code_.empty()) {
+            code_ = room.code;
+            pair_.on_room_code(room.code);
+        }
+        seated_ = room.you >= 0 && room.seats.size() == 2 && room.seats[0].occupied &&
+                  room.seats[1].occupied;
+        room_ = room;
+        maybe_shoot();
+    }
+
+    void on_message(const proto::Event& event, Clock::time_point now) {
+        if (const auto* turn = std::get_if<proto::TurnEvent>(&event)) {
+            end_moving(now);
+            if (room_) {
+                room_->turn = turn->turn;
+                room_->to_play = turn->seat;
+                room_->phase = proto::Phase::Aiming;
+            }
+            maybe_shoot();
+        } else if (std::holds_alternative<proto::GameEndEvent>(event)) {
+            end_moving(now);
+            send(proto::encode(proto::Rematch{}));
+        }
+    }
+
+    void on_message(const proto::ShotResult& result, Clock::time_point now) {
+        end_moving(now);
+        if (room_ && result.seat == room_->you && stats_.measuring) {
+            ++stats_.shots;
+        }
+    }
+
+    void on_message(const proto::Error& error, Clock::time_point) {
+        ++stats_.errors;
+        if (error.code == proto::code::kIllegalPlacement ||
+            error.code == proto::code::kIllegalShot) {
+            last_turn_ = -1;
+            maybe_shoot();
+        }
+    }
+
+    void on_message(const proto::Snapshot&, Clock::time_point) {}
+    void on_message(const proto::Pong&, Clock::time_point) {}
+
+    void maybe_shoot() {
+        if (!room_ || closing_ || room_->you < 0 || room_->phase != proto::Phase::Aiming ||
+            room_->to_play != room_->you || room_->turn == last_turn_) {
+            return;
+        }
+        last_turn_ = room_->turn;
+        const int turn = room_->turn;
+        think_.expires_after(options_.think);
+        think_.async_wait([self = shared_from_this(), turn](beast::error_code ec) {
+            if (!ec) {
+                self->shoot(turn);
+            }
+        });
+    }
+
+    void shoot(int turn) {
+        if (!room_ || closing_) {
+            return;
+        }
+        const auto state = bots::match_state_from(*room_);
+        const Shot shot = strategy_.choose_shot(state, room_->you, bots::DecisionBudget{});
+        pair_.shot_sent_at = Clock::now();
+        pair_.shot_turn = turn;
+        send(proto::encode(proto::Shoot{turn, shot.x_px, shot.angle_rad, shot.power}));
+    }
+
+    void send(std::string text) {
+        if (!open_) {
+            return;
+        }
+        outbox_.push_back(std::move(text));
+        if (!writing_) {
+            write_next();
+        }
+    }
+
+    void write_next() {
+        if (outbox_.empty() || !open_) {
+            writing_ = false;
+            if (closing_ && open_ && !close_sent_) {
+                close_sent_ = true;
+                ws_.async_close(websocket::close_code::normal,
+                                [self = shared_from_this()](beast::error_code) {});
+            }
+            return;
+        }
+        writing_ = true;
+        ws_.async_write(asio::buffer(outbox_.front()),
+                        [self = shared_from_this()](beast::error_code ec, std::size_t) {
+                            self->outbox_.pop_front();
+                            if (ec) {
+                                self->writing_ = false;
+                                return;
+                            }
+                            self->write_next();
+                        });
+    }
+
+    void fail() {
+        if (!broken_) {
+            broken_ = true;
+            ++stats_.failures;
+        }
+        open_ = false;
+    }
+
+    MatchPair& pair_;
+    LoadOptions options_;
+    LoadStats& stats_;
+    bool creator_;
+    websocket::stream<beast::tcp_stream> ws_;
+    asio::steady_timer think_;
+    beast::flat_buffer buffer_;
+    std::deque<std::string> outbox_;
+    bool writing_ = false;
+    bool open_ = false;
+    bool seated_ = false;
+    bool broken_ = false;
+    bool closing_ = false;
+    bool close_sent_ = false;
+    std::string code_;
+    std::optional<proto::RoomState> room_;
+    int last_turn_ = -1;
+    bots::RandomStrategy strategy_;
+    bool moving_ = false;
+    Clock::time_point moving_since_{};
+    double moving_bytes_ = 0.0;
+    std::vector<double> shot_offsets_ms_; // this shot's (receive - match time), ms
+};
+
+MatchPair::MatchPair(asio::io_context& ioc, const LoadOptions& options, LoadStats& stats,
+                     std::uint64_t seed)
+    : ioc_(ioc), options_(options), stats_(stats), seed_(seed) {}
+
+MatchPair::~MatchPair() = default;
+
+void MatchPair::start() {
+    creator_ = std::make_shared<Player>(ioc_, *this, options_, stats_, true, seed_ * 2 + 1);
+    creator_->start("");
+}
+
+void MatchPair::on_room_code(const std::string& code) {
+    joiner_ = std::make_shared<Player>(ioc_, *this, options_, stats_, false, seed_ * 2 + 2);
+    joiner_->start(code);
+}
+
+bool MatchPair::held() const {
+    return creator_ && joiner_ && creator_->held() && joiner_->held();
+}
+
+void MatchPair::close() {
+    if (creator_) {
+        creator_->close();
+    }
+    if (joiner_) {
+        joiner_->close();
+    }
+}
+
+} // namespace carrom::load

@@ -1,0 +1,71 @@
+#pragma once
+// carrom-load's clients: many light WebSocket players on one io_context (one thread), so that
+// thousands of them cost the machine little next to the server being measured. Snapshots are
+// not decoded (only their "t" is read); everything else goes through proto::decode_server.
+
+#include "carrom/bots/random_strategy.hpp"
+#include "carrom/proto/client_messages.hpp"
+
+#include <boost/asio/io_context.hpp>
+#include <boost/asio/ip/tcp.hpp>
+
+#include <chrono>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace carrom::load {
+
+using Clock = std::chrono::steady_clock;
+
+// What all clients measure, summed (one thread: no locking).
+struct LoadStats {
+    std::int64_t messages = 0; // received, every kind
+    std::int64_t bytes = 0;    // received payload bytes
+    std::int64_t snapshots = 0;
+    std::int64_t shots = 0;    // shot_result received by the shooter
+    std::int64_t errors = 0;   // error messages received
+    std::int64_t failures = 0; // connections that broke or never opened
+    // Per delta snapshot: its delivery delay beyond the fastest snapshot of the same shot, ms
+    // (receive time - match time t, minus the smallest such value of the shot).
+    std::vector<double> lag_ms;
+    double moving_bytes = 0.0;   // bytes received while the client's board moved
+    double moving_seconds = 0.0; // summed over clients
+    bool measuring = false;      // lags and bytes counted only inside the window
+};
+
+struct LoadOptions {
+    boost::asio::ip::tcp::endpoint server;
+    proto::RuleSet rule_set = proto::RuleSet::Freestyle;
+    std::chrono::milliseconds think{0}; // delay before each shot
+};
+
+// Two players of one room. The creator makes the room; the joiner starts once it has a code.
+class MatchPair {
+public:
+    MatchPair(boost::asio::io_context& ioc, const LoadOptions& options, LoadStats& stats,
+              std::uint64_t seed);
+    ~MatchPair();
+    void start();
+    // Both seated and connected, the game going.
+    bool held() const;
+    void close();
+
+    // Shared between the two players: when the current shot was sent (for lag).
+    Clock::time_point shot_sent_at{};
+    int shot_turn = -1;
+
+    void on_room_code(const std::string& code); // from the creator
+    class Player;
+
+private:
+    boost::asio::io_context& ioc_;
+    LoadOptions options_;
+    LoadStats& stats_;
+    std::shared_ptr<Player> creator_;
+    std::shared_ptr<Player> joiner_;
+    std::uint64_t seed_;
+};
+
+} // namespace carrom::load

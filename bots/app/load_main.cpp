@@ -1,0 +1,430 @@
+// carrom-load: drives N concurrent two-player matches against one carrom-server on 127.0.0.1
+// and measures what docs/server-load.md reports: matches held, messages per second, snapshot lag
+// p50/p99, bytes per client per second while pieces move, server memory per match and CPU.
+// Bounded: at most 5,000 matches and 600 s of measurement; 127.0.0.1 only.
+#include "load_client.hpp"
+
+#include <CLI/CLI.hpp>
+#include <boost/asio/connect.hpp>
+#include <boost/asio/read.hpp>
+#include <boost/asio/write.hpp>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cerrno>
+#include <csignal>
+#include <cstdio>
+#include <fstream>
+#include <future>
+#include <iostream>
+#include <map>
+#include <sstream>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <thread>
+#include <unistd.h>
+
+namespace {
+
+using namespace carrom;
+namespace asio = boost::asio;
+using tcp = asio::ip::tcp;
+
+// --- the server process ---------------------------------------------------------------------
+
+struct SpawnedServer {
+    pid_t pid = -1;
+    std::uint16_t port = 0;
+};
+
+// Starts the server on 127.0.0.1 with an ephemeral port and reads its "listening on" line.
+std::optional<SpawnedServer> spawn_server(const std::string& binary,
+                                          const std::vector<std::string>& extra) {
+    int out[2];
+    if (pipe(out) != 0) {
+        return std::nullopt;
+    }
+    const pid_t pid = fork();
+    if (pid < 0) {
+        return std::nullopt;
+    }
+    if (pid == 0) {
+        dup2(out[1], STDOUT_FILENO);
+        close(out[0]);
+        close(out[1]);
+        std::vector<std::string> args = {binary, "--host",      "127.0.0.1", "--port",
+                                         "0",    "--log-level", "warn"};
+        args.insert(args.end(), extra.begin(), extra.end());
+        std::vector<char*> argv;
+        for (auto& a : args) {
+            argv.push_back(a.data());
+        }
+        argv.push_back(nullptr);
+        execv(binary.c_str(), argv.data());
+        _exit(127);
+    }
+    close(out[1]);
+    FILE* in = fdopen(out[0], "r");
+    char line[256];
+    SpawnedServer server{pid, 0};
+    while (in && std::fgets(line, sizeof line, in)) {
+        unsigned port = 0;
+        if (std::sscanf(line, "listening on 127.0.0.1:%u", &port) == 1) {
+            server.port = static_cast<std::uint16_t>(port);
+            break;
+        }
+    }
+    // Keep draining its stdout so the server never blocks on a full pipe.
+    std::thread([in] {
+        char sink[256];
+        while (in && std::fgets(sink, sizeof sink, in)) {
+        }
+        if (in) {
+            std::fclose(in);
+        }
+    }).detach();
+    if (server.port == 0) {
+        kill(pid, SIGKILL);
+        waitpid(pid, nullptr, 0);
+        return std::nullopt;
+    }
+    return server;
+}
+
+// VmRSS of a process, KiB (0 if unreadable).
+long rss_kib(pid_t pid) {
+    std::ifstream status("/proc/" + std::to_string(pid) + "/status");
+    std::string key;
+    while (status >> key) {
+        if (key == "VmRSS:") {
+            long value = 0;
+            status >> value;
+            return value;
+        }
+        status.ignore(1 << 12, '\n');
+    }
+    return 0;
+}
+
+// utime + stime of a process, seconds.
+double cpu_seconds(pid_t pid) {
+    std::ifstream stat("/proc/" + std::to_string(pid) + "/stat");
+    std::string text((std::istreambuf_iterator<char>(stat)), std::istreambuf_iterator<char>());
+    const auto close = text.rfind(')');
+    if (close == std::string::npos) {
+        return 0.0;
+    }
+    std::istringstream fields(text.substr(close + 2));
+    std::string field;
+    double ticks = 0.0;
+    for (int i = 3; i <= 15 && fields >> field; ++i) {
+        if (i == 14 || i == 15) {
+            ticks += std::stod(field);
+        }
+    }
+    return ticks / static_cast<double>(sysconf(_SC_CLK_TCK));
+}
+
+// GET /metrics as name -> value (histogram buckets keep their label in the name).
+std::map<std::string, double> fetch_metrics(std::uint16_t port) {
+    std::map<std::string, double> values;
+    try {
+        asio::io_context ioc;
+        tcp::socket socket(ioc);
+        socket.connect({asio::ip::make_address("127.0.0.1"), port});
+        const std::string request =
+            "GET /metrics HTTP/1.1\r\nHost: 127.0.0.1\r\nConnection: close\r\n\r\n";
+        asio::write(socket, asio::buffer(request));
+        std::string response;
+        boost::system::error_code ec;
+        asio::read(socket, asio::dynamic_buffer(response), ec);
+        std::istringstream lines(response.substr(response.find("\r\n\r\n") + 4));
+        std::string line;
+        while (std::getline(lines, line)) {
+            if (line.empty() || line[0] == '#') {
+                continue;
+            }
+            const auto space = line.rfind(' ');
+            if (space != std::string::npos) {
+                values[line.substr(0, space)] = std::stod(line.substr(space + 1));
+            }
+        }
+    } catch (const std::exception&) {
+    }
+    return values;
+}
+
+// The server's own snapshot send lag: the bucket bound holding quantile q of the increase.
+std::string server_lag_quantile(const std::map<std::string, double>& before,
+                                const std::map<std::string, double>& after, double q) {
+    std::vector<std::pair<double, double>> buckets; // (bound s, count increase)
+    double total = 0.0;
+    for (const auto& [name, value] : after) {
+        const std::string prefix = "carrom_snapshot_lag_seconds_bucket{le=\"";
+        if (name.rfind(prefix, 0) != 0) {
+            continue;
+        }
+        const std::string label = name.substr(prefix.size(), name.size() - prefix.size() - 2);
+        const double bound = label == "+Inf" ? 1e9 : std::stod(label);
+        const auto it = before.find(name);
+        const double increase = value - (it == before.end() ? 0.0 : it->second);
+        buckets.emplace_back(bound, increase);
+        total = std::max(total, increase);
+    }
+    std::sort(buckets.begin(), buckets.end());
+    for (const auto& [bound, count] : buckets) { // cumulative buckets
+        if (total > 0.0 && count >= q * total) {
+            return bound >= 1e9 ? "> 100 ms" : "<= " + std::to_string(bound * 1000.0) + " ms";
+        }
+    }
+    return "n/a";
+}
+
+double delta(const std::map<std::string, double>& before,
+             const std::map<std::string, double>& after, const std::string& name) {
+    const auto a = after.find(name);
+    const auto b = before.find(name);
+    return (a == after.end() ? 0.0 : a->second) - (b == before.end() ? 0.0 : b->second);
+}
+
+double quantile(std::vector<double> values, double q) {
+    if (values.empty()) {
+        return 0.0;
+    }
+    const auto k = static_cast<std::size_t>(q * static_cast<double>(values.size() - 1));
+    std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(k), values.end());
+    return values[k];
+}
+
+template <class F> auto on_io(asio::io_context& ioc, F f) {
+    std::promise<decltype(f())> promise;
+    auto future = promise.get_future();
+    asio::post(ioc, [&] { promise.set_value(f()); });
+    return future.get();
+}
+
+double load_average() {
+    std::ifstream in("/proc/loadavg");
+    double value = 0.0;
+    in >> value;
+    return value;
+}
+
+void raise_fd_limit() {
+    rlimit limit{};
+    if (getrlimit(RLIMIT_NOFILE, &limit) == 0) {
+        limit.rlim_cur = limit.rlim_max;
+        setrlimit(RLIMIT_NOFILE, &limit);
+    }
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    std::string server_bin;
+    std::vector<std::string> server_args;
+    int port = 0;
+    int server_pid = 0;
+    int matches = 100;
+    double ramp_s = 5.0;
+    double warmup_s = 5.0;
+    double duration_s = 20.0;
+    int think_ms = 0;
+    std::string rule_set_name = "freestyle";
+    std::uint64_t seed = 1;
+    std::string json_out;
+    int client_threads = 2;
+
+    CLI::App app{"carrom-load: N concurrent bot matches against a carrom-server on 127.0.0.1"};
+    app.option_defaults()->always_capture_default();
+    auto* spawn = app.add_option("--server-bin", server_bin,
+                                 "Start this carrom-server (127.0.0.1, ephemeral port)");
+    app.add_option("--server-arg", server_args, "Extra argument for the started server")
+        ->needs(spawn);
+    auto* port_option =
+        app.add_option("--port", port, "Port of a running server on 127.0.0.1")->excludes(spawn);
+    app.add_option("--server-pid", server_pid, "Its process id (memory and CPU)")
+        ->needs(port_option);
+    app.add_option("--matches", matches, "Concurrent matches")->check(CLI::Range(1, 5000));
+    app.add_option("--ramp", ramp_s, "Seconds over which matches start")
+        ->check(CLI::Range(0.0, 120.0));
+    app.add_option("--warmup", warmup_s, "Seconds after the ramp before measuring")
+        ->check(CLI::Range(0.0, 120.0));
+    app.add_option("--duration", duration_s, "Seconds measured")->check(CLI::Range(1.0, 600.0));
+    app.add_option("--think-ms", think_ms,
+                   "Delay before each shot, ms (0: the board is nearly "
+                   "always moving)")
+        ->check(CLI::Range(0, 60000));
+    app.add_option("--rule-set", rule_set_name, "Rule set")
+        ->check(CLI::IsMember({"icf", "seed", "freestyle", "discpool"}));
+    app.add_option("--seed", seed, "Random seed of the players");
+    app.add_option("--client-threads", client_threads, "Threads for the clients")
+        ->check(CLI::Range(1, 16));
+    app.add_option("--json-out", json_out, "Also write the JSON result here");
+    CLI11_PARSE(app, argc, argv);
+    if (server_bin.empty() && port == 0) {
+        std::cerr << "Give --server-bin PATH, or --port PORT [--server-pid PID].\n";
+        return 2;
+    }
+
+    raise_fd_limit(); // inherited by a started server
+    pid_t pid = server_pid;
+    if (!server_bin.empty()) {
+        const auto spawned = spawn_server(server_bin, server_args);
+        if (!spawned) {
+            std::cerr << "Could not start " << server_bin << ".\n";
+            return 1;
+        }
+        pid = spawned->pid;
+        port = spawned->port;
+    }
+    const auto server_port = static_cast<std::uint16_t>(port);
+    std::this_thread::sleep_for(std::chrono::milliseconds(300));
+    const long rss_idle = pid > 0 ? rss_kib(pid) : 0;
+
+    load::LoadOptions options;
+    options.server = {asio::ip::make_address("127.0.0.1"), server_port};
+    proto::parse(rule_set_name, options.rule_set);
+    options.think = std::chrono::milliseconds(think_ms);
+    // Shards: each client thread runs its own io_context with its own matches and stats, so
+    // nothing is shared between threads.
+    struct Shard {
+        asio::io_context ioc{1};
+        load::LoadStats stats;
+        std::vector<std::unique_ptr<load::MatchPair>> pairs;
+        std::thread thread;
+    };
+    std::vector<std::unique_ptr<Shard>> shards;
+    for (int i = 0; i < client_threads; ++i) {
+        shards.push_back(std::make_unique<Shard>());
+    }
+    std::vector<asio::executor_work_guard<asio::io_context::executor_type>> guards;
+    for (auto& shard : shards) {
+        guards.push_back(asio::make_work_guard(shard->ioc));
+        shard->thread = std::thread([s = shard.get()] { s->ioc.run(); });
+    }
+
+    // Ramp: start the matches evenly over ramp_s.
+    const auto ramp_start = load::Clock::now();
+    for (int i = 0; i < matches; ++i) {
+        const auto at = ramp_start + std::chrono::duration_cast<load::Clock::duration>(
+                                         std::chrono::duration<double>(ramp_s * i / matches));
+        std::this_thread::sleep_until(at);
+        Shard& shard = *shards[static_cast<std::size_t>(i % client_threads)];
+        auto pair = std::make_unique<load::MatchPair>(
+            shard.ioc, options, shard.stats, seed * 100000 + static_cast<std::uint64_t>(i));
+        asio::post(shard.ioc, [&shard, p = std::move(pair)]() mutable {
+            p->start();
+            shard.pairs.push_back(std::move(p));
+        });
+    }
+    std::this_thread::sleep_for(std::chrono::duration<double>(warmup_s));
+
+    // Measure.
+    auto held_in = [](Shard& shard) {
+        return std::count_if(shard.pairs.begin(), shard.pairs.end(),
+                             [](const auto& p) { return p->held(); });
+    };
+    const auto metrics_before = fetch_metrics(server_port);
+    const double cpu_before = pid > 0 ? cpu_seconds(pid) : 0.0;
+    const double own_cpu_before = cpu_seconds(getpid());
+    std::int64_t held_before = 0;
+    for (auto& shard : shards) {
+        held_before += on_io(shard->ioc, [&] {
+            shard->stats.measuring = true;
+            return static_cast<std::int64_t>(held_in(*shard));
+        });
+    }
+    const auto start = load::Clock::now();
+    std::this_thread::sleep_for(std::chrono::duration<double>(duration_s));
+    const long rss_loaded = pid > 0 ? rss_kib(pid) : 0;
+    std::int64_t held = 0;
+    load::LoadStats measured;
+    for (auto& shard : shards) {
+        const auto [h, stats] = on_io(shard->ioc, [&] {
+            shard->stats.measuring = false;
+            return std::make_pair(static_cast<std::int64_t>(held_in(*shard)), shard->stats);
+        });
+        held += h;
+        measured.messages += stats.messages;
+        measured.bytes += stats.bytes;
+        measured.snapshots += stats.snapshots;
+        measured.shots += stats.shots;
+        measured.errors += stats.errors;
+        measured.failures += stats.failures;
+        measured.lag_ms.insert(measured.lag_ms.end(), stats.lag_ms.begin(), stats.lag_ms.end());
+        measured.moving_bytes += stats.moving_bytes;
+        measured.moving_seconds += stats.moving_seconds;
+    }
+    const double elapsed = std::chrono::duration<double>(load::Clock::now() - start).count();
+    const double cpu_after = pid > 0 ? cpu_seconds(pid) : 0.0;
+    const double own_cpu_after = cpu_seconds(getpid());
+    const auto metrics_after = fetch_metrics(server_port);
+
+    // Wind down: everyone leaves, then the server stops.
+    for (auto& shard : shards) {
+        asio::post(shard->ioc, [s = shard.get()] {
+            for (auto& p : s->pairs) {
+                p->close();
+            }
+        });
+    }
+    std::this_thread::sleep_for(std::chrono::seconds(1));
+    guards.clear();
+    for (auto& shard : shards) {
+        shard->ioc.stop();
+        shard->thread.join();
+    }
+    int server_exit = 0;
+    if (!server_bin.empty()) {
+        kill(pid, SIGTERM);
+        int status = 0;
+        waitpid(pid, &status, 0);
+        server_exit = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+    }
+
+    const double clients = 2.0 * static_cast<double>(matches);
+    nlohmann::json out = {
+        {"matches", matches},
+        {"rule_set", rule_set_name},
+        {"think_ms", think_ms},
+        {"client_threads", client_threads},
+        {"duration_s", elapsed},
+        {"held_at_start", held_before},
+        {"held_at_end", held},
+        {"client_failures", measured.failures},
+        {"errors_received", measured.errors},
+        {"shots", measured.shots},
+        {"shots_per_s", static_cast<double>(measured.shots) / elapsed},
+        {"client_messages_per_s", static_cast<double>(measured.messages) / elapsed},
+        {"server_messages_out_per_s",
+         delta(metrics_before, metrics_after, "carrom_messages_out_total") / elapsed},
+        {"server_messages_in_per_s",
+         delta(metrics_before, metrics_after, "carrom_messages_in_total") / elapsed},
+        {"snapshots_per_s", static_cast<double>(measured.snapshots) / elapsed},
+        {"snapshot_lag_ms_p50", quantile(measured.lag_ms, 0.50)},
+        {"snapshot_lag_ms_p99", quantile(measured.lag_ms, 0.99)},
+        {"snapshot_lag_ms_max", quantile(measured.lag_ms, 1.0)},
+        {"lag_samples", measured.lag_ms.size()},
+        {"server_send_lag_p50", server_lag_quantile(metrics_before, metrics_after, 0.50)},
+        {"server_send_lag_p99", server_lag_quantile(metrics_before, metrics_after, 0.99)},
+        {"snapshots_dropped",
+         delta(metrics_before, metrics_after, "carrom_snapshots_dropped_total")},
+        {"bytes_per_client_per_s_moving",
+         measured.moving_seconds > 0 ? measured.moving_bytes / measured.moving_seconds : 0.0},
+        {"bytes_per_client_per_s_overall", static_cast<double>(measured.bytes) / elapsed / clients},
+        {"server_rss_idle_kib", rss_idle},
+        {"server_rss_loaded_kib", rss_loaded},
+        {"server_kib_per_match",
+         matches > 0 ? static_cast<double>(rss_loaded - rss_idle) / matches : 0.0},
+        {"server_cpu_percent", 100.0 * (cpu_after - cpu_before) / elapsed},
+        {"client_cpu_percent", 100.0 * (own_cpu_after - own_cpu_before) / elapsed},
+        {"loadavg_1min", load_average()},
+        {"server_exit", server_exit},
+    };
+    std::cout << out.dump(2) << std::endl;
+    if (!json_out.empty()) {
+        std::ofstream(json_out) << out.dump(2) << "\n";
+    }
+    return measured.failures == 0 && held == matches ? 0 : 1;
+}

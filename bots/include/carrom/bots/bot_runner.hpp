@@ -1,0 +1,120 @@
+#pragma once
+// A headless player (or spectator) over a net::Connection: hello, then create a room, join one
+// by code or ask for a quick match; on its turn it asks its strategy for a shot and sends aim,
+// then shoot with the turn number; at game end it asks for a rematch until it has played
+// `games` games, then leaves. After a drop, resume() reconnects with the seat's token.
+//
+// Single-threaded: call step() (or run_until_done()) from one thread; the connection does the
+// I/O on its own thread.
+
+#include "carrom/bots/strategy.hpp"
+#include "carrom/net/connection.hpp"
+#include "carrom/proto/client_messages.hpp"
+#include "carrom/proto/server_messages.hpp"
+
+#include <chrono>
+#include <functional>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace carrom::bots {
+
+enum class JoinMode { Create, Join, Quick, Spectate };
+
+struct BotConfig {
+    std::string url = "ws://127.0.0.1:7777";
+    std::string name = "bot";
+    JoinMode mode = JoinMode::Quick;
+    proto::CreateRoom create;                            // JoinMode::Create
+    std::string code;                                    // JoinMode::Join and Spectate
+    proto::RuleSet quick_rule_set = proto::RuleSet::Icf; // JoinMode::Quick
+    int games = 1;         // games to see to the end before leaving (rematch in between)
+    DecisionBudget budget; // per shot
+    bool send_aim = true;  // send the striker position before each shot
+    int max_refusals = 20; // refused shots in a row before giving up
+    net::ConnectionOptions connection;
+};
+
+struct BotSummary {
+    std::string room_code;
+    int seat = -1; // -1: spectator or not seated
+    int games = 0; // games seen to the end
+    int shots = 0; // shots this bot sent and the server played
+    int wins = 0;
+    int losses = 0;
+    int draws = 0;
+    std::vector<int> scores; // at the last game end
+    std::string last_reason; // game_end reason of the last game
+    int snapshots = 0;
+    int keyframes = 0;
+    int seq_gaps = 0; // deltas whose seq did not follow the previous one
+    int resumes = 0;
+    int decode_errors = 0;
+    std::map<std::string, int> errors; // error codes received, with counts
+    std::string failure;               // set when the bot stopped before finishing: why
+    bool finished = false;             // played its games and left
+};
+
+class BotRunner {
+public:
+    // The strategy must outlive the runner.
+    BotRunner(BotConfig config, Strategy& strategy);
+    ~BotRunner();
+    BotRunner(const BotRunner&) = delete;
+    BotRunner& operator=(const BotRunner&) = delete;
+
+    // Opens the connection and sends hello.
+    void start();
+    // Waits up to `wait` for messages and handles them; returns done().
+    bool step(std::chrono::milliseconds wait);
+    // Steps until done or the timeout passes; returns done().
+    bool run_until_done(std::chrono::milliseconds timeout);
+    // Finished its games, or failed.
+    bool done() const { return summary_.finished || !summary_.failure.empty(); }
+
+    // Drops the connection without leaving (the seat is kept for the server's grace period).
+    void drop();
+    // Reconnects and sends hello with the resume token.
+    void resume();
+
+    // Called for every message received, before the runner reacts to it (tests, load tools).
+    std::function<void(const proto::ServerMessage&)> on_message;
+    // Makes the connection for start() and resume(); default: net::Connection::open(url).
+    std::function<std::unique_ptr<net::Connection>(const BotConfig&)> connect;
+
+    const BotSummary& summary() const { return summary_; }
+    const std::optional<proto::RoomState>& room() const { return room_; }
+    const std::string& resume_token() const { return token_; }
+    net::Connection* connection() { return connection_.get(); }
+
+private:
+    void handle(const proto::ServerMessage& message);
+    void on_welcome(const proto::Welcome& welcome);
+    void on_room_state(const proto::RoomState& room);
+    void on_snapshot(const proto::Snapshot& snapshot);
+    void on_event(const proto::Event& event);
+    void on_shot_result(const proto::ShotResult& result);
+    void on_error(const proto::Error& error);
+    void on_game_end(const proto::GameEndEvent& end);
+    void send_room_request();
+    void maybe_play();
+    void fail(std::string why);
+
+    BotConfig config_;
+    Strategy& strategy_;
+    std::unique_ptr<net::Connection> connection_;
+    std::string token_;
+    bool welcomed_ = false;
+    bool resuming_ = false;
+    bool dropped_ = false;
+    std::optional<proto::RoomState> room_;
+    int last_played_turn_ = -1; // turn number of the last shot sent in this game
+    int refusals_ = 0;          // refused shots in a row
+    std::int64_t last_seq_ = -1;
+    BotSummary summary_;
+};
+
+} // namespace carrom::bots

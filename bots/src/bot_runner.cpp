@@ -1,0 +1,251 @@
+#include "carrom/bots/bot_runner.hpp"
+
+#include "carrom/bots/match_view.hpp"
+
+#include <algorithm>
+
+namespace carrom::bots {
+
+namespace {
+
+template <class... F> struct Overloaded : F... { using F::operator()...; };
+template <class... F> Overloaded(F...) -> Overloaded<F...>;
+
+bool is_game_input_error(const std::string& code) {
+    return code == proto::code::kIllegalPlacement || code == proto::code::kIllegalShot ||
+           code == proto::code::kStaleTurn || code == proto::code::kNotYourTurn ||
+           code == proto::code::kInMotion || code == proto::code::kWrongPhase;
+}
+
+// Errors after which this bot cannot get where it was going.
+bool is_fatal_error(const std::string& code) {
+    return code == proto::code::kRoomNotFound || code == proto::code::kRoomFull ||
+           code == proto::code::kTooManyRooms || code == proto::code::kVersionMismatch ||
+           code == proto::code::kServerFull || code == proto::code::kAlreadyInRoom ||
+           code == proto::code::kUnsupported || code == proto::code::kReplaced ||
+           code == proto::code::kSpectator || code == proto::code::kShuttingDown;
+}
+
+} // namespace
+
+BotRunner::BotRunner(BotConfig config, Strategy& strategy)
+    : config_(std::move(config)), strategy_(strategy) {}
+
+BotRunner::~BotRunner() = default;
+
+void BotRunner::start() {
+    connection_ =
+        connect ? connect(config_) : net::Connection::open(config_.url, config_.connection);
+    connection_->send(
+        proto::Hello{proto::kProtocolVersion, config_.name,
+                     token_.empty() ? std::nullopt : std::optional<std::string>(token_)});
+}
+
+bool BotRunner::step(std::chrono::milliseconds wait) {
+    if (!connection_ || done()) {
+        return done();
+    }
+    connection_->wait(wait);
+    for (const auto& message : connection_->poll()) {
+        if (on_message) {
+            on_message(message);
+        }
+        handle(message);
+        if (done()) {
+            break;
+        }
+    }
+    summary_.decode_errors = connection_->decode_errors();
+    const auto status = connection_->status();
+    if (!done() && !dropped_ && status.state == net::ConnectionState::Closed) {
+        fail(status.detail);
+    }
+    return done();
+}
+
+bool BotRunner::run_until_done(std::chrono::milliseconds timeout) {
+    const auto deadline = std::chrono::steady_clock::now() + timeout;
+    while (!done()) {
+        const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
+            deadline - std::chrono::steady_clock::now());
+        if (left.count() <= 0) {
+            fail("Timed out after " + std::to_string(timeout.count()) + " ms.");
+            break;
+        }
+        step(std::min(left, std::chrono::milliseconds(100)));
+    }
+    return done();
+}
+
+void BotRunner::drop() {
+    dropped_ = true;
+    if (connection_) {
+        connection_->close();
+    }
+}
+
+void BotRunner::resume() {
+    dropped_ = false;
+    resuming_ = true;
+    welcomed_ = false;
+    ++summary_.resumes;
+    start();
+}
+
+void BotRunner::fail(std::string why) {
+    if (summary_.failure.empty() && !summary_.finished) {
+        summary_.failure = std::move(why);
+    }
+}
+
+void BotRunner::handle(const proto::ServerMessage& message) {
+    std::visit(Overloaded{
+                   [&](const proto::Welcome& m) { on_welcome(m); },
+                   [&](const proto::RoomState& m) { on_room_state(m); },
+                   [&](const proto::Snapshot& m) { on_snapshot(m); },
+                   [&](const proto::Event& m) { on_event(m); },
+                   [&](const proto::ShotResult& m) { on_shot_result(m); },
+                   [&](const proto::Error& m) { on_error(m); },
+                   [&](const proto::Pong&) {},
+               },
+               message);
+}
+
+void BotRunner::on_welcome(const proto::Welcome& welcome) {
+    const bool resumed = resuming_ && welcome.resume_token == token_;
+    token_ = welcome.resume_token;
+    welcomed_ = true;
+    if (resuming_ && !resumed) {
+        fail("The server did not give the seat back on resume.");
+        return;
+    }
+    resuming_ = false;
+    if (!resumed) {
+        send_room_request();
+    }
+}
+
+void BotRunner::send_room_request() {
+    switch (config_.mode) {
+    case JoinMode::Create:
+        connection_->send(config_.create);
+        break;
+    case JoinMode::Join:
+        connection_->send(proto::JoinRoom{config_.code, proto::Role::Player});
+        break;
+    case JoinMode::Spectate:
+        connection_->send(proto::JoinRoom{config_.code, proto::Role::Spectator});
+        break;
+    case JoinMode::Quick:
+        connection_->send(proto::QuickMatch{config_.quick_rule_set});
+        break;
+    }
+}
+
+void BotRunner::on_room_state(const proto::RoomState& room) {
+    room_ = room;
+    summary_.room_code = room.code;
+    summary_.seat = room.you;
+    maybe_play();
+}
+
+void BotRunner::on_snapshot(const proto::Snapshot& snapshot) {
+    ++summary_.snapshots;
+    if (snapshot.keyframe) {
+        ++summary_.keyframes;
+    } else if (last_seq_ >= 0 && snapshot.seq != last_seq_ + 1) {
+        ++summary_.seq_gaps;
+    }
+    last_seq_ = snapshot.seq;
+}
+
+void BotRunner::on_event(const proto::Event& event) {
+    if (const auto* turn = std::get_if<proto::TurnEvent>(&event)) {
+        if (room_) {
+            room_->turn = turn->turn;
+            room_->to_play = turn->seat;
+            room_->phase = proto::Phase::Aiming;
+        }
+        maybe_play();
+    } else if (const auto* end = std::get_if<proto::GameEndEvent>(&event)) {
+        on_game_end(*end);
+    }
+}
+
+void BotRunner::on_shot_result(const proto::ShotResult& result) {
+    if (room_ && result.seat == room_->you) {
+        ++summary_.shots;
+        refusals_ = 0;
+    }
+}
+
+void BotRunner::on_error(const proto::Error& error) {
+    ++summary_.errors[error.code];
+    if (error.code == proto::code::kBadToken && resuming_) {
+        fail("The server refused the resume token: " + error.message);
+        return;
+    }
+    if (is_fatal_error(error.code)) {
+        fail("The server said " + error.code + ": " + error.message);
+        return;
+    }
+    if (!is_game_input_error(error.code)) {
+        return;
+    }
+    if (++refusals_ > config_.max_refusals) {
+        fail("Too many refused shots in a row; the last: " + error.message);
+        return;
+    }
+    strategy_.shot_refused();
+    if (error.code == proto::code::kIllegalPlacement || error.code == proto::code::kIllegalShot) {
+        last_played_turn_ = -1; // same board, same turn: choose again now
+        maybe_play();
+    }
+}
+
+void BotRunner::on_game_end(const proto::GameEndEvent& end) {
+    ++summary_.games;
+    summary_.scores = end.scores;
+    summary_.last_reason = end.reason;
+    const int seat = room_ ? room_->you : -1;
+    if (seat >= 0) {
+        if (end.winner < 0) {
+            ++summary_.draws;
+        } else if (end.winner == seat) {
+            ++summary_.wins;
+        } else {
+            ++summary_.losses;
+        }
+    }
+    last_played_turn_ = -1;
+    last_seq_ = -1;
+    if (room_) {
+        room_->phase = proto::Phase::GameOver;
+    }
+    const bool seat_lost = end.reason == "forfeit" || end.reason == "left";
+    if (summary_.games < config_.games && !seat_lost) {
+        if (seat >= 0) {
+            connection_->send(proto::Rematch{});
+        }
+        return;
+    }
+    connection_->send(proto::Leave{});
+    summary_.finished = true;
+    connection_->close();
+}
+
+void BotRunner::maybe_play() {
+    if (!room_ || done() || room_->you < 0 || room_->phase != proto::Phase::Aiming ||
+        room_->to_play != room_->you || room_->turn == last_played_turn_) {
+        return;
+    }
+    const rules::MatchState state = match_state_from(*room_);
+    const Shot shot = strategy_.choose_shot(state, room_->you, config_.budget);
+    last_played_turn_ = room_->turn;
+    if (config_.send_aim) {
+        connection_->send(proto::Aim{room_->turn, shot.x_px});
+    }
+    connection_->send(proto::Shoot{room_->turn, shot.x_px, shot.angle_rad, shot.power});
+}
+
+} // namespace carrom::bots

@@ -1,0 +1,36 @@
+#include "carrom/bots/random_strategy.hpp"
+#include "carrom/bots/sampling_strategy.hpp"
+#include "carrom/bots/scripted_strategy.hpp"
+
+namespace carrom::bots {
+
+namespace {
+constexpr int kSamplingCandidates = 200; // per decision (about 2 ms on one core)
+} // namespace
+
+std::vector<std::string> strategy_names() {
+    return {"random", "scripted", "sampling"};
+}
+
+std::variant<std::unique_ptr<Strategy>, std::string> make_strategy(const StrategyOptions& options) {
+    if (options.name == "random") {
+        return std::unique_ptr<Strategy>(std::make_unique<RandomStrategy>(options.seed));
+    }
+    if (options.name == "sampling") {
+        return std::unique_ptr<Strategy>(
+            std::make_unique<SamplingStrategy>(options.seed, kSamplingCandidates));
+    }
+    if (options.name == "scripted") {
+        if (options.script.empty()) {
+            return std::string("The scripted strategy needs a script with at least one shot.");
+        }
+        return std::unique_ptr<Strategy>(std::make_unique<ScriptedStrategy>(options.script));
+    }
+    std::string known;
+    for (const auto& name : strategy_names()) {
+        known += (known.empty() ? "" : ", ") + name;
+    }
+    return "Unknown strategy '" + options.name + "' (known: " + known + ").";
+}
+
+} // namespace carrom::bots

@@ -1,0 +1,30 @@
+#pragma once
+// What a screenshot shows, as JSON written next to the PNG: the room, the turn and phase, the
+// window layout and every drawn piece in board px and in window px. Tests compare it with what
+// the server reported and with the pixels of the PNG.
+
+#include "carrom/client/interpolation_buffer.hpp"
+#include "carrom/client/match_model.hpp"
+#include "carrom/client/screen_mapping.hpp"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace carrom::client {
+
+struct ReportContext {
+    double window_w = 0.0; // window px
+    double window_h = 0.0;
+    int shots_seen = 0;          // shot results received so far
+    std::optional<Rect> overlay; // window px covered by messages drawn over the board
+};
+
+// One JSON object (one line): {"room", "you", "turn", "phase", "flipped", "window" {w, h},
+// "board" {x, y, side} (window px), "shots_seen", "scores" [per seat], "bodies" [{"id", "kind",
+// "x", "y" (board px), "screen_x", "screen_y" (window px), "scale", "alpha"}] in drawing order
+// (id -1: the striker being placed), "overlay" {x, y, w, h} or null}.
+std::string board_report_json(const MatchView& view, const std::vector<RenderedBody>& bodies,
+                              const ScreenMapping& mapping, const ReportContext& context);
+
+} // namespace carrom::client

@@ -1,0 +1,49 @@
+#include "carrom/client/board_report.hpp"
+
+#include "carrom/proto/types.hpp"
+
+#include <nlohmann/json.hpp>
+
+namespace carrom::client {
+
+std::string board_report_json(const MatchView& view, const std::vector<RenderedBody>& bodies,
+                              const ScreenMapping& mapping, const ReportContext& context) {
+    nlohmann::json j;
+    j["room"] = view.code;
+    j["you"] = view.you;
+    j["turn"] = view.turn;
+    j["phase"] = std::string(proto::to_string(view.phase));
+    j["flipped"] = mapping.flipped;
+    j["window"] = {{"w", context.window_w}, {"h", context.window_h}};
+    j["board"] = {{"x", mapping.origin_x},
+                  {"y", mapping.origin_y},
+                  {"side", mapping.length_to_screen(mapping.board_size_px)}};
+    j["shots_seen"] = context.shots_seen;
+    nlohmann::json scores = nlohmann::json::array();
+    for (const SeatView& s : view.seats) {
+        scores.push_back(s.score);
+    }
+    j["scores"] = scores;
+    nlohmann::json list = nlohmann::json::array();
+    for (const RenderedBody& b : bodies) {
+        const Vec2 s = mapping.to_screen(b.pos_px);
+        list.push_back({{"id", b.id},
+                        {"kind", std::string(proto::body_kind_name(b.kind))},
+                        {"x", b.pos_px.x},
+                        {"y", b.pos_px.y},
+                        {"screen_x", s.x},
+                        {"screen_y", s.y},
+                        {"scale", b.scale},
+                        {"alpha", b.alpha}});
+    }
+    j["bodies"] = list;
+    if (context.overlay) {
+        const Rect& o = *context.overlay;
+        j["overlay"] = {{"x", o.x}, {"y", o.y}, {"w", o.w}, {"h", o.h}};
+    } else {
+        j["overlay"] = nullptr;
+    }
+    return j.dump();
+}
+
+} // namespace carrom::client

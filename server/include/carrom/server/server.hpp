@@ -1,0 +1,41 @@
+#pragma once
+// The network server: a WebSocket endpoint and plain HTTP (GET /healthz, GET /metrics) on one
+// port, several I/O threads, one strand per room and per connection. No Boost in this header.
+
+#include "carrom/server/bot_seat.hpp"
+#include "carrom/server/metrics.hpp"
+#include "carrom/server/settings.hpp"
+
+#include <cstdint>
+#include <memory>
+
+namespace carrom::server {
+
+class Server {
+public:
+    // bots: makes server-side bot brains; empty = create_room with a bot is "unsupported".
+    explicit Server(ServerSettings settings, BotFactory bots = {});
+    ~Server(); // stops and joins the threads
+    Server(const Server&) = delete;
+    Server& operator=(const Server&) = delete;
+
+    // Binds and listens; returns the bound port (the ephemeral one for port 0). Throws
+    // std::runtime_error when the address cannot be bound.
+    std::uint16_t listen();
+    // Runs the I/O threads in the background (settings.threads of them).
+    void start();
+    // Graceful stop: stop accepting, send "shutting_down" and close every connection (1001);
+    // returns once all connections closed or shutdown_grace_s passed, and the threads ended.
+    void shutdown();
+    // Blocks until SIGINT or SIGTERM, then shutdown().
+    void run_until_signal();
+
+    const Metrics& metrics() const;
+    const ServerSettings& settings() const;
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+} // namespace carrom::server

@@ -1,0 +1,80 @@
+// carrom-server: the authoritative game server. Flags fall back to CARROM_* environment
+// variables; see docs/server.md.
+#include "carrom/server/server.hpp"
+
+#include <CLI/CLI.hpp>
+#include <spdlog/spdlog.h>
+
+#include <cstdio>
+#include <exception>
+
+int main(int argc, char** argv) {
+    carrom::server::ServerSettings s;
+    std::string log_level = "info";
+    CLI::App app{"carrom-server: authoritative carrom game server (WebSocket + HTTP)"};
+    app.option_defaults()->always_capture_default();
+    app.add_option("--host", s.host, "Address to listen on (0.0.0.0 serves other machines)")
+        ->envname("CARROM_HOST");
+    app.add_option("--port", s.port, "Port (0 = ephemeral; the bound port is printed)")
+        ->envname("CARROM_PORT");
+    app.add_option("--threads", s.threads, "I/O threads")
+        ->envname("CARROM_THREADS")
+        ->check(CLI::Range(1, 256));
+    app.add_option("--snapshot-hz", s.snapshot_hz, "Snapshots per second while pieces move")
+        ->envname("CARROM_SNAPSHOT_HZ")
+        ->check(CLI::Range(1.0, 240.0));
+    app.add_option("--max-message-bytes", s.max_message_bytes, "Largest client message, bytes")
+        ->envname("CARROM_MAX_MESSAGE_BYTES")
+        ->check(CLI::Range(256, 1 << 20));
+    app.add_option("--max-rate", s.max_rate, "Client messages per second (sustained)")
+        ->envname("CARROM_MAX_RATE")
+        ->check(CLI::Range(1.0, 10000.0));
+    app.add_option("--rate-burst", s.rate_burst, "Client message burst allowance")
+        ->envname("CARROM_RATE_BURST")
+        ->check(CLI::Range(1.0, 100000.0));
+    app.add_option("--handshake-timeout", s.handshake_timeout_s,
+                   "Seconds for the WebSocket upgrade and for hello")
+        ->envname("CARROM_HANDSHAKE_TIMEOUT")
+        ->check(CLI::Range(0.05, 3600.0));
+    app.add_option("--idle-timeout", s.idle_timeout_s,
+                   "Seconds without any frame before closing (pings at half of it)")
+        ->envname("CARROM_IDLE_TIMEOUT")
+        ->check(CLI::Range(0.1, 86400.0));
+    app.add_option("--max-connections", s.max_connections, "Open WebSocket connections")
+        ->envname("CARROM_MAX_CONNECTIONS")
+        ->check(CLI::Range(1, 1000000));
+    app.add_option("--max-rooms", s.max_rooms, "Open rooms")
+        ->envname("CARROM_MAX_ROOMS")
+        ->check(CLI::Range(1, 1000000));
+    app.add_option("--grace", s.grace_s, "Seconds a dropped player keeps the seat")
+        ->envname("CARROM_GRACE")
+        ->check(CLI::Range(0.0, 86400.0));
+    app.add_option("--shot-clock", s.shot_clock_s, "Default seconds per stroke (0 = off)")
+        ->envname("CARROM_SHOT_CLOCK")
+        ->check(CLI::Range(0.0, 600.0));
+    app.add_option("--shutdown-grace", s.shutdown_grace_s,
+                   "Seconds to close connections on SIGINT/SIGTERM")
+        ->envname("CARROM_SHUTDOWN_GRACE")
+        ->check(CLI::Range(0.0, 60.0));
+    app.add_option("--log-level", log_level, "trace, debug, info, warn, error, off")
+        ->envname("CARROM_LOG_LEVEL")
+        ->check(CLI::IsMember({"trace", "debug", "info", "warn", "error", "off"}));
+    CLI11_PARSE(app, argc, argv);
+
+    spdlog::set_level(spdlog::level::from_str(log_level));
+    try {
+        carrom::server::Server server(s);
+        const auto port = server.listen();
+        std::printf("listening on %s:%u\n", s.host.c_str(), static_cast<unsigned>(port));
+        std::fflush(stdout);
+        spdlog::info("carrom-server on {}:{} ({} threads, {} Hz snapshots)", s.host, port,
+                     s.threads, s.snapshot_hz);
+        server.start();
+        server.run_until_signal();
+        spdlog::info("stopped");
+    } catch (const std::exception& e) {
+        spdlog::error("{}", e.what());
+        return 1;
+    }
+    return 0;
+}

@@ -1,0 +1,277 @@
+#include "carrom/client/client_session.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <deque>
+
+namespace carrom::client {
+namespace {
+
+// A link the test drives: it records what the client sends and delivers what the test queues.
+struct FakeWire {
+    LinkState state = LinkState::Connecting;
+    std::string detail;
+    std::vector<proto::ClientMessage> sent;
+    std::deque<proto::ServerMessage> inbox;
+};
+
+class FakeLink final : public MessageLink {
+public:
+    explicit FakeLink(FakeWire& wire) : wire_(wire) {}
+    void send(const proto::ClientMessage& m) override { wire_.sent.push_back(m); }
+    std::vector<proto::ServerMessage> poll() override {
+        std::vector<proto::ServerMessage> out(wire_.inbox.begin(), wire_.inbox.end());
+        wire_.inbox.clear();
+        return out;
+    }
+    LinkStatus status() const override { return {wire_.state, wire_.detail}; }
+    void close() override {}
+
+private:
+    FakeWire& wire_;
+};
+
+struct Harness {
+    std::vector<std::unique_ptr<FakeWire>> wires;
+    ClientSession session{[this] {
+                              wires.push_back(std::make_unique<FakeWire>());
+                              return std::make_unique<FakeLink>(*wires.back());
+                          },
+                          "Ana"};
+    FakeWire& wire() { return *wires.back(); }
+};
+
+const std::string kToken = "0123456789abcdef0123456789abcdef";
+
+template <class T> bool has_sent(const FakeWire& w) {
+    return std::any_of(w.sent.begin(), w.sent.end(),
+                       [](const proto::ClientMessage& m) { return std::holds_alternative<T>(m); });
+}
+
+// The last message of type T sent on the wire (a default one if none was).
+template <class T> T sent(const FakeWire& w) {
+    T out{};
+    for (const proto::ClientMessage& m : w.sent) {
+        if (std::holds_alternative<T>(m)) {
+            out = std::get<T>(m);
+        }
+    }
+    return out;
+}
+
+TEST(ClientSession, HelloThenTheRoomRequest) {
+    Harness h;
+    h.session.request({RoomRequest::Kind::Join, "ABC234", proto::RuleSet::Icf, std::nullopt});
+    h.session.start(0.0);
+    EXPECT_EQ(h.session.phase(), SessionPhase::Connecting);
+    h.session.update(0.1);
+    EXPECT_TRUE(h.wire().sent.empty()); // not open yet
+    h.wire().state = LinkState::Open;
+    h.session.update(0.2);
+    ASSERT_TRUE(has_sent<proto::Hello>(h.wire()));
+    EXPECT_EQ(sent<proto::Hello>(h.wire()).name, "Ana");
+    EXPECT_EQ(sent<proto::Hello>(h.wire()).resume_token, std::nullopt);
+    EXPECT_EQ(h.session.phase(), SessionPhase::Greeting);
+    h.wire().inbox.push_back(proto::Welcome{1, 7, kToken, 1000});
+    const auto out = h.session.update(0.3);
+    EXPECT_EQ(out.size(), 1u); // the welcome goes on to the match model
+    ASSERT_TRUE(has_sent<proto::JoinRoom>(h.wire()));
+    EXPECT_EQ(sent<proto::JoinRoom>(h.wire()).code, "ABC234");
+    EXPECT_EQ(h.session.phase(), SessionPhase::Joining);
+    h.wire().inbox.push_back(proto::RoomState{});
+    h.session.update(0.4);
+    EXPECT_EQ(h.session.phase(), SessionPhase::InRoom);
+    EXPECT_EQ(h.session.resume_token(), kToken);
+}
+
+TEST(ClientSession, RefusedRoomRequestsGoBackToTheLobby) {
+    for (const std::string_view code :
+         {proto::code::kUnsupported, proto::code::kRoomNotFound, proto::code::kRoomFull,
+          proto::code::kTooManyRooms, proto::code::kBadField}) {
+        Harness h;
+        h.session.request({RoomRequest::Kind::Create, "", proto::RuleSet::Icf,
+                           proto::BotSeat{proto::BotLevel::Easy}});
+        h.session.start(0.0);
+        h.wire().state = LinkState::Open;
+        h.session.update(0.1);
+        h.wire().inbox.push_back(proto::Welcome{1, 7, kToken, 1000});
+        h.session.update(0.2);
+        ASSERT_TRUE(has_sent<proto::CreateRoom>(h.wire()));
+        EXPECT_EQ(sent<proto::CreateRoom>(h.wire()).bot, proto::BotSeat{proto::BotLevel::Easy});
+        EXPECT_EQ(h.session.phase(), SessionPhase::Joining);
+        h.wire().inbox.push_back(proto::Error{std::string(code), "No."});
+        const auto out = h.session.update(0.3);
+        EXPECT_EQ(out.size(), 1u) << code; // the error goes on to be shown
+        EXPECT_EQ(h.session.phase(), SessionPhase::Lobby) << code;
+    }
+    Harness other; // an error that is no answer to the request keeps waiting for the room
+    other.session.request({RoomRequest::Kind::Join, "ABC234", proto::RuleSet::Icf, std::nullopt});
+    other.session.start(0.0);
+    other.wire().state = LinkState::Open;
+    other.session.update(0.1);
+    other.wire().inbox.push_back(proto::Welcome{1, 7, kToken, 1000});
+    other.session.update(0.2);
+    other.wire().inbox.push_back(proto::Error{std::string(proto::code::kRateLimited), "Slow."});
+    other.session.update(0.3);
+    EXPECT_EQ(other.session.phase(), SessionPhase::Joining);
+}
+
+TEST(ClientSession, LobbyWaitsForAChoice) {
+    Harness h;
+    h.session.start(0.0);
+    h.wire().state = LinkState::Open;
+    h.session.update(0.1);
+    h.wire().inbox.push_back(proto::Welcome{1, 7, kToken, 1000});
+    h.session.update(0.2);
+    EXPECT_EQ(h.session.phase(), SessionPhase::Lobby);
+    EXPECT_FALSE(has_sent<proto::CreateRoom>(h.wire()));
+    h.session.request({RoomRequest::Kind::Quick, "", proto::RuleSet::Freestyle, std::nullopt});
+    ASSERT_TRUE(has_sent<proto::QuickMatch>(h.wire()));
+    EXPECT_EQ(sent<proto::QuickMatch>(h.wire()).rule_set, proto::RuleSet::Freestyle);
+}
+
+TEST(ClientSession, GameInputOnlyInARoom) {
+    Harness h;
+    h.session.start(0.0);
+    EXPECT_FALSE(h.session.send_game(proto::Shoot{}));
+    h.wire().state = LinkState::Open;
+    h.session.update(0.1);
+    h.wire().inbox.push_back(proto::Welcome{1, 7, kToken, 1000});
+    h.wire().inbox.push_back(proto::RoomState{});
+    h.session.update(0.2);
+    EXPECT_TRUE(h.session.send_game(proto::Shoot{3, 300.0, -1.5, 20.0}));
+    EXPECT_EQ(sent<proto::Shoot>(h.wire()).turn, 3);
+}
+
+TEST(ClientSession, ADropReconnectsAndResumesWithTheToken) {
+    Harness h;
+    h.session.request({RoomRequest::Kind::Create, "", proto::RuleSet::Icf, std::nullopt});
+    h.session.start(0.0);
+    h.wire().state = LinkState::Open;
+    h.session.update(0.1);
+    h.wire().inbox.push_back(proto::Welcome{1, 7, kToken, 1000});
+    h.wire().inbox.push_back(proto::RoomState{});
+    h.session.update(0.2);
+    ASSERT_EQ(h.session.phase(), SessionPhase::InRoom);
+    h.wire().state = LinkState::Closed;
+    h.wire().detail = "Connection reset by peer";
+    h.session.update(1.0);
+    EXPECT_EQ(h.session.phase(), SessionPhase::Reconnecting);
+    EXPECT_NE(h.session.status_text().find("Connection reset by peer"), std::string::npos);
+    EXPECT_EQ(h.wires.size(), 1u);
+    h.session.update(1.2); // back-off: 0.5 s
+    EXPECT_EQ(h.wires.size(), 1u);
+    h.session.update(1.6);
+    ASSERT_EQ(h.wires.size(), 2u);
+    h.wire().state = LinkState::Open;
+    h.session.update(1.7);
+    ASSERT_TRUE(has_sent<proto::Hello>(h.wire()));
+    EXPECT_EQ(sent<proto::Hello>(h.wire()).resume_token, kToken);
+    h.wire().inbox.push_back(proto::Welcome{1, 7, kToken, 2000});
+    h.session.update(1.8);
+    // Resuming asks for no room: the server sends ours back.
+    EXPECT_FALSE(has_sent<proto::CreateRoom>(h.wire()));
+    h.wire().inbox.push_back(proto::RoomState{});
+    h.session.update(1.9);
+    EXPECT_EQ(h.session.phase(), SessionPhase::InRoom);
+}
+
+TEST(ClientSession, LostLinkReasonReadsAsOneSentence) {
+    for (const std::string& detail :
+         {std::string("Could not reach 127.0.0.1:9: connection refused."),
+          std::string("Could not reach 127.0.0.1:9: connection refused")}) {
+        Harness h;
+        h.session.start(0.0);
+        h.wire().state = LinkState::Closed;
+        h.wire().detail = detail;
+        h.session.update(0.1);
+        EXPECT_EQ(h.session.status_text(),
+                  "Could not reach 127.0.0.1:9: connection refused. Retrying in 0.5 s (attempt 1)")
+            << detail;
+    }
+    Harness quiet; // a link that closes without a reason
+    quiet.session.start(0.0);
+    quiet.wire().state = LinkState::Closed;
+    quiet.session.update(0.1);
+    EXPECT_EQ(quiet.session.status_text(),
+              "The connection was lost. Retrying in 0.5 s (attempt 1)");
+}
+
+TEST(ClientSession, BackOffDoublesAndGivesUp) {
+    Harness h;
+    h.session.start(0.0);
+    double now = 0.0;
+    std::vector<double> opened_at;
+    for (int i = 0; i < 2000 && h.session.phase() != SessionPhase::Failed; ++i) {
+        const std::size_t before = h.wires.size();
+        h.wire().state = LinkState::Closed;
+        h.wire().detail = "Could not reach 127.0.0.1:9: connection refused";
+        h.session.update(now);
+        if (h.wires.size() != before) {
+            opened_at.push_back(now);
+        }
+        now += 0.05;
+    }
+    EXPECT_EQ(h.session.phase(), SessionPhase::Failed);
+    EXPECT_NE(h.session.status_text().find("connection refused"), std::string::npos);
+    ASSERT_GE(opened_at.size(), 4u);
+    EXPECT_NEAR(opened_at[1] - opened_at[0], 1.0, 0.12); // 0.5, 1, 2, 4, 5, 5, ...
+    EXPECT_NEAR(opened_at[2] - opened_at[1], 2.0, 0.12);
+    EXPECT_GE(now, 60.0);
+}
+
+TEST(ClientSession, LostSeatGoesBackToTheLobby) {
+    Harness h;
+    h.session.request({RoomRequest::Kind::Create, "", proto::RuleSet::Icf, std::nullopt});
+    h.session.start(0.0);
+    h.wire().state = LinkState::Open;
+    h.session.update(0.1);
+    h.wire().inbox.push_back(proto::Welcome{1, 7, kToken, 1000});
+    h.wire().inbox.push_back(proto::RoomState{});
+    h.session.update(0.2);
+    h.wire().state = LinkState::Closed;
+    h.session.update(0.3);
+    h.session.update(1.0);
+    h.wire().state = LinkState::Open;
+    h.session.update(1.1);
+    h.wire().inbox.push_back(proto::Error{"bad_token", "Unknown token."});
+    const auto out = h.session.update(1.2);
+    EXPECT_EQ(out.size(), 1u); // the error is shown by the match model
+    EXPECT_EQ(h.session.phase(), SessionPhase::Lobby);
+}
+
+TEST(ClientSession, VersionMismatchFails) {
+    Harness h;
+    h.session.start(0.0);
+    h.wire().state = LinkState::Open;
+    h.session.update(0.1);
+    h.wire().inbox.push_back(proto::Error{"version_mismatch", "Protocol 2 required."});
+    h.session.update(0.2);
+    EXPECT_EQ(h.session.phase(), SessionPhase::Failed);
+}
+
+TEST(ClientSession, PingsMeasureTheRoundTrip) {
+    Harness h;
+    h.session.start(0.0);
+    h.wire().state = LinkState::Open;
+    h.session.update(0.0);
+    h.wire().inbox.push_back(proto::Welcome{1, 7, kToken, 1000});
+    h.session.update(0.1);
+    ASSERT_TRUE(has_sent<proto::Ping>(h.wire()));
+    h.wire().inbox.push_back(proto::Pong{sent<proto::Ping>(h.wire()).nonce, 123456});
+    const auto out = h.session.update(0.18);
+    EXPECT_TRUE(out.empty()); // pongs stay in the session
+    ASSERT_TRUE(h.session.rtt_ms().has_value());
+    EXPECT_NEAR(*h.session.rtt_ms(), 80.0, 1e-9);
+    const auto pongs = h.session.take_pongs();
+    ASSERT_EQ(pongs.size(), 1u);
+    EXPECT_EQ(pongs[0].server_ms, 123456);
+    // An unknown nonce is ignored.
+    h.wire().inbox.push_back(proto::Pong{999, 1});
+    h.session.update(0.2);
+    EXPECT_TRUE(h.session.take_pongs().empty());
+}
+
+} // namespace
+} // namespace carrom::client

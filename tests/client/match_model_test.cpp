@@ -1,0 +1,237 @@
+#include "carrom/client/match_model.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+namespace carrom::client {
+namespace {
+
+proto::RoomState room(int you = 0) {
+    proto::RoomState r;
+    r.code = "ABC234";
+    r.you = you;
+    r.rule_set = proto::RuleSet::Icf;
+    r.seats.resize(2);
+    r.seats[0] = {true, "Ana", true, false, proto::Colour::White, Baseline::Bottom};
+    r.seats[1] = {true, "Ben", true, false, proto::Colour::Black, Baseline::Top};
+    r.scores = {3, 1};
+    r.dues = {0, 1};
+    r.turn = 4;
+    r.to_play = 0;
+    r.phase = proto::Phase::Aiming;
+    r.server_time_ms = 5'000'000;
+    r.shot_clock_deadline_ms = 5'015'000;
+    r.bodies = {{0, BodyKind::Queen, {300, 300}, {}, false},
+                {1, BodyKind::Black, {300, 265}, {}, false},
+                {2, BodyKind::White, {0, 0}, {}, true}};
+    return r;
+}
+
+TEST(MatchModel, RoomStateFillsTheView) {
+    MatchModel m{PhysicsConfig{}};
+    m.handle(room(), 10.0);
+    const MatchView& v = m.view();
+    EXPECT_TRUE(v.in_room);
+    EXPECT_EQ(v.code, "ABC234");
+    ASSERT_EQ(v.seats.size(), 2u);
+    EXPECT_EQ(v.seats[1].name, "Ben");
+    EXPECT_EQ(v.seats[0].score, 3);
+    EXPECT_EQ(v.seats[1].dues, 1);
+    EXPECT_EQ(v.seats[1].colour, proto::Colour::Black);
+    EXPECT_TRUE(m.my_turn());
+    EXPECT_FALSE(m.flipped());
+    EXPECT_FALSE(m.spectator());
+    const auto board = m.board_now();
+    ASSERT_EQ(board.size(), 3u);
+    EXPECT_TRUE(board[2].pocketed);
+}
+
+TEST(MatchModel, TopSeatSeesTheBoardTurned) {
+    MatchModel m{PhysicsConfig{}};
+    m.handle(room(1), 0.0);
+    EXPECT_TRUE(m.flipped());
+    EXPECT_FALSE(m.my_turn());
+    MatchModel spectator{PhysicsConfig{}};
+    spectator.handle(room(-1), 0.0);
+    EXPECT_TRUE(spectator.spectator());
+    EXPECT_FALSE(spectator.flipped());
+}
+
+TEST(MatchModel, ShotClockCountsDownByTheServersClock) {
+    MatchModel m{PhysicsConfig{}};
+    // Our clock says 10 s; the server's says 5000 s: the deadline is 15 s after the message.
+    m.handle(room(), 10.0);
+    EXPECT_NEAR(*m.shot_clock_left_s(10.0), 15.0, 1e-9);
+    EXPECT_NEAR(*m.shot_clock_left_s(20.0), 5.0, 1e-9);
+    EXPECT_DOUBLE_EQ(*m.shot_clock_left_s(40.0), 0.0);
+}
+
+TEST(MatchModel, PongRefinesTheServerClock) {
+    MatchModel m{PhysicsConfig{}};
+    m.handle(room(), 10.0); // one-way: the message took unknown time
+    // A ping sent at 11.0 answered at 11.2 with server time 5'001'150 (the midpoint).
+    m.server_clock().round_trip(5'001'150, 11.0, 11.2);
+    EXPECT_NEAR(m.server_clock().server_now_ms(11.1), 5'001'150.0, 1e-6);
+    EXPECT_NEAR(*m.server_clock().rtt_ms(), 200.0, 1e-9);
+    EXPECT_NEAR(*m.shot_clock_left_s(11.1), 13.85, 1e-9);
+}
+
+TEST(MatchModel, TurnEventStartsAnotherTurn) {
+    MatchModel m{PhysicsConfig{}};
+    m.handle(room(), 0.0);
+    m.handle(proto::Event{proto::TurnEvent{5, 1, 5'030'000, 5'010'000}}, 1.0);
+    EXPECT_EQ(m.view().turn, 5);
+    EXPECT_EQ(m.view().to_play, 1);
+    EXPECT_FALSE(m.my_turn());
+    EXPECT_NEAR(*m.shot_clock_left_s(1.0), 20.0, 1e-9);
+    EXPECT_EQ(m.log().all().back().text, "Ben to play");
+    m.handle(proto::Event{proto::TurnEvent{6, 0, std::nullopt, 5'020'000}}, 2.0);
+    EXPECT_TRUE(m.my_turn());
+    EXPECT_FALSE(m.shot_clock_left_s(2.0).has_value());
+    EXPECT_EQ(m.log().all().back().text, "Your turn");
+}
+
+TEST(MatchModel, SnapshotsMoveTheBoardAndPocketsAnimate) {
+    MatchModel m{PhysicsConfig{}};
+    m.handle(room(), 0.0);
+    proto::Snapshot s0;
+    s0.seq = 1;
+    s0.turn = 4;
+    s0.t_s = 0.0;
+    s0.bodies = {{19, {300, 520}, {0, -600}}, {1, {300, 265}, {0, 0}}};
+    m.handle(s0, 1.0);
+    EXPECT_EQ(m.view().phase, proto::Phase::Moving);
+    proto::Snapshot s1 = s0;
+    s1.seq = 2;
+    s1.t_s = 0.5;
+    s1.bodies = {{19, {300, 300}, {0, -100}}};
+    s1.pocketed = {1};
+    m.handle(s1, 1.5);
+    const auto board = m.board_now();
+    const auto striker =
+        std::find_if(board.begin(), board.end(), [](const BodyState& b) { return b.id == 19; });
+    ASSERT_NE(striker, board.end());
+    EXPECT_EQ(striker->kind, BodyKind::Striker);
+    EXPECT_EQ(striker->pos_px, (Vec2{300, 300}));
+    const auto coin =
+        std::find_if(board.begin(), board.end(), [](const BodyState& b) { return b.id == 1; });
+    EXPECT_TRUE(coin->pocketed);
+    EXPECT_EQ(coin->pos_px, (Vec2{300, 265})); // its last place, for the fall animation
+    EXPECT_TRUE(m.animating());
+    // Duplicates are dropped.
+    m.handle(s1, 1.6);
+    EXPECT_EQ(m.buffer().newest_seq(), 3u);
+}
+
+TEST(MatchModel, PhysicsEventsBecomeSoundsWhenTheirTimeIsRendered) {
+    MatchModel m{PhysicsConfig{}};
+    m.handle(room(), 0.0);
+    // The event arrives before the shot's first snapshot: it waits for it.
+    m.handle(proto::Event{proto::CollisionEvent{4, 0.1, 19, 1, 900.0}}, 1.0);
+    m.handle(proto::Event{proto::PocketEvent{4, 0.2, 1, 3}}, 1.0);
+    m.handle(proto::Event{proto::CushionEvent{4, 0.3, 19, 2, 1.0}}, 1.0); // too soft to hear
+    proto::Snapshot s0;
+    s0.seq = 1;
+    s0.turn = 4;
+    s0.bodies = {{19, {300, 520}, {0, -600}}};
+    m.handle(s0, 1.0);
+    m.render(1.05);
+    EXPECT_TRUE(m.take_sounds().empty());
+    std::vector<SoundCue> all;
+    for (double t = 1.0; t < 2.0; t += 1.0 / 60.0) {
+        m.render(t);
+        for (const SoundCue& c : m.take_sounds()) {
+            all.push_back(c);
+        }
+    }
+    ASSERT_EQ(all.size(), 2u);
+    EXPECT_EQ(all[0].kind, SoundKind::Click);
+    EXPECT_NEAR(all[0].volume, loudness_from_impulse(900.0), 1e-12);
+    EXPECT_EQ(all[1].kind, SoundKind::Pocket);
+}
+
+TEST(MatchModel, ShotResultUpdatesScoresAndSaysWhatHappened) {
+    MatchModel m{PhysicsConfig{}};
+    m.handle(room(), 0.0);
+    proto::ShotResult r;
+    r.turn = 4;
+    r.seat = 0;
+    r.pocketed = {2, 0};
+    r.scores = {5, 1};
+    r.dues = {0, 0};
+    r.queen = {proto::QueenState::Pending, 0};
+    r.extra_turn = true;
+    r.next_turn = 5;
+    r.next_seat = 0;
+    m.handle(r, 1.0);
+    EXPECT_EQ(m.view().seats[0].score, 5);
+    EXPECT_EQ(m.view().seats[1].dues, 0);
+    EXPECT_EQ(m.view().queen.state, proto::QueenState::Pending);
+    EXPECT_EQ(m.view().turn, 5);
+    const auto lines = m.log().visible(1.0);
+    ASSERT_GE(lines.size(), 2u);
+    EXPECT_EQ(lines[lines.size() - 2].text, "Ana pocketed 1 white coin and the queen");
+    EXPECT_EQ(lines.back().text, "Ana plays again");
+}
+
+TEST(MatchModel, FoulsDuesQueenAndDropsAreTold) {
+    MatchModel m{PhysicsConfig{}};
+    m.handle(room(), 0.0);
+    m.handle(proto::Event{proto::FoulEvent{1, "striker_pocketed", "The striker went in."}}, 1.0);
+    EXPECT_EQ(m.log().all().back().text, "Ben: The striker went in.");
+    EXPECT_EQ(m.log().all().back().tone, Tone::Foul);
+    m.handle(proto::Event{proto::DueEvent{1, 2}}, 1.0);
+    EXPECT_EQ(m.view().seats[1].dues, 2);
+    EXPECT_EQ(m.log().all().back().text, "Ben owes 2 dues");
+    m.handle(proto::Event{proto::QueenEvent{{proto::QueenState::Covered, 0}}}, 1.0);
+    EXPECT_EQ(m.log().all().back().text, "Ana covered the queen");
+    m.handle(proto::Event{proto::PlayerDroppedEvent{1, 5'060'000, 5'000'000}}, 1.0);
+    EXPECT_FALSE(m.view().seats[1].connected);
+    EXPECT_EQ(m.log().all().back().text, "Ben lost the connection; they have 60 s to come back");
+    m.handle(proto::Event{proto::PlayerReturnedEvent{1}}, 2.0);
+    EXPECT_TRUE(m.view().seats[1].connected);
+}
+
+TEST(MatchModel, OpponentAimIsShownLive) {
+    MatchModel m{PhysicsConfig{}};
+    m.handle(room(1), 0.0); // we are seat 1; seat 0 aims
+    m.handle(proto::Event{proto::AimEvent{0, 4, 222.0}}, 1.0);
+    EXPECT_EQ(m.view().aim_x_px, 222.0);
+    m.handle(proto::Event{proto::AimEvent{0, 3, 111.0}}, 1.0); // an old turn's: ignored
+    EXPECT_EQ(m.view().aim_x_px, 222.0);
+}
+
+TEST(MatchModel, ErrorsAreSaidInPlainWords) {
+    MatchModel m{PhysicsConfig{}};
+    m.handle(proto::Error{"room_not_found", "No room has code ZZZZZZ."}, 0.0);
+    EXPECT_EQ(m.log().all().back().text,
+              "There is no room with that code. Check the code and try again.");
+    EXPECT_EQ(m.log().all().back().tone, Tone::Error);
+    m.handle(proto::Error{"something_new", "A new problem."}, 0.0);
+    EXPECT_EQ(m.log().all().back().text, "A new problem.");
+}
+
+TEST(MatchModel, GameEndNamesTheWinner) {
+    MatchModel m{PhysicsConfig{}};
+    m.handle(room(), 0.0);
+    m.handle(proto::Event{proto::GameEndEvent{0, "score", {25, 10}}}, 1.0);
+    EXPECT_EQ(m.view().phase, proto::Phase::GameOver);
+    EXPECT_EQ(m.view().winner, 0);
+    EXPECT_EQ(m.view().seats[0].score, 25);
+    EXPECT_EQ(m.log().all().back().text, "You win the game");
+}
+
+TEST(MatchModel, AnotherRoomResetsTheBoard) {
+    MatchModel m{PhysicsConfig{}};
+    m.handle(room(), 0.0);
+    proto::RoomState other = room();
+    other.code = "XYZ789";
+    other.bodies = {{0, BodyKind::Queen, {300, 300}, {}, false}};
+    m.handle(other, 1.0);
+    EXPECT_EQ(m.view().code, "XYZ789");
+    EXPECT_EQ(m.board_now().size(), 1u);
+}
+
+} // namespace
+} // namespace carrom::client

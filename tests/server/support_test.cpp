@@ -1,0 +1,203 @@
+// The small pieces: write queue, rate limiter, tokens and codes, registry, metrics.
+#include "carrom/proto/types.hpp"
+#include "carrom/server/metrics.hpp"
+#include "carrom/server/random.hpp"
+#include "carrom/server/rate_limiter.hpp"
+#include "carrom/server/registry.hpp"
+#include "carrom/server/write_queue.hpp"
+
+#include <gtest/gtest.h>
+
+#include <map>
+#include <set>
+
+namespace carrom::server {
+namespace {
+
+Outgoing text(std::string s, MessageKind kind = MessageKind::Normal) {
+    return {std::make_shared<const std::string>(std::move(s)), kind};
+}
+
+TEST(WriteQueue, OneWriteInFlight) {
+    WriteQueue q(1000, 4);
+    EXPECT_EQ(q.push(text("a")), WriteQueue::Push::Queued);
+    EXPECT_EQ(q.push(text("b")), WriteQueue::Push::Queued);
+    auto first = q.start_write();
+    ASSERT_TRUE(first);
+    EXPECT_EQ(*first->text, "a");
+    EXPECT_FALSE(q.start_write()); // a write is in flight
+    q.finish_write();
+    auto second = q.start_write();
+    ASSERT_TRUE(second);
+    EXPECT_EQ(*second->text, "b");
+    q.finish_write();
+    EXPECT_TRUE(q.empty());
+    EXPECT_EQ(q.queued_bytes(), 0U);
+}
+
+TEST(WriteQueue, SnapshotsAreDroppedUnderBackPressure) {
+    WriteQueue q(1000, 2);
+    EXPECT_EQ(q.push(text("1")), WriteQueue::Push::Queued);
+    ASSERT_TRUE(q.start_write()); // in flight does not count as waiting
+    EXPECT_EQ(q.push(text("s", MessageKind::Snapshot)), WriteQueue::Push::Queued);
+    EXPECT_EQ(q.push(text("2")), WriteQueue::Push::Queued);
+    EXPECT_EQ(q.push(text("s", MessageKind::Snapshot)), WriteQueue::Push::DroppedSnapshot);
+    EXPECT_EQ(q.push(text("3")), WriteQueue::Push::Queued); // normal messages still queue
+    EXPECT_EQ(q.queued_messages(), 4U);
+}
+
+TEST(WriteQueue, OverflowPastTheByteBound) {
+    WriteQueue q(10, 100);
+    EXPECT_EQ(q.push(text("12345")), WriteQueue::Push::Queued);
+    EXPECT_EQ(q.push(text("67890")), WriteQueue::Push::Queued);
+    EXPECT_EQ(q.push(text("x")), WriteQueue::Push::Overflow);
+    EXPECT_EQ(q.queued_bytes(), 10U);
+}
+
+TEST(RateLimiter, BurstThenSustainedRate) {
+    RateLimiter limiter(10.0, 3.0, 0);
+    EXPECT_EQ(limiter.on_message(0), RateLimiter::Verdict::Accept);
+    EXPECT_EQ(limiter.on_message(0), RateLimiter::Verdict::Accept);
+    EXPECT_EQ(limiter.on_message(0), RateLimiter::Verdict::Accept);
+    EXPECT_EQ(limiter.on_message(0), RateLimiter::Verdict::Reject);
+    EXPECT_EQ(limiter.on_message(99), RateLimiter::Verdict::Reject); // 0.99 tokens
+    EXPECT_EQ(limiter.on_message(100), RateLimiter::Verdict::Accept);
+    EXPECT_EQ(limiter.on_message(200), RateLimiter::Verdict::Accept);
+}
+
+TEST(RateLimiter, AFloodDisconnects) {
+    RateLimiter limiter(1.0, 2.0, 0);
+    EXPECT_EQ(limiter.on_message(0), RateLimiter::Verdict::Accept);
+    EXPECT_EQ(limiter.on_message(0), RateLimiter::Verdict::Accept);
+    EXPECT_EQ(limiter.on_message(0), RateLimiter::Verdict::Reject);
+    EXPECT_EQ(limiter.on_message(0), RateLimiter::Verdict::Disconnect);
+}
+
+TEST(Random, TokensAre128BitHex) {
+    SeededRandom random(42);
+    std::set<std::string> seen;
+    for (int i = 0; i < 1000; ++i) {
+        const std::string token = make_resume_token(random);
+        EXPECT_TRUE(proto::is_resume_token(token)) << token;
+        seen.insert(token);
+    }
+    EXPECT_EQ(seen.size(), 1000U);
+}
+
+TEST(Random, SeededSequencesRepeat) {
+    SeededRandom a(7);
+    SeededRandom b(7);
+    EXPECT_EQ(make_resume_token(a), make_resume_token(b));
+    EXPECT_EQ(make_room_code(a), make_room_code(b));
+}
+
+TEST(Random, RoomCodesUseTheAlphabetEvenly) {
+    SeededRandom random(3);
+    std::map<char, int> counts;
+    for (int i = 0; i < 3000; ++i) {
+        const std::string code = make_room_code(random);
+        ASSERT_TRUE(proto::is_room_code(code)) << code;
+        for (char c : code) {
+            ++counts[c];
+        }
+    }
+    EXPECT_EQ(counts.size(), 31U);
+    for (const auto& [c, n] : counts) {
+        EXPECT_GT(n, 450) << c; // expected 18000 / 31 = 580.6
+        EXPECT_LT(n, 720) << c;
+    }
+}
+
+TEST(Random, SystemTokensDiffer) {
+    SystemRandom random;
+    EXPECT_NE(make_resume_token(random), make_resume_token(random));
+}
+
+struct DummyRoom {
+    std::string code;
+};
+using TestRegistry = Registry<DummyRoom, int>;
+
+TEST(Registry, PlayersGetDistinctIdsAndTokens) {
+    SeededRandom random(1);
+    TestRegistry registry(random, 10);
+    const auto a = registry.new_player();
+    const auto b = registry.new_player();
+    EXPECT_NE(a.player_id, b.player_id);
+    EXPECT_NE(a.token, b.token);
+    ASSERT_TRUE(registry.find_player(a.token));
+    EXPECT_EQ(registry.find_player(a.token)->player_id, a.player_id);
+    EXPECT_FALSE(registry.find_player(std::string(32, '0')));
+    registry.forget_player(a.token);
+    EXPECT_FALSE(registry.find_player(a.token));
+}
+
+TEST(Registry, RoomLimit) {
+    SeededRandom random(1);
+    TestRegistry registry(random, 2);
+    auto make = [](const std::string& code) {
+        return std::make_shared<DummyRoom>(DummyRoom{code});
+    };
+    auto r1 = registry.create_room(make);
+    auto r2 = registry.create_room(make);
+    ASSERT_TRUE(std::holds_alternative<std::shared_ptr<DummyRoom>>(r1));
+    ASSERT_TRUE(std::holds_alternative<std::shared_ptr<DummyRoom>>(r2));
+    const auto r3 = registry.create_room(make);
+    ASSERT_TRUE(std::holds_alternative<proto::Error>(r3));
+    EXPECT_EQ(std::get<proto::Error>(r3).code, "too_many_rooms");
+    const std::string code = std::get<std::shared_ptr<DummyRoom>>(r1)->code;
+    EXPECT_TRUE(proto::is_room_code(code));
+    EXPECT_EQ(registry.find_room(code), std::get<std::shared_ptr<DummyRoom>>(r1));
+    registry.remove_room(code);
+    EXPECT_EQ(registry.find_room(code), nullptr);
+    EXPECT_TRUE(std::holds_alternative<std::shared_ptr<DummyRoom>>(registry.create_room(make)));
+}
+
+TEST(Registry, RemovingARoomForgetsItsPlayers) {
+    SeededRandom random(1);
+    TestRegistry registry(random, 2);
+    const auto a = registry.new_player();
+    registry.set_player_room(a.token, "ABCDEF");
+    ASSERT_EQ(registry.find_player(a.token)->room_code, "ABCDEF");
+    registry.remove_room("ABCDEF");
+    EXPECT_FALSE(registry.find_player(a.token));
+}
+
+TEST(Registry, QuickMatchPairsWithinARuleSet) {
+    SeededRandom random(1);
+    TestRegistry registry(random, 2);
+    EXPECT_FALSE(registry.quick_match(proto::RuleSet::Icf, 1, 100));
+    EXPECT_FALSE(registry.quick_match(proto::RuleSet::Icf, 1, 100)); // not queued twice
+    EXPECT_EQ(registry.waiting_count(), 1U);
+    EXPECT_FALSE(registry.quick_match(proto::RuleSet::Seed, 2, 200)); // another rule set
+    const auto partner = registry.quick_match(proto::RuleSet::Icf, 3, 300);
+    ASSERT_TRUE(partner);
+    EXPECT_EQ(*partner, 100);
+    EXPECT_EQ(registry.waiting_count(), 1U);
+    registry.cancel_quick_match(2);
+    EXPECT_EQ(registry.waiting_count(), 0U);
+}
+
+TEST(Metrics, PrometheusText) {
+    Metrics m;
+    m.connections = 3;
+    m.rooms = 2;
+    m.bytes_out_total = 1234;
+    m.observe_snapshot_lag_ms(0.2);
+    m.observe_snapshot_lag_ms(3.0);
+    m.observe_snapshot_lag_ms(500.0);
+    const std::string text = m.prometheus_text();
+    EXPECT_NE(text.find("# TYPE carrom_connections gauge\ncarrom_connections 3\n"),
+              std::string::npos);
+    EXPECT_NE(text.find("carrom_rooms 2\n"), std::string::npos);
+    EXPECT_NE(text.find("carrom_bytes_out_total 1234\n"), std::string::npos);
+    EXPECT_NE(text.find("carrom_snapshot_lag_seconds_bucket{le=\"0.0005\"} 1\n"),
+              std::string::npos);
+    EXPECT_NE(text.find("carrom_snapshot_lag_seconds_bucket{le=\"0.005\"} 2\n"), std::string::npos);
+    EXPECT_NE(text.find("carrom_snapshot_lag_seconds_bucket{le=\"+Inf\"} 3\n"), std::string::npos);
+    EXPECT_NE(text.find("carrom_snapshot_lag_seconds_sum 0.503200\n"), std::string::npos);
+    EXPECT_NE(text.find("carrom_snapshot_lag_seconds_count 3\n"), std::string::npos);
+}
+
+} // namespace
+} // namespace carrom::server

@@ -1,0 +1,141 @@
+#pragma once
+// A minimal Beast WebSocket client for the socket tests: synchronous writes, reads with a
+// deadline (run_for on a private io_context), decoded with proto.
+
+#include "carrom/proto/codec.hpp"
+
+#include <gtest/gtest.h>
+
+#include <boost/asio/connect.hpp>
+#include <boost/asio/io_context.hpp>
+#include <boost/asio/ip/tcp.hpp>
+#include <boost/beast/core.hpp>
+#include <boost/beast/websocket.hpp>
+
+#include <chrono>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace carrom::server::testing {
+
+namespace asio = boost::asio;
+namespace beast = boost::beast;
+namespace websocket = beast::websocket;
+
+class WsTestClient {
+public:
+    explicit WsTestClient(std::uint16_t port) : ws_(ioc_) {
+        asio::ip::tcp::resolver resolver(ioc_);
+        beast::get_lowest_layer(ws_).connect(
+            asio::ip::tcp::endpoint(asio::ip::make_address("127.0.0.1"), port));
+        ws_.handshake("127.0.0.1", "/");
+    }
+
+    void send(const proto::ClientMessage& message) { send_text(proto::encode(message)); }
+    void send_text(const std::string& text) {
+        ws_.text(true);
+        ws_.write(asio::buffer(text));
+    }
+    void send_binary(const std::string& bytes) {
+        ws_.binary(true);
+        ws_.write(asio::buffer(bytes));
+    }
+
+    // The next message, or nothing on timeout or when the connection closed (see closed()).
+    std::optional<proto::ServerMessage>
+    read(std::chrono::milliseconds timeout = std::chrono::milliseconds(5000)) {
+        if (closed_) {
+            return std::nullopt;
+        }
+        beast::flat_buffer buffer;
+        std::optional<beast::error_code> result;
+        ws_.async_read(buffer, [&](beast::error_code ec, std::size_t) { result = ec; });
+        ioc_.restart();
+        ioc_.run_for(timeout);
+        if (!result) {
+            beast::get_lowest_layer(ws_).socket().cancel();
+            ioc_.restart();
+            ioc_.run();
+            closed_ = true; // a cancelled read leaves the stream unusable
+            return std::nullopt;
+        }
+        if (*result) {
+            closed_ = true;
+            close_code_ = ws_.reason().code;
+            return std::nullopt;
+        }
+        const std::string text = beast::buffers_to_string(buffer.data());
+        auto decoded = proto::decode_server(text);
+        if (!decoded.ok()) {
+            ADD_FAILURE() << "undecodable server message: " << text;
+            return std::nullopt;
+        }
+        log.push_back(*decoded.message);
+        return decoded.message;
+    }
+
+    // Reads until a message of type T arrives (everything read is kept in `log`).
+    template <class T>
+    std::optional<T> wait_for(std::chrono::milliseconds timeout = std::chrono::milliseconds(5000)) {
+        const auto deadline = std::chrono::steady_clock::now() + timeout;
+        while (std::chrono::steady_clock::now() < deadline) {
+            const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
+                deadline - std::chrono::steady_clock::now());
+            auto message = read(std::max(left, std::chrono::milliseconds(1)));
+            if (!message) {
+                return std::nullopt;
+            }
+            if (auto* t = std::get_if<T>(&*message)) {
+                return *t;
+            }
+        }
+        return std::nullopt;
+    }
+    template <class T> std::optional<T> wait_for_event() {
+        for (;;) {
+            auto event = wait_for<proto::Event>();
+            if (!event) {
+                return std::nullopt;
+            }
+            if (auto* t = std::get_if<T>(&*event)) {
+                return *t;
+            }
+        }
+    }
+    std::string wait_for_error() {
+        auto error = wait_for<proto::Error>();
+        return error ? error->code : std::string("<none>");
+    }
+    // Reads until the server closes; returns its close code.
+    int wait_for_close() {
+        while (read()) {
+        }
+        return close_code_;
+    }
+    void drop() {
+        beast::error_code ignored;
+        beast::get_lowest_layer(ws_).socket().close(ignored);
+        closed_ = true;
+    }
+
+    template <class T> std::vector<T> logged() const {
+        std::vector<T> out;
+        for (const auto& m : log) {
+            if (const auto* t = std::get_if<T>(&m)) {
+                out.push_back(*t);
+            }
+        }
+        return out;
+    }
+
+    std::vector<proto::ServerMessage> log;
+
+private:
+    asio::io_context ioc_;
+    websocket::stream<beast::tcp_stream> ws_;
+    bool closed_ = false;
+    int close_code_ = 0;
+};
+
+} // namespace carrom::server::testing
