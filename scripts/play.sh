@@ -1,16 +1,17 @@
 #!/usr/bin/env bash
 # Runs the game on this machine: installs what is missing, builds (Release), starts a local
-# server on 127.0.0.1 and a desktop client in a room against a bot. Closing the client stops all.
-# Usage: scripts/play.sh [--name NAME] [--bot random|scripted|greedy]
+# server on 127.0.0.1 and a desktop client in a room against a server-side bot. Closing the
+# client stops the server too.
+# Usage: scripts/play.sh [--name NAME] [--bot random|easy|medium|hard]
 set -euo pipefail
 cd "$(dirname "$0")/.."
 name="Player"
-bot="random"
+bot="medium"
 while [ $# -gt 0 ]; do
     case "$1" in
         --name) name="$2"; shift 2 ;;
         --bot) bot="$2"; shift 2 ;;
-        *) echo "usage: scripts/play.sh [--name NAME] [--bot STRATEGY]" >&2; exit 2 ;;
+        *) echo "usage: scripts/play.sh [--name NAME] [--bot random|easy|medium|hard]" >&2; exit 2 ;;
     esac
 done
 bash scripts/install-deps.sh

@@ -119,6 +119,8 @@ private:
     void draw_aim();
     void draw_status_panel(const std::string& title, const std::string& detail);
     bool save_screenshot();
+    bool timed_out(std::chrono::steady_clock::time_point started) const;
+    bool bench_done(int frame, double ms, double cpu_ms);
     bool screenshot_due(int frame) const;
     int finish_screenshot();
     void announce_room();
@@ -146,6 +148,7 @@ private:
     int shot_sent_turn_ = -1; // the turn we already shot in (no double shots)
     double last_aim_sent_s_ = -1.0;
     bool aim_dirty_ = false;
+    FrameStats bench_;                      // --bench-frames
     int shots_seen_ = 0;                    // shot results received
     std::optional<Vec2> aim_striker_drawn_; // a striker being placed, drawn this frame
     std::string announced_room_;            // the room code last printed on stdout
@@ -440,6 +443,38 @@ bool App::save_screenshot() {
     return shot.copyToImage().saveToFile(options_.screenshot_path);
 }
 
+bool App::timed_out(std::chrono::steady_clock::time_point started) const {
+    if (options_.timeout_s <= 0.0 ||
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count() <=
+            options_.timeout_s) {
+        return false;
+    }
+    std::cerr << "carrom-client: gave up after " << options_.timeout_s << " s ("
+              << session_.status_text() << ", " << shots_seen_ << " shots seen)\n";
+    return true;
+}
+
+// Records one frame's times for --bench-frames (after the warm-up); prints the statistics and
+// returns true after the last one.
+bool App::bench_done(int frame, double ms, double cpu_ms) {
+    constexpr int kWarmupFrames = 10;
+    if (options_.bench_frames <= 0 || frame <= kWarmupFrames) {
+        return false;
+    }
+    bench_.all_ms.push_back(ms);
+    bench_.cpu_ms.push_back(cpu_ms);
+    if (model_.animating()) {
+        bench_.moving_ms.push_back(ms);
+    }
+    if (frame < options_.bench_frames + kWarmupFrames) {
+        return false;
+    }
+    const sf::Vector2u size = window_.getSize();
+    print_bench(bench_, size.x, size.y, options_.msaa,
+                {board_painter_.repaints(), hud_.bar_repaints()});
+    return true;
+}
+
 int App::run() {
     sf::ContextSettings settings;
     settings.antialiasingLevel = options_.msaa;
@@ -463,9 +498,7 @@ int App::run() {
         session_.request(*options_.request);
     }
     session_.start(clock_.now());
-    FrameStats stats;
     int frame = 0;
-    constexpr int kWarmupFrames = 10;
     while (window_.isOpen()) {
         const auto t0 = std::chrono::steady_clock::now();
         const std::clock_t cpu0 = std::clock();
@@ -482,11 +515,7 @@ int App::run() {
             window_.close();
             return code;
         }
-        if (options_.timeout_s > 0.0 &&
-            std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count() >
-                options_.timeout_s) {
-            std::cerr << "carrom-client: gave up after " << options_.timeout_s << " s ("
-                      << session_.status_text() << ", " << shots_seen_ << " shots seen)\n";
+        if (timed_out(started)) {
             window_.close();
             return 3;
         }
@@ -494,19 +523,10 @@ int App::run() {
         const double ms =
             std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0)
                 .count();
-        if (options_.bench_frames > 0 && frame > kWarmupFrames) {
-            stats.all_ms.push_back(ms);
-            stats.cpu_ms.push_back(1000.0 * static_cast<double>(std::clock() - cpu0) /
-                                   CLOCKS_PER_SEC);
-            if (model_.animating()) {
-                stats.moving_ms.push_back(ms);
-            }
-            if (frame >= options_.bench_frames + kWarmupFrames) {
-                window_.close();
-                print_bench(stats, size.x, size.y, options_.msaa,
-                            {board_painter_.repaints(), hud_.bar_repaints()});
-                return 0;
-            }
+        const double cpu_ms = 1000.0 * static_cast<double>(std::clock() - cpu0) / CLOCKS_PER_SEC;
+        if (bench_done(frame, ms, cpu_ms)) {
+            window_.close();
+            return 0;
         }
         clock_.tick();
     }

@@ -2,6 +2,9 @@
 // socket operation happens on that thread; the public functions only post work to it or read
 // the shared inbox and status under a mutex.
 //
+// Sends made while Connecting wait in the outbox and go out once the handshake is done (so a
+// caller may send hello right after open()); sends after Closed are dropped.
+//
 // Invariants: at most one async_read and one async_write (or async_close) in flight; the
 // outbox holds at most options.max_queued_sends texts; once the status is Closed it stays so.
 #include "carrom/net/connection.hpp"

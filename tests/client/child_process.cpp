@@ -24,7 +24,21 @@ void close_fd(int& fd) {
 
 } // namespace
 
-ChildProcess::ChildProcess(const std::vector<std::string>& argv) {
+std::vector<std::string> ChildProcess::environment(const std::vector<std::string>& changes) {
+    std::vector<std::string> out;
+    for (char** e = environ; *e != nullptr; ++e) {
+        out.emplace_back(*e);
+    }
+    for (const std::string& change : changes) {
+        const std::string name = change.substr(0, change.find('=') + 1);
+        std::erase_if(out, [&name](const std::string& e) { return e.rfind(name, 0) == 0; });
+        out.push_back(change);
+    }
+    return out;
+}
+
+ChildProcess::ChildProcess(const std::vector<std::string>& argv,
+                           const std::vector<std::string>& env) {
     int out[2] = {-1, -1};
     int err[2] = {-1, -1};
     if (argv.empty() || ::pipe(out) != 0 || ::pipe(err) != 0) {
@@ -47,8 +61,14 @@ ChildProcess::ChildProcess(const std::vector<std::string>& argv) {
         args.push_back(const_cast<char*>(a.c_str()));
     }
     args.push_back(nullptr);
+    std::vector<std::string> env_strings = environment(env);
+    std::vector<char*> envp;
+    for (std::string& e : env_strings) {
+        envp.push_back(e.data());
+    }
+    envp.push_back(nullptr);
     pid_t pid = -1;
-    if (::posix_spawnp(&pid, args[0], &actions, &attr, args.data(), environ) == 0) {
+    if (::posix_spawnp(&pid, args[0], &actions, &attr, args.data(), envp.data()) == 0) {
         pid_ = pid;
     }
     posix_spawn_file_actions_destroy(&actions);

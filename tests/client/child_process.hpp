@@ -16,7 +16,9 @@ class ChildProcess {
 public:
     enum class Stream { Out, Err };
 
-    explicit ChildProcess(const std::vector<std::string>& argv);
+    // `env`: "NAME=value" entries set (or replaced) in the child's copy of this environment.
+    explicit ChildProcess(const std::vector<std::string>& argv,
+                          const std::vector<std::string>& env = {});
     ~ChildProcess();
     ChildProcess(const ChildProcess&) = delete;
     ChildProcess& operator=(const ChildProcess&) = delete;
@@ -45,6 +47,7 @@ private:
     void pump(std::chrono::milliseconds wait);
     Pipe& pipe(Stream s) { return s == Stream::Out ? out_ : err_; }
     bool reap(bool block);
+    static std::vector<std::string> environment(const std::vector<std::string>& changes);
 
     pid_t pid_ = -1;
     std::optional<int> exit_code_;

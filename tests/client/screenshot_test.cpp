@@ -31,7 +31,11 @@ Shot take_screenshot() {
                              ("carrom-client-shot-" + std::to_string(::getpid()) + ".png"))
                                 .string();
     const bool has_display = std::getenv("DISPLAY") != nullptr;
-    const std::string cmd = std::string(has_display ? "" : "xvfb-run -a ") + CARROM_CLIENT_PATH +
+    // Under AddressSanitizer without the leak check: Mesa's GL driver leaks a few hundred bytes
+    // per process from a module it unloads at exit (LeakSanitizer cannot suppress them by name;
+    // a bare SFML window shows the same). Every other check stays on.
+    const std::string cmd = std::string("ASAN_OPTIONS=\"$ASAN_OPTIONS:detect_leaks=0\" ") +
+                            (has_display ? "" : "xvfb-run -a ") + CARROM_CLIENT_PATH +
                             " --demo --mute --demo-break-at 100 --width 900 --height 900"
                             " --screenshot " +
                             png + " --frames 10 > /dev/null 2>&1";

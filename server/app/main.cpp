@@ -2,15 +2,20 @@
 // variables; see docs/server.md.
 #include "carrom/server/server.hpp"
 
+#include "bot_brains.hpp"
+
 #include <CLI/CLI.hpp>
 #include <spdlog/spdlog.h>
 
+#include <cstdint>
 #include <cstdio>
 #include <exception>
 
 int main(int argc, char** argv) {
     carrom::server::ServerSettings s;
     std::string log_level = "info";
+    std::uint64_t bot_seed = 1;
+    bool no_bots = false;
     CLI::App app{"carrom-server: authoritative carrom game server (WebSocket + HTTP)"};
     app.option_defaults()->always_capture_default();
     app.add_option("--host", s.host, "Address to listen on (0.0.0.0 serves other machines)")
@@ -56,6 +61,10 @@ int main(int argc, char** argv) {
                    "Seconds to close connections on SIGINT/SIGTERM")
         ->envname("CARROM_SHUTDOWN_GRACE")
         ->check(CLI::Range(0.0, 60.0));
+    app.add_option("--bot-seed", bot_seed, "Seed of the first server-side bot's random choices")
+        ->envname("CARROM_BOT_SEED");
+    app.add_flag("--no-bots", no_bots, "Refuse rooms that ask for a bot seat (\"unsupported\")")
+        ->envname("CARROM_NO_BOTS");
     app.add_option("--log-level", log_level, "trace, debug, info, warn, error, off")
         ->envname("CARROM_LOG_LEVEL")
         ->check(CLI::IsMember({"trace", "debug", "info", "warn", "error", "off"}));
@@ -63,7 +72,9 @@ int main(int argc, char** argv) {
 
     spdlog::set_level(spdlog::level::from_str(log_level));
     try {
-        carrom::server::Server server(s);
+        carrom::server::Server server(s, no_bots
+                                             ? carrom::server::BotFactory{}
+                                             : carrom::server::make_strategy_bot_factory(bot_seed));
         const auto port = server.listen();
         std::printf("listening on %s:%u\n", s.host.c_str(), static_cast<unsigned>(port));
         std::fflush(stdout);
