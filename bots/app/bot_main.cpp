@@ -45,6 +45,7 @@ nlohmann::json summary_json(const bots::BotSummary& s, std::string_view strategy
             {"snapshots", s.snapshots},
             {"keyframes", s.keyframes},
             {"seq_gaps", s.seq_gaps},
+            {"unrepaired_gaps", s.unrepaired_gaps},
             {"resumes", s.resumes},
             {"decode_errors", s.decode_errors},
             {"errors", errors},

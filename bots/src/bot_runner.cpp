@@ -153,8 +153,10 @@ void BotRunner::on_snapshot(const proto::Snapshot& snapshot) {
     ++summary_.snapshots;
     if (snapshot.keyframe) {
         ++summary_.keyframes;
+        awaiting_keyframe_ = false;
     } else if (last_seq_ >= 0 && snapshot.seq != last_seq_ + 1) {
         ++summary_.seq_gaps;
+        awaiting_keyframe_ = true;
     }
     last_seq_ = snapshot.seq;
 }
@@ -173,6 +175,10 @@ void BotRunner::on_event(const proto::Event& event) {
 }
 
 void BotRunner::on_shot_result(const proto::ShotResult& result) {
+    if (awaiting_keyframe_) { // every shot ends with a keyframe, sent before its result
+        ++summary_.unrepaired_gaps;
+        awaiting_keyframe_ = false;
+    }
     if (room_ && result.seat == room_->you) {
         ++summary_.shots;
         refusals_ = 0;

@@ -42,9 +42,12 @@ public:
         }
         out.detail = s.detail;
         if (const int bad = connection_->decode_errors(); bad > 0) {
-            out.detail += (out.detail.empty() ? "" : " ") + std::to_string(bad) +
-                          (bad == 1 ? " message" : " messages") +
-                          " from the server could not be read and were ignored.";
+            if (!out.detail.empty()) {
+                out.detail += ' ';
+            }
+            out.detail += std::to_string(bad);
+            out.detail += bad == 1 ? " message" : " messages";
+            out.detail += " from the server could not be read and were ignored.";
         }
         return out;
     }

@@ -59,8 +59,8 @@ std::variant<WsUrl, std::string> parse_ws_url(std::string_view url) {
     std::string_view authority = rest.substr(0, slash);
     WsUrl out;
     if (slash != std::string_view::npos) {
-        out.target = rest[slash] == '/' ? std::string(rest.substr(slash))
-                                        : "/" + std::string(rest.substr(slash));
+        out.target = rest[slash] == '/' ? "" : "/";
+        out.target.append(rest.substr(slash));
         if (std::any_of(out.target.begin(), out.target.end(), [](char c) {
                 return static_cast<unsigned char>(c) <= 0x20 || c == 0x7f;
             })) {

@@ -28,6 +28,10 @@ int main(int argc, char** argv) {
     app.add_option("--snapshot-hz", s.snapshot_hz, "Snapshots per second while pieces move")
         ->envname("CARROM_SNAPSHOT_HZ")
         ->check(CLI::Range(1.0, 240.0));
+    app.add_option("--time-scale", s.time_scale,
+                   "Match seconds per wall second while a shot plays (tests; 1 = real time)")
+        ->envname("CARROM_TIME_SCALE")
+        ->check(CLI::Range(0.01, 1000.0));
     app.add_option("--max-message-bytes", s.max_message_bytes, "Largest client message, bytes")
         ->envname("CARROM_MAX_MESSAGE_BYTES")
         ->check(CLI::Range(256, 1 << 20));

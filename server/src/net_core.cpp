@@ -24,6 +24,7 @@ Core::create_room(proto::RuleSet rule_set, const proto::RoomOptions& options) {
     config.rule_set = rule_set;
     config.rules = make_rules_config(rule_set, options, settings.shot_clock_s);
     config.snapshot_hz = settings.snapshot_hz;
+    config.time_scale = settings.time_scale;
     config.grace_s = settings.grace_s;
     auto created = registry.create_room(
         [&](const std::string& code) { return std::make_shared<RoomActor>(*this, code, config); });

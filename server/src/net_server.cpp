@@ -120,6 +120,9 @@ private:
             return;
         }
         if (!ec) {
+            // Snapshots are small and time-critical: send each at once, without Nagle's delay.
+            beast::error_code ignored;
+            socket.set_option(tcp::no_delay(true), ignored);
             std::make_shared<HttpSession>(core_, std::move(socket))->run();
         }
         do_accept();

@@ -445,7 +445,7 @@ void Room::stream_tick(std::int64_t now_ms) {
     }
     Streaming& s = *streaming_;
     metrics_.observe_snapshot_lag_ms(static_cast<double>(now_ms - s.next_ms));
-    const double t_s = static_cast<double>(now_ms - s.start_ms) / 1000.0;
+    const double t_s = config_.time_scale * static_cast<double>(now_ms - s.start_ms) / 1000.0;
     ShotStream::Step step = s.stream.advance(t_s, ++seq_);
     for (auto& event : step.events) {
         const bool pocket = std::holds_alternative<proto::PocketEvent>(event);

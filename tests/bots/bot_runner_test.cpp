@@ -268,6 +268,16 @@ TEST_F(BotRunnerTest, CountsSnapshotsKeyframesAndGaps) {
     EXPECT_EQ(runner_->summary().snapshots, 3);
     EXPECT_EQ(runner_->summary().keyframes, 1);
     EXPECT_EQ(runner_->summary().seq_gaps, 1);
+    EXPECT_EQ(runner_->summary().unrepaired_gaps, 0);
+    deliver(proto::ShotResult{}); // no keyframe came after the gap
+    EXPECT_EQ(runner_->summary().unrepaired_gaps, 1);
+    snapshot.seq = 20;
+    deliver(snapshot);
+    snapshot.keyframe = true;
+    snapshot.seq = 21;
+    deliver(snapshot);
+    deliver(proto::ShotResult{});
+    EXPECT_EQ(runner_->summary().unrepaired_gaps, 1);
 }
 
 TEST(MatchView, RebuildsTheBoardScoresTurnAndBreaker) {

@@ -22,13 +22,19 @@ proto::CreateRoom short_game(proto::RuleSet rule_set) {
 }
 
 // What both players must agree on once a match ended normally.
-void expect_complete(const MatchRun& run, const std::set<std::string>& reasons) {
+// With many bots on a busy machine (or under ASan) a bot thread may read too slowly and the
+// server drop snapshots for it: gaps are then allowed, but each must be repaired by a keyframe.
+void expect_complete(const MatchRun& run, const std::set<std::string>& reasons,
+                     bool drops_allowed = false) {
     for (const auto* bot : {&run.creator, &run.joiner}) {
         EXPECT_TRUE(bot->failure.empty()) << bot->failure;
         EXPECT_TRUE(bot->finished);
         EXPECT_EQ(bot->games, 1);
         EXPECT_EQ(bot->decode_errors, 0);
-        EXPECT_EQ(bot->seq_gaps, 0);
+        EXPECT_EQ(bot->unrepaired_gaps, 0);
+        if (!drops_allowed) {
+            EXPECT_EQ(bot->seq_gaps, 0);
+        }
         EXPECT_TRUE(bot->errors.empty()) << bot->errors.begin()->first;
         EXPECT_TRUE(reasons.count(bot->last_reason)) << bot->last_reason;
         EXPECT_GT(bot->snapshots, 0);
@@ -94,7 +100,7 @@ TEST(Matches, FiftyMatchesAtOnceFinishCorrectly) {
     const auto runs = play_matches(server.url(), specs);
     std::set<std::string> codes;
     for (const auto& run : runs) {
-        expect_complete(run, {"score", "cleared"});
+        expect_complete(run, {"score", "cleared"}, true);
         codes.insert(run.code);
     }
     EXPECT_EQ(codes.size(), runs.size()); // fifty different rooms

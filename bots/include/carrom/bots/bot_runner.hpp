@@ -50,7 +50,9 @@ struct BotSummary {
     std::string last_reason; // game_end reason of the last game
     int snapshots = 0;
     int keyframes = 0;
-    int seq_gaps = 0; // deltas whose seq did not follow the previous one
+    int seq_gaps = 0;        // deltas whose seq did not follow the previous one (the server
+                             // dropped snapshots for this slow reader)
+    int unrepaired_gaps = 0; // shots that ended with no keyframe after a gap (a server bug)
     int resumes = 0;
     int decode_errors = 0;
     std::map<std::string, int> errors; // error codes received, with counts
@@ -114,6 +116,7 @@ private:
     int last_played_turn_ = -1; // turn number of the last shot sent in this game
     int refusals_ = 0;          // refused shots in a row
     std::int64_t last_seq_ = -1;
+    bool awaiting_keyframe_ = false; // a gap was seen; the board is stale until a keyframe
     BotSummary summary_;
 };
 

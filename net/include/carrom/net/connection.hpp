@@ -38,7 +38,7 @@ public:
                                             const ConnectionOptions& options = {});
     virtual ~Connection() = default; // closes and joins the I/O thread
 
-    // Queues a message; dropped when the connection is not open.
+    // Queues a message; sent once the connection opens, dropped once it is closed.
     virtual void send(const proto::ClientMessage& message) = 0;
     // Queues raw text as one text frame, unvalidated (for tests of the server's input checks).
     virtual void send_text(const std::string& text) = 0;

@@ -31,6 +31,7 @@ struct RoomConfig {
     PhysicsConfig physics{};
     double snapshot_hz = 60.0;
     double grace_s = 60.0;
+    double time_scale = 1.0; // match seconds per wall second while a shot plays
 };
 
 // Rules config for a create_room request: the rule set's defaults, the server's shot clock,

@@ -12,6 +12,7 @@ struct ServerSettings {
     std::uint16_t port = 0;               // 0 = ephemeral
     int threads = 2;                      // I/O threads
     double snapshot_hz = 60.0;            // snapshots per second while pieces move
+    double time_scale = 1.0;              // match seconds per wall second (tests speed play up)
     std::size_t max_message_bytes = 4096; // client text frame limit
     double max_rate = 30.0;               // client messages per second (sustained)
     double rate_burst = 60.0;             // bucket size
