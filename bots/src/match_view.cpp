@@ -63,20 +63,6 @@ bool moved_from_layout(const rules::MatchState& state) {
 
 } // namespace
 
-rules::RuleSet to_rules(proto::RuleSet rule_set) {
-    switch (rule_set) {
-    case proto::RuleSet::Icf:
-        return rules::RuleSet::Icf;
-    case proto::RuleSet::Seed:
-        return rules::RuleSet::Seed;
-    case proto::RuleSet::Freestyle:
-        return rules::RuleSet::Freestyle;
-    case proto::RuleSet::DiscPool:
-        return rules::RuleSet::DiscPool;
-    }
-    return rules::RuleSet::Icf;
-}
-
 rules::MatchState match_state_from(const proto::RoomState& room, const PhysicsConfig& physics) {
     rules::MatchState state =
         rules::new_match(to_rules(room.rule_set), rules_config_from(room), physics);

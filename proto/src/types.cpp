@@ -164,4 +164,18 @@ Body to_body(const BoardBody& body) {
     return out;
 }
 
+rules::RuleSet to_rules(RuleSet rule_set) {
+    switch (rule_set) {
+    case RuleSet::Icf:
+        return rules::RuleSet::Icf;
+    case RuleSet::Seed:
+        return rules::RuleSet::Seed;
+    case RuleSet::Freestyle:
+        return rules::RuleSet::Freestyle;
+    case RuleSet::DiscPool:
+        return rules::RuleSet::DiscPool;
+    }
+    return rules::RuleSet::Icf;
+}
+
 } // namespace carrom::proto

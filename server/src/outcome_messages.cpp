@@ -4,20 +4,6 @@
 
 namespace carrom::server {
 
-rules::RuleSet to_rules(proto::RuleSet rule_set) {
-    switch (rule_set) {
-    case proto::RuleSet::Icf:
-        return rules::RuleSet::Icf;
-    case proto::RuleSet::Seed:
-        return rules::RuleSet::Seed;
-    case proto::RuleSet::Freestyle:
-        return rules::RuleSet::Freestyle;
-    case proto::RuleSet::DiscPool:
-        return rules::RuleSet::DiscPool;
-    }
-    return rules::RuleSet::Icf;
-}
-
 proto::QueenInfo to_proto(const rules::QueenState& queen) {
     switch (queen.status) {
     case rules::QueenStatus::OnBoard:

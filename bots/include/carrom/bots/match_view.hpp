@@ -9,7 +9,6 @@
 
 namespace carrom::bots {
 
-rules::RuleSet to_rules(proto::RuleSet rule_set);
 
 rules::MatchState match_state_from(const proto::RoomState& room, const PhysicsConfig& physics = {});
 

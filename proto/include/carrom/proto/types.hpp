@@ -3,6 +3,7 @@
 // string on the wire; parse_* return false for any other string.
 
 #include "carrom/body.hpp"
+#include "carrom/rules/rule_set.hpp"
 #include "carrom/scene.hpp"
 #include "carrom/vec2.hpp"
 
@@ -28,6 +29,8 @@ enum class QueenState : std::uint8_t { OnBoard, Pending, Covered, None };
 enum class BotLevel : std::uint8_t { Random, Easy, Medium, Hard }; // "random" "easy" ...
 
 std::string_view to_string(RuleSet value);
+// The rules engine's rule set for a wire rule set (the two enums list the same rule sets).
+rules::RuleSet to_rules(RuleSet value);
 std::string_view to_string(Role value);
 std::string_view to_string(Colour value);
 std::string_view to_string(Phase value);

@@ -10,7 +10,6 @@
 
 namespace carrom::server {
 
-rules::RuleSet to_rules(proto::RuleSet rule_set);
 proto::QueenInfo to_proto(const rules::QueenState& queen);
 proto::Colour colour_of_team(const rules::MatchState& state, int team);
 // One plain sentence per rule code (foul messages).
