@@ -53,10 +53,6 @@ constexpr NameTable<BotLevel, 4> kBotLevels{{{BotLevel::Random, "random"},
                                              {BotLevel::Medium, "medium"},
                                              {BotLevel::Hard, "hard"}}};
 constexpr NameTable<Baseline, 2> kBaselines{{{Baseline::Bottom, "bottom"}, {Baseline::Top, "top"}}};
-constexpr NameTable<BodyKind, 4> kBodyKinds{{{BodyKind::Black, "black"},
-                                             {BodyKind::White, "white"},
-                                             {BodyKind::Queen, "queen"},
-                                             {BodyKind::Striker, "striker"}}};
 
 } // namespace
 
@@ -82,7 +78,7 @@ std::string_view baseline_name(Baseline value) {
     return name_of(kBaselines, value);
 }
 std::string_view body_kind_name(BodyKind value) {
-    return name_of(kBodyKinds, value);
+    return carrom::to_string(value); // the names live with BodyKind in common/
 }
 
 bool parse(std::string_view text, RuleSet& out) {
@@ -107,7 +103,7 @@ bool parse(std::string_view text, Baseline& out) {
     return parse_name(kBaselines, text, out);
 }
 bool parse(std::string_view text, BodyKind& out) {
-    return parse_name(kBodyKinds, text, out);
+    return parse_body_kind(text, out);
 }
 
 bool is_room_code(std::string_view text) {
