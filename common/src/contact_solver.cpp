@@ -177,8 +177,14 @@ void ContactSolver::resolve(std::span<Contact> contacts, std::span<Vec2> vel,
         const double inv_a = inv_mass[static_cast<std::size_t>(c.a)];
         const double inv_b = c.b >= 0 ? inv_mass[static_cast<std::size_t>(c.b)] : 0.0;
         const double u = normal_velocity(c, vel);
-        compression_.assign(1, inv_a + inv_b > 0.0 && u < 0.0 ? -u / (inv_a + inv_b) : 0.0);
-        apply(contacts, vel, inv_mass, false, 0.0);
+        const double compression = inv_a + inv_b > 0.0 && u < 0.0 ? -u / (inv_a + inv_b) : 0.0;
+        // The same arithmetic as apply() with this one compression impulse.
+        c.impulse = (1.0 + c.restitution) * compression;
+        const Vec2 dp = c.normal * c.impulse;
+        vel[static_cast<std::size_t>(c.a)] -= dp * inv_a;
+        if (c.b >= 0) {
+            vel[static_cast<std::size_t>(c.b)] += dp * inv_b;
+        }
         return;
     }
     solve_compression(contacts, vel, inv_mass);

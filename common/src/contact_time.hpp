@@ -37,6 +37,10 @@ inline double time_to_reach(Vec2 d, Vec2 w, double reach, double s_max) {
     if (dd < 4.0 * reach * reach) {
         const double dist = std::sqrt(dd);
         c = (dist - reach) * (dist + reach);
+    } else if (c > 2.000001 * -b * s_max) {
+        // Far apart (c > 0): sqrt(b^2 - a c) <= -b, so the root is at least c / (-2 b), which
+        // is beyond s_max even after rounding; the same answer as the full solve, cheaper.
+        return kNever;
     }
     const double a = dot(w, w);
     const double disc = b * b - a * c;

@@ -3,8 +3,12 @@
 //   - next[i] holds the earliest event of body i that is still valid: its own stop, cushion or
 //     pocket, or its first contact with another body given both current trajectories. When a
 //     body's trajectory changes, it and every body whose prediction names it are recomputed;
-//     the global next event is the minimum over next[] (see docs/physics.md, "Event queue").
+//     the global next event is the earliest over next[], i.e. the largest key in keys[] (see
+//     docs/physics.md, "Event queue").
 //   - bodies at rest have no events of their own; a pair with both bodies at rest is never solved.
+//   - with at most 64 bodies: near[] is symmetric and current for every body whose box_dirty is
+//     0; every dirty row is recomputed before a prediction reads near[]; watchers[o] holds
+//     exactly the bodies whose next[] is a Pair naming o.
 
 #include "carrom/exact_engine.hpp"
 
@@ -15,6 +19,7 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #if defined(__SSE2__)
 #include <emmintrin.h>
 #endif
@@ -53,6 +58,16 @@ constexpr int kRoundsBeforeCollapse = 16;
 // Where pocketed bodies are kept, px: far enough that no distance or box test ever passes.
 constexpr Vec2 kFarAway{1e30, 1e30};
 
+// A float below (above) the finite x, px: x is moved outwards by 1e-3 px plus 1e-6 of |x|, more
+// than the relative rounding of the conversion (2^-24), so the float box contains the double
+// box. Branch-free, unlike std::nextafter.
+float float_down(double x) {
+    return static_cast<float>(x - (std::fabs(x) * 1e-6 + 1e-3));
+}
+float float_up(double x) {
+    return static_cast<float>(x + (std::fabs(x) * 1e-6 + 1e-3));
+}
+
 int cushion_index(Vec2 normal) {
     if (normal.x < 0.0) {
         return kCushionLeft;
@@ -73,6 +88,9 @@ struct ExactEngine::Impl {
     double inv_k = 0.0; // s
     std::array<Vec2, 4> pockets{};
     std::array<Box, 4> pocket_boxes{};
+    // A path box with x0 > pocket_gap.x0 and x1 < pocket_gap.x1 (or the same in y) lies between
+    // the pocket boxes of the left and right (top and bottom) pockets and overlaps none.
+    Box pocket_gap{};
 
     // Per body, in input order.
     std::vector<int> ids;
@@ -88,6 +106,9 @@ struct ExactEngine::Impl {
     // Box covering the rest of each body's current path (radius included), px, stored as
     // separate arrays so the broad-phase loop runs without branches.
     std::vector<double> sweep_x0, sweep_y0, sweep_x1, sweep_y1;
+    // The same boxes rounded outwards to float (each float box contains the double box), padded
+    // to a multiple of 4 with empty boxes, so SSE tests four bodies at a time in box_overlaps.
+    std::vector<float> box_x0, box_y0, box_x1, box_y1;
     std::vector<Vec2> pocketed_at; // where a pocketed body entered its pocket, px
     // near[i] bit j (== near[j] bit i): the path boxes of i and j overlap. predict(i) runs after
     // every change of i's box and updates row and column i, so two bodies can touch only if
@@ -95,8 +116,25 @@ struct ExactEngine::Impl {
     std::vector<std::uint64_t> near;
     bool use_near = false;
     std::uint64_t box_overlaps(std::size_t i) const;
+    // Per-instant cache of touch_mask(i): valid when touch_stamp[i] == instant_stamp.
+    std::vector<std::uint64_t> touch_bits;
+    std::vector<std::uint64_t> touch_stamp;
+    std::uint64_t instant_stamp = 0;     // incremented by process_instant; never 0 inside one
+    std::vector<std::uint8_t> wall_bits; // bits 0-3: touching the left, right, top, bottom cushion
+    std::uint64_t touch_mask(std::size_t a);
+    void collect_impacts_near();
 
     std::vector<Prediction> next;
+    std::vector<double> keys; // keys[i] == next[i].key, contiguous for the scan for the maximum
+    // With use_near (at most 64 bodies), bit masks over body indices:
+    //   watchers[o] bit j: next[j] is a Pair event naming o;
+    //   active_mask / moving_mask bit i: active[i] / moving[i];
+    //   box_dirty[i]: body i's path box changed since row i of near[] was last computed.
+    std::vector<std::uint64_t> watchers;
+    std::uint64_t active_mask = 0, moving_mask = 0;
+    std::vector<char> box_dirty;
+    void set_next(std::size_t i, const Prediction& p);
+    void update_near(std::size_t i);
     std::vector<int> moving_list; // indices of moving bodies, rebuilt when stale
     bool moving_list_stale = true;
 
@@ -107,8 +145,18 @@ struct ExactEngine::Impl {
     std::vector<double> solve_inv_mass; // 0 for bodies pinned by the stop rule at this instant
     detail::ContactSolver solver;
 
+    // The current time is u_now = e^(-k now). `now` (s) is derived from it only when an event or
+    // segment is recorded or the run ends (now_stale: not yet derived since the last advance).
     double now = 0.0;   // s
     double u_now = 1.0; // e^(-k now)
+    bool now_stale = false;
+    double time_now() {
+        if (now_stale) {
+            now = -std::log(u_now) * inv_k;
+            now_stale = false;
+        }
+        return now;
+    }
     SimOptions options;
     SimResult result;
 
@@ -126,6 +174,11 @@ struct ExactEngine::Impl {
     void stop_body(std::size_t i);
     void pocket_body(std::size_t i, int pocket);
     void process_instant(std::span<const int> seeds);
+    bool isolated_pair_round(std::size_t a, std::size_t b);
+    bool isolated_pair(std::size_t a, std::size_t b);
+    bool collect_isolated_pair();
+    bool collect_lone_body();
+    void collect_walls(std::size_t a);
     void collect_impacts();
     void collect_cluster();
     void solve_groups();
@@ -141,6 +194,20 @@ ExactEngine::Impl::Impl(const PhysicsConfig& c) : config(c) {
     for (std::size_t p = 0; p < pockets.size(); ++p) {
         const double r = c.pocket_radius_px;
         pocket_boxes[p] = {pockets[p].x - r, pockets[p].y - r, pockets[p].x + r, pockets[p].y + r};
+    }
+    const double mid = 0.5 * c.board_size_px;
+    pocket_gap = {-kNever, -kNever, kNever, kNever};
+    for (const Box& pb : pocket_boxes) {
+        if (pb.x0 + pb.x1 < 2.0 * mid) {
+            pocket_gap.x0 = std::max(pocket_gap.x0, pb.x1);
+        } else {
+            pocket_gap.x1 = std::min(pocket_gap.x1, pb.x0);
+        }
+        if (pb.y0 + pb.y1 < 2.0 * mid) {
+            pocket_gap.y0 = std::max(pocket_gap.y0, pb.y1);
+        } else {
+            pocket_gap.y1 = std::min(pocket_gap.y1, pb.y0);
+        }
     }
 }
 
@@ -162,11 +229,24 @@ void ExactEngine::Impl::load(std::span<const Body> bodies) {
     sweep_y0.assign(padded, kNever);
     sweep_x1.assign(padded, -kNever);
     sweep_y1.assign(padded, -kNever);
+    const std::size_t padded4 = (n + 3) / 4 * 4;
+    constexpr float kFloatNever = std::numeric_limits<float>::infinity();
+    box_x0.assign(padded4, kFloatNever);
+    box_y0.assign(padded4, kFloatNever);
+    box_x1.assign(padded4, -kFloatNever);
+    box_y1.assign(padded4, -kFloatNever);
     pocketed_at.assign(n, Vec2{});
     near.assign(n, 0);
+    touch_bits.assign(n, 0);
+    touch_stamp.assign(n, 0);
+    wall_bits.assign(n, 0);
+    instant_stamp = 0;
     moving_list_stale = true;
     use_near = n <= 64;
     next.assign(n, Prediction{});
+    keys.assign(n + (n % 2), kNoEvent); // padded to an even length with kNoEvent
+    watchers.assign(n, 0);
+    box_dirty.assign(n, 1);
     in_frontier.assign(n, 0);
     is_touched.assign(n, 0);
     in_cluster.assign(n, 0);
@@ -189,14 +269,23 @@ void ExactEngine::Impl::load(std::span<const Body> bodies) {
         }
     }
     solve_inv_mass = inv_mass;
+    active_mask = 0;
+    moving_mask = 0;
+    for (std::size_t i = 0; use_near && i < n; ++i) {
+        active_mask |= static_cast<std::uint64_t>(active[i] != 0) << i;
+        moving_mask |= static_cast<std::uint64_t>(moving[i] != 0) << i;
+    }
     max_radius = 0.0;
     for (double r : radius) {
         max_radius = std::max(max_radius, r);
     }
     now = 0.0;
     u_now = 1.0;
+    now_stale = false;
     result.bodies.assign(bodies.begin(), bodies.end());
     result.events.clear();
+    result.pocket_order.clear();
+    result.collision_counts.assign(bodies.size(), 0);
     result.trajectory.initial.clear();
     result.trajectory.segments.clear();
     if (options.record_trajectory) {
@@ -208,32 +297,52 @@ void ExactEngine::Impl::load(std::span<const Body> bodies) {
 }
 
 void ExactEngine::Impl::refresh(std::size_t i) {
-    speed[i] = length(vel[i]);
-    const char now_moving = active[i] && speed[i] > 0.0;
-    moving_list_stale = moving_list_stale || now_moving != moving[i];
-    moving[i] = now_moving;
-    const double r = radius[i];
-    Vec2 end = pos[i];
-    if (moving[i]) {
-        end += vel[i] * stop_s(i);
+    const Vec2 p = pos[i];
+    const Vec2 v = vel[i];
+    const double sp = length(v);
+    speed[i] = sp;
+    const bool is_active = active[i] != 0;
+    const bool now_moving = is_active && sp > 0.0;
+    if (use_near) {
+        // Branch-free: bit i of each mask is replaced.
+        const std::uint64_t bit = std::uint64_t{1} << i;
+        active_mask = (active_mask & ~bit) | (static_cast<std::uint64_t>(is_active) << i);
+        moving_mask = (moving_mask & ~bit) | (static_cast<std::uint64_t>(now_moving) << i);
+    } else {
+        moving_list_stale = moving_list_stale || now_moving != (moving[i] != 0);
     }
-    sweep_x0[i] = std::min(pos[i].x, end.x) - r;
-    sweep_y0[i] = std::min(pos[i].y, end.y) - r;
-    sweep_x1[i] = std::max(pos[i].x, end.x) + r;
-    sweep_y1[i] = std::max(pos[i].y, end.y) + r;
+    moving[i] = static_cast<char>(now_moving);
+    box_dirty[i] = 1;
+    const double r = radius[i];
+    Vec2 end = p;
+    if (now_moving) {
+        end += v * ((1.0 - config.stop_speed_px_s / sp) * inv_k); // the stop, stop_s(i)
+    }
+    const double x0 = std::min(p.x, end.x) - r;
+    const double y0 = std::min(p.y, end.y) - r;
+    const double x1 = std::max(p.x, end.x) + r;
+    const double y1 = std::max(p.y, end.y) + r;
+    sweep_x0[i] = x0;
+    sweep_y0[i] = y0;
+    sweep_x1[i] = x1;
+    sweep_y1[i] = y1;
+    box_x0[i] = float_down(x0);
+    box_y0[i] = float_down(y0);
+    box_x1[i] = float_up(x1);
+    box_y1[i] = float_up(y1);
 }
 
 void ExactEngine::Impl::emit(EventKind kind, std::size_t a, int b, double impulse) {
     ++result.stats.events;
     if (options.record_events) {
-        result.events.push_back({now, kind, ids[a], b, impulse, pos[a]});
+        result.events.push_back({time_now(), kind, ids[a], b, impulse, pos[a]});
     }
 }
 
 void ExactEngine::Impl::record_segment(std::size_t i) {
     if (options.record_trajectory) {
         result.trajectory.segments.push_back(
-            {now, static_cast<int>(i), pos[i], vel[i], active[i] == 0});
+            {time_now(), static_cast<int>(i), pos[i], vel[i], active[i] == 0});
     }
 }
 
@@ -248,6 +357,7 @@ void ExactEngine::Impl::pocket_body(std::size_t i, int pocket) {
     active[i] = 0;
     vel[i] = {};
     emit(EventKind::Pocket, i, pocket, 0.0);
+    result.pocket_order.push_back(ids[i]);
     record_segment(i);
     pocketed_at[i] = pos[i];
     pos[i] = kFarAway;
@@ -261,6 +371,23 @@ void ExactEngine::Impl::advance(double u) {
     }
     const double decay = u / u_now;         // e^(-k dt)
     const double s = (1.0 - decay) * inv_k; // (1 - e^(-k dt)) / k
+    // Raw pointers: the stores cannot alias the vectors themselves, so nothing is reloaded.
+    Vec2* const p = pos.data();
+    Vec2* const v = vel.data();
+    double* const sp = speed.data();
+    if (use_near) {
+        // The moving bodies are the set bits of moving_mask, always current.
+        for (std::uint64_t bits = moving_mask; bits != 0; bits &= bits - 1) {
+            const auto i = static_cast<std::size_t>(std::countr_zero(bits));
+            const Vec2 vi = v[i];
+            p[i] += vi * s;
+            v[i] = vi * decay;
+            sp[i] *= decay;
+        }
+        u_now = u;
+        now_stale = true;
+        return;
+    }
     const std::size_t n = pos.size();
     if (moving_list_stale) {
         moving_list.clear();
@@ -273,19 +400,20 @@ void ExactEngine::Impl::advance(double u) {
     }
     for (int mi : moving_list) {
         const auto i = static_cast<std::size_t>(mi);
-        pos[i] += vel[i] * s;
-        vel[i] *= decay;
-        speed[i] *= decay;
+        const Vec2 vi = v[i];
+        p[i] += vi * s;
+        v[i] = vi * decay;
+        sp[i] *= decay;
     }
     u_now = u;
-    now = -std::log(u) * inv_k;
+    now_stale = true;
 }
 
 void ExactEngine::Impl::predict(std::size_t i) {
     Prediction best;
     double best_s = kNever;
     if (!active[i]) {
-        next[i] = best;
+        set_next(i, best);
         return;
     }
     if (moving[i]) {
@@ -302,7 +430,9 @@ void ExactEngine::Impl::predict(std::size_t i) {
             best_s = s;
             best = {0.0, Next::Cushion, high ? kCushionBottom : kCushionTop};
         }
-        for (std::size_t p = 0; p < pockets.size(); ++p) {
+        const bool between_pockets = (sweep_x0[i] > pocket_gap.x0 && sweep_x1[i] < pocket_gap.x1) ||
+                                     (sweep_y0[i] > pocket_gap.y0 && sweep_y1[i] < pocket_gap.y1);
+        for (std::size_t p = 0; !between_pockets && p < pockets.size(); ++p) {
             const Box& pb = pocket_boxes[p];
             if (!(sweep_x0[i] <= pb.x1 && pb.x0 <= sweep_x1[i] && sweep_y0[i] <= pb.y1 &&
                   pb.y0 <= sweep_y1[i])) {
@@ -318,67 +448,106 @@ void ExactEngine::Impl::predict(std::size_t i) {
     }
     // Broad phase: only bodies whose path boxes overlap body i's.
     const std::size_t n = pos.size();
-    std::uint64_t row = 0;
     if (use_near) {
-        row = box_overlaps(i) & ~(std::uint64_t{1} << i);
-        // Keep near symmetric: flip bit i of every body whose bit in row i changed.
-        for (std::uint64_t diff = row ^ near[i]; diff != 0; diff &= diff - 1) {
-            near[static_cast<std::size_t>(std::countr_zero(diff))] ^= std::uint64_t{1} << i;
+        if (box_dirty[i]) {
+            update_near(i);
         }
-        near[i] = row;
-    }
-    for (std::size_t scan = 0; scan < (use_near ? std::size_t{64} : n); ++scan) {
-        std::size_t j = scan;
-        if (use_near) {
-            if (row == 0) {
-                break;
+        // Only active partners, and only moving ones if i is at rest (two bodies at rest never
+        // meet). Raw pointers: the loop stores nothing, so nothing is reloaded.
+        const std::uint64_t candidates =
+            near[i] & active_mask & (moving[i] ? ~std::uint64_t{0} : moving_mask);
+        const Vec2* const p = pos.data();
+        const Vec2* const v = vel.data();
+        const double* const r = radius.data();
+        const Vec2 pi = p[i];
+        const Vec2 vi = v[i];
+        const double ri = r[i];
+        int tests = 0;
+        for (std::uint64_t row = candidates; row != 0; row &= row - 1) {
+            const auto j = static_cast<std::size_t>(std::countr_zero(row));
+            ++tests;
+            const double s = detail::time_to_reach(p[j] - pi, v[j] - vi, ri + r[j], best_s);
+            // The contact counts only if it comes before body j stops.
+            if (s < best_s && (!moving[j] || s < stop_s(j))) {
+                best_s = s;
+                best = {0.0, Next::Pair, static_cast<int>(j)};
             }
-            j = static_cast<std::size_t>(std::countr_zero(row));
-            row &= row - 1;
-        } else if (!(sweep_x0[i] <= sweep_x1[j] && sweep_x0[j] <= sweep_x1[i] &&
-                     sweep_y0[i] <= sweep_y1[j] && sweep_y0[j] <= sweep_y1[i])) {
-            continue;
         }
-        if (j == i || !active[j] || (!moving[i] && !moving[j])) {
-            continue;
-        }
-        ++result.stats.pair_tests;
-        const double s =
-            detail::time_to_reach(pos[j] - pos[i], vel[j] - vel[i], radius[i] + radius[j], best_s);
-        // The contact counts only if it comes before body j stops.
-        if (s < best_s && (!moving[j] || s < stop_s(j))) {
-            best_s = s;
-            best = {0.0, Next::Pair, static_cast<int>(j)};
+        result.stats.pair_tests += tests;
+    } else {
+        for (std::size_t j = 0; j < n; ++j) {
+            if (!(sweep_x0[i] <= sweep_x1[j] && sweep_x0[j] <= sweep_x1[i] &&
+                  sweep_y0[i] <= sweep_y1[j] && sweep_y0[j] <= sweep_y1[i])) {
+                continue;
+            }
+            if (j == i || !active[j] || (!moving[i] && !moving[j])) {
+                continue;
+            }
+            ++result.stats.pair_tests;
+            const double s = detail::time_to_reach(pos[j] - pos[i], vel[j] - vel[i],
+                                                   radius[i] + radius[j], best_s);
+            // The contact counts only if it comes before body j stops.
+            if (s < best_s && (!moving[j] || s < stop_s(j))) {
+                best_s = s;
+                best = {0.0, Next::Pair, static_cast<int>(j)};
+            }
         }
     }
     best.key = best.kind == Next::None ? kNoEvent : u_now * (1.0 - k * best_s);
-    next[i] = best;
+    set_next(i, best);
 }
 
-// Bit j set: the path boxes of i and j overlap (i itself included). n <= 64. The box arrays
-// are padded to an even length with empty boxes, so SSE2 can test two bodies at a time.
+void ExactEngine::Impl::set_next(std::size_t i, const Prediction& p) {
+    if (use_near) {
+        const std::uint64_t bit = std::uint64_t{1} << i;
+        if (next[i].kind == Next::Pair) {
+            watchers[static_cast<std::size_t>(next[i].other)] &= ~bit;
+        }
+        if (p.kind == Next::Pair) {
+            watchers[static_cast<std::size_t>(p.other)] |= bit;
+        }
+    }
+    next[i] = p;
+    keys[i] = p.key;
+}
+
+// Recomputes row i of near[] from the current boxes and keeps near symmetric by flipping bit i
+// of every body whose bit in row i changed. Only for active bodies (a pocketed body's row is
+// kept up to date by the flips of the others).
+void ExactEngine::Impl::update_near(std::size_t i) {
+    const std::uint64_t row = box_overlaps(i) & ~(std::uint64_t{1} << i);
+    for (std::uint64_t diff = row ^ near[i]; diff != 0; diff &= diff - 1) {
+        near[static_cast<std::size_t>(std::countr_zero(diff))] ^= std::uint64_t{1} << i;
+    }
+    near[i] = row;
+    box_dirty[i] = 0;
+}
+
+// Bit j set: the float path boxes of i and j overlap (i itself included). n <= 64. The float
+// boxes contain the double ones, so every pair whose double boxes overlap is included (and a
+// few more that merely pass the float test; their contact solve simply finds no contact).
 std::uint64_t ExactEngine::Impl::box_overlaps(std::size_t i) const {
-    const double* bx0 = sweep_x0.data();
-    const double* by0 = sweep_y0.data();
-    const double* bx1 = sweep_x1.data();
-    const double* by1 = sweep_y1.data();
+    const float* bx0 = box_x0.data();
+    const float* by0 = box_y0.data();
+    const float* bx1 = box_x1.data();
+    const float* by1 = box_y1.data();
     std::uint64_t row = 0;
-    const std::size_t n = sweep_x0.size();
+    const std::size_t n = box_x0.size();
 #if defined(__SSE2__)
-    const __m128d x0 = _mm_set1_pd(bx0[i]);
-    const __m128d y0 = _mm_set1_pd(by0[i]);
-    const __m128d x1 = _mm_set1_pd(bx1[i]);
-    const __m128d y1 = _mm_set1_pd(by1[i]);
-    for (std::size_t j = 0; j < n; j += 2) {
-        const __m128d hit_x = _mm_and_pd(_mm_cmple_pd(x0, _mm_loadu_pd(bx1 + j)),
-                                         _mm_cmple_pd(_mm_loadu_pd(bx0 + j), x1));
-        const __m128d hit_y = _mm_and_pd(_mm_cmple_pd(y0, _mm_loadu_pd(by1 + j)),
-                                         _mm_cmple_pd(_mm_loadu_pd(by0 + j), y1));
-        const auto bits = static_cast<std::uint64_t>(_mm_movemask_pd(_mm_and_pd(hit_x, hit_y)));
+    const __m128 x0 = _mm_set1_ps(bx0[i]);
+    const __m128 y0 = _mm_set1_ps(by0[i]);
+    const __m128 x1 = _mm_set1_ps(bx1[i]);
+    const __m128 y1 = _mm_set1_ps(by1[i]);
+    for (std::size_t j = 0; j < n; j += 4) {
+        const __m128 hit_x = _mm_and_ps(_mm_cmple_ps(x0, _mm_loadu_ps(bx1 + j)),
+                                        _mm_cmple_ps(_mm_loadu_ps(bx0 + j), x1));
+        const __m128 hit_y = _mm_and_ps(_mm_cmple_ps(y0, _mm_loadu_ps(by1 + j)),
+                                        _mm_cmple_ps(_mm_loadu_ps(by0 + j), y1));
+        const auto bits = static_cast<std::uint64_t>(_mm_movemask_ps(_mm_and_ps(hit_x, hit_y)));
         row |= bits << j;
     }
 #else
-    const double x0 = bx0[i], y0 = by0[i], x1 = bx1[i], y1 = by1[i];
+    const float x0 = bx0[i], y0 = by0[i], x1 = bx1[i], y1 = by1[i];
     for (std::size_t j = 0; j < n; ++j) {
         const bool hit = (x0 <= bx1[j]) & (bx0[j] <= x1) & (y0 <= by1[j]) & (by0[j] <= y1);
         row |= static_cast<std::uint64_t>(hit) << j;
@@ -394,8 +563,111 @@ double ExactEngine::Impl::restitution(double approach_px_s, bool cushion) const 
     return cushion ? config.cushion_restitution : config.disc_restitution;
 }
 
+// Bit b set: bodies a and b touch (gap <= kTouchTolerancePx) and their path boxes overlap
+// (near[a] bit b). Positions and near[] do not change during an instant, so process_instant
+// computes each body's mask at most once per instant (touch_stamp == instant_stamp).
+std::uint64_t ExactEngine::Impl::touch_mask(std::size_t a) {
+    if (touch_stamp[a] == instant_stamp) {
+        return touch_bits[a];
+    }
+    const Vec2 pa = pos[a];
+    const double ra = radius[a];
+    std::uint64_t mask = 0;
+    for (std::uint64_t bits = near[a]; bits != 0; bits &= bits - 1) {
+        const auto b = static_cast<std::size_t>(std::countr_zero(bits));
+        const Vec2 d = pos[b] - pa;
+        const double touch = ra + radius[b] + kTouchTolerancePx;
+        const bool touching = length_squared(d) <= touch * touch;
+        mask |= static_cast<std::uint64_t>(touching) << b;
+    }
+    const Vec2 lo_gap = pa - Vec2{lo[a], lo[a]};
+    const Vec2 hi_gap = Vec2{hi[a], hi[a]} - pa;
+    wall_bits[a] = static_cast<std::uint8_t>(
+        (lo_gap.x <= kTouchTolerancePx ? 1 : 0) | (hi_gap.x <= kTouchTolerancePx ? 2 : 0) |
+        (lo_gap.y <= kTouchTolerancePx ? 4 : 0) | (hi_gap.y <= kTouchTolerancePx ? 8 : 0));
+    touch_stamp[a] = instant_stamp;
+    touch_bits[a] = mask;
+    return mask;
+}
+
+// collect_impacts for scenes of at most 64 bodies: the same contacts in the same order, from the
+// per-instant touch masks (touching pairs) and wall bits (touching cushions).
+void ExactEngine::Impl::collect_impacts_near() {
+    contacts.clear();
+    std::uint64_t frontier_mask = 0;
+    for (int a : frontier) {
+        frontier_mask |= std::uint64_t{1} << a;
+    }
+    const Vec2* const p = pos.data();
+    const Vec2* const v = vel.data();
+    const double* const im = solve_inv_mass.data();
+    for (int ai : frontier) {
+        const auto a = static_cast<std::size_t>(ai);
+        if (!active[a]) {
+            continue;
+        }
+        // Touching active partners; a pair of two frontier bodies is visited from the lower one.
+        const std::uint64_t lower = (std::uint64_t{1} << a) - 1;
+        std::uint64_t bits = touch_mask(a) & active_mask & ~(frontier_mask & lower);
+        const Vec2 pa = p[a];
+        const Vec2 va = v[a];
+        for (; bits != 0; bits &= bits - 1) {
+            const auto b = static_cast<std::size_t>(std::countr_zero(bits));
+            if (im[a] == 0.0 && im[b] == 0.0) {
+                continue;
+            }
+            const Vec2 d = p[b] - pa;
+            const double dist = std::sqrt(length_squared(d));
+            const Vec2 normal = d * (1.0 / dist);
+            const double u = dot(v[b] - va, normal);
+            if (u < -kApproachTolerancePxS) {
+                contacts.push_back({ai, static_cast<int>(b), normal, restitution(-u, false), 0.0});
+            }
+        }
+        collect_walls(a);
+    }
+}
+
+// Appends the approaching cushion contacts of body a (its wall bits are current).
+void ExactEngine::Impl::collect_walls(std::size_t a) {
+    const unsigned walls = wall_bits[a];
+    if (walls == 0) {
+        return;
+    }
+    const Vec2 va = vel[a];
+    const int ai = static_cast<int>(a);
+    if ((walls & 1U) != 0 && va.x < -kApproachTolerancePxS) {
+        contacts.push_back({ai, -1, {-1.0, 0.0}, restitution(dot(va, {-1.0, 0.0}), true), 0.0});
+    }
+    if ((walls & 2U) != 0 && va.x > kApproachTolerancePxS) {
+        contacts.push_back({ai, -1, {1.0, 0.0}, restitution(dot(va, {1.0, 0.0}), true), 0.0});
+    }
+    if ((walls & 4U) != 0 && va.y < -kApproachTolerancePxS) {
+        contacts.push_back({ai, -1, {0.0, -1.0}, restitution(dot(va, {0.0, -1.0}), true), 0.0});
+    }
+    if ((walls & 8U) != 0 && va.y > kApproachTolerancePxS) {
+        contacts.push_back({ai, -1, {0.0, 1.0}, restitution(dot(va, {0.0, 1.0}), true), 0.0});
+    }
+}
+
+// collect_impacts_near for a frontier of one active body that touches no other active body: its
+// cushion contacts only. Returns false, collecting nothing, otherwise.
+bool ExactEngine::Impl::collect_lone_body() {
+    const auto a = static_cast<std::size_t>(frontier[0]);
+    if (!active[a] || (touch_mask(a) & active_mask) != 0) {
+        return false;
+    }
+    contacts.clear();
+    collect_walls(a);
+    return true;
+}
+
 // Impacts at `now`: touching, approaching contacts that involve a body of the frontier.
 void ExactEngine::Impl::collect_impacts() {
+    if (use_near) {
+        collect_impacts_near();
+        return;
+    }
     contacts.clear();
     for (int a : frontier) {
         in_frontier[static_cast<std::size_t>(a)] = 1;
@@ -407,13 +679,15 @@ void ExactEngine::Impl::collect_impacts() {
         }
         const Vec2 pa = pos[a];
         const double reach_max = radius[a] + max_radius + kTouchTolerancePx;
-        const std::uint64_t near_a = use_near ? near[a] : 0;
-        const std::size_t count =
-            use_near ? static_cast<std::size_t>(std::popcount(near_a)) : pos.size();
-        std::uint64_t bits = near_a;
+        const std::uint64_t candidates = use_near ? touch_mask(a) : 0;
+        const std::size_t count = use_near ? 64 : pos.size();
+        std::uint64_t bits = candidates;
         for (std::size_t scan = 0; scan < count; ++scan) {
             std::size_t b = scan;
             if (use_near) {
+                if (bits == 0) {
+                    break;
+                }
                 b = static_cast<std::size_t>(std::countr_zero(bits));
                 bits &= bits - 1;
             }
@@ -521,15 +795,15 @@ void ExactEngine::Impl::collect_cluster() {
 // group simultaneously. Group order and the order inside a group follow the contact list, which
 // is deterministic.
 void ExactEngine::Impl::solve_groups() {
+    if (contacts.size() == 1) {
+        solver.resolve(contacts, vel, solve_inv_mass);
+        return;
+    }
     for (const Contact& c : contacts) {
         root[static_cast<std::size_t>(c.a)] = c.a;
         if (c.b >= 0) {
             root[static_cast<std::size_t>(c.b)] = c.b;
         }
-    }
-    if (contacts.size() == 1) {
-        solver.resolve(contacts, vel, solve_inv_mass);
-        return;
     }
     auto find = [this](int x) {
         while (root[static_cast<std::size_t>(x)] != x) {
@@ -581,16 +855,26 @@ void ExactEngine::Impl::mark_touched(std::size_t i) {
 // kRoundsBeforeCollapse rounds the cluster is solved plastically; each stop pass pins at least
 // one more body.
 void ExactEngine::Impl::process_instant(std::span<const int> seeds) {
+    ++instant_stamp;
     clear_touched();
     frontier.assign(seeds.begin(), seeds.end());
     for (int s : seeds) {
         mark_touched(static_cast<std::size_t>(s));
     }
     int rounds = 0;
+    if (use_near && seeds.size() == 2 &&
+        isolated_pair_round(static_cast<std::size_t>(seeds[0]),
+                            static_cast<std::size_t>(seeds[1]))) {
+        rounds = 1;
+    }
     const double stop2 = config.stop_speed_px_s * config.stop_speed_px_s;
     const int max_rounds = (kRoundsBeforeCollapse + 2) * (static_cast<int>(pos.size()) + 1);
     while (!frontier.empty() && rounds < max_rounds) {
-        collect_impacts();
+        const bool collected = use_near && ((frontier.size() == 2 && collect_isolated_pair()) ||
+                                            (frontier.size() == 1 && collect_lone_body()));
+        if (!collected) {
+            collect_impacts();
+        }
         if (contacts.empty()) {
             // The cascade has ended: apply the stop rule to every body changed at this instant.
             next_frontier.clear();
@@ -615,23 +899,35 @@ void ExactEngine::Impl::process_instant(std::span<const int> seeds) {
         }
         solve_groups();
         next_frontier.clear();
+        std::uint64_t in_next = 0; // with use_near: bit i set when i is in next_frontier
         for (const Contact& c : contacts) {
             if (c.impulse <= 0.0) {
                 continue;
             }
             const auto a = static_cast<std::size_t>(c.a);
             if (c.b >= 0) {
+                ++result.collision_counts[a];
+                ++result.collision_counts[static_cast<std::size_t>(c.b)];
                 emit(EventKind::Collision, a, ids[static_cast<std::size_t>(c.b)], c.impulse);
             } else {
                 emit(EventKind::Cushion, a, cushion_index(c.normal), c.impulse);
             }
             for (int body : {c.a, c.b}) {
-                if (body >= 0 && solve_inv_mass[static_cast<std::size_t>(body)] != 0.0 &&
-                    std::find(next_frontier.begin(), next_frontier.end(), body) ==
-                        next_frontier.end()) {
-                    next_frontier.push_back(body);
-                    mark_touched(static_cast<std::size_t>(body));
+                if (body < 0 || solve_inv_mass[static_cast<std::size_t>(body)] == 0.0) {
+                    continue;
                 }
+                if (use_near) {
+                    const std::uint64_t bit = std::uint64_t{1} << body;
+                    if ((in_next & bit) != 0) {
+                        continue;
+                    }
+                    in_next |= bit;
+                } else if (std::find(next_frontier.begin(), next_frontier.end(), body) !=
+                           next_frontier.end()) {
+                    continue;
+                }
+                next_frontier.push_back(body);
+                mark_touched(static_cast<std::size_t>(body));
             }
         }
         frontier.swap(next_frontier);
@@ -643,6 +939,87 @@ void ExactEngine::Impl::process_instant(std::span<const int> seeds) {
         refresh(t);
         record_segment(t);
     }
+}
+
+// The first round of process_instant for a pair event when the two bodies touch each other and
+// nothing else (no other body, no cushion): the same contact, solve and bookkeeping as the
+// general round (collect_impacts_near, solve_groups), without its loops. Returns false, having
+// changed nothing but the per-instant touch cache, when the pair is not isolated or does not
+// approach; the general round then runs.
+bool ExactEngine::Impl::isolated_pair_round(std::size_t a, std::size_t b) {
+    if (!isolated_pair(a, b)) {
+        return false;
+    }
+    // As in collect_impacts_near: the pair is visited from its lower index.
+    const std::size_t lo_i = std::min(a, b);
+    const std::size_t hi_i = std::max(a, b);
+    if (solve_inv_mass[lo_i] == 0.0 && solve_inv_mass[hi_i] == 0.0) {
+        return false;
+    }
+    const Vec2 d = pos[hi_i] - pos[lo_i];
+    const double dist = std::sqrt(length_squared(d));
+    const Vec2 normal = d * (1.0 / dist);
+    const double u = dot(vel[hi_i] - vel[lo_i], normal);
+    if (!(u < -kApproachTolerancePxS)) {
+        return false;
+    }
+    contacts.clear();
+    contacts.push_back(
+        {static_cast<int>(lo_i), static_cast<int>(hi_i), normal, restitution(-u, false), 0.0});
+    ++result.stats.contact_rounds;
+    solver.resolve(contacts, vel, solve_inv_mass);
+    frontier.clear();
+    const Contact& c = contacts.front();
+    if (c.impulse > 0.0) {
+        ++result.collision_counts[lo_i];
+        ++result.collision_counts[hi_i];
+        emit(EventKind::Collision, lo_i, ids[hi_i], c.impulse);
+        for (std::size_t body : {lo_i, hi_i}) {
+            if (solve_inv_mass[body] != 0.0) {
+                frontier.push_back(static_cast<int>(body));
+                mark_touched(body);
+            }
+        }
+    }
+    return true;
+}
+
+// Bodies a and b (use_near) are distinct, active, touch each other and touch nothing else: no
+// other active body and no cushion.
+bool ExactEngine::Impl::isolated_pair(std::size_t a, std::size_t b) {
+    if (!active[a] || !active[b] || a == b) {
+        return false;
+    }
+    const std::uint64_t bit_a = std::uint64_t{1} << a;
+    const std::uint64_t bit_b = std::uint64_t{1} << b;
+    return (touch_mask(a) & active_mask) == bit_b && (touch_mask(b) & active_mask) == bit_a &&
+           wall_bits[a] == 0 && wall_bits[b] == 0;
+}
+
+// collect_impacts_near for a frontier of two bodies that form an isolated pair: the same
+// contacts (none, or the pair's, visited from its lower index). Returns false, and collects
+// nothing, when the frontier is not such a pair.
+bool ExactEngine::Impl::collect_isolated_pair() {
+    const auto a = static_cast<std::size_t>(frontier[0]);
+    const auto b = static_cast<std::size_t>(frontier[1]);
+    if (!isolated_pair(a, b)) {
+        return false;
+    }
+    contacts.clear();
+    const std::size_t lo_i = std::min(a, b);
+    const std::size_t hi_i = std::max(a, b);
+    if (solve_inv_mass[lo_i] == 0.0 && solve_inv_mass[hi_i] == 0.0) {
+        return true;
+    }
+    const Vec2 d = pos[hi_i] - pos[lo_i];
+    const double dist = std::sqrt(length_squared(d));
+    const Vec2 normal = d * (1.0 / dist);
+    const double u = dot(vel[hi_i] - vel[lo_i], normal);
+    if (u < -kApproachTolerancePxS) {
+        contacts.push_back(
+            {static_cast<int>(lo_i), static_cast<int>(hi_i), normal, restitution(-u, false), 0.0});
+    }
+    return true;
 }
 
 void ExactEngine::Impl::clear_touched() {
@@ -658,7 +1035,13 @@ void ExactEngine::Impl::settle_initial_state() {
             continue;
         }
         for (std::size_t p = 0; p < pockets.size(); ++p) {
-            if (length(pos[i] - pockets[p]) < config.pocket_radius_px) {
+            // |d| >= max(|d.x|, |d.y|) (also after rounding): most bodies fail the cheap test.
+            const Vec2 d = pos[i] - pockets[p];
+            if (std::fabs(d.x) >= config.pocket_radius_px ||
+                std::fabs(d.y) >= config.pocket_radius_px) {
+                continue;
+            }
+            if (length(d) < config.pocket_radius_px) {
                 pocket_body(i, static_cast<int>(p));
                 break;
             }
@@ -679,6 +1062,12 @@ void ExactEngine::Impl::settle_initial_state() {
         process_instant(seeds);
         clear_touched();
     }
+    // Every row of near[] must be current before any prediction reads it.
+    for (std::size_t i = 0; use_near && i < pos.size(); ++i) {
+        if (active[i] && box_dirty[i]) {
+            update_near(i);
+        }
+    }
     for (std::size_t i = 0; i < pos.size(); ++i) {
         predict(i);
     }
@@ -689,11 +1078,29 @@ void ExactEngine::Impl::run_events() {
     std::vector<int>& seeds = event_seeds;
     long pops = 0;
     while (!next.empty()) {
+        // The largest key; ties go to the lower index.
         std::size_t first = 0;
-        for (std::size_t i = 1; i < next.size(); ++i) {
-            if (next[i].key > next[first].key) {
-                first = i;
+        {
+            const double* const kp = keys.data();
+            const std::size_t count = keys.size();
+#if defined(__SSE2__)
+            __m128d top = _mm_loadu_pd(kp);
+            for (std::size_t i = 2; i < count; i += 2) {
+                top = _mm_max_pd(top, _mm_loadu_pd(kp + i));
             }
+            const double first_key =
+                std::max(_mm_cvtsd_f64(top), _mm_cvtsd_f64(_mm_unpackhi_pd(top, top)));
+            while (kp[first] != first_key) {
+                ++first;
+            }
+#else
+            double first_key = kp[0];
+            for (std::size_t i = 1; i < count; ++i) {
+                const bool later = kp[i] > first_key;
+                first = later ? i : first;
+                first_key = later ? kp[i] : first_key;
+            }
+#endif
         }
         if (next[first].kind == Next::None) {
             break;
@@ -702,6 +1109,7 @@ void ExactEngine::Impl::run_events() {
         if (event.key < u_until) {
             advance(u_until);
             now = options.until_s; // exact, rather than recomputed from the key
+            now_stale = false;
             return;
         }
         // Every pop normally emits at least one event; the pop count guards the bound even if
@@ -740,6 +1148,27 @@ void ExactEngine::Impl::run_events() {
         for (int s : seeds) {
             mark_touched(static_cast<std::size_t>(s));
         }
+        if (use_near) {
+            std::uint64_t changed = 0;
+            for (int t : touched) {
+                changed |= std::uint64_t{1} << t;
+            }
+            // Rows of near[] of every changed body first, so that each prediction reads current
+            // rows; then the predictions in index order.
+            std::uint64_t redo = changed;
+            for (std::uint64_t bits = changed; bits != 0; bits &= bits - 1) {
+                const auto t = static_cast<std::size_t>(std::countr_zero(bits));
+                redo |= watchers[t];
+                if (active[t] && box_dirty[t]) {
+                    update_near(t);
+                }
+            }
+            for (; redo != 0; redo &= redo - 1) {
+                predict(static_cast<std::size_t>(std::countr_zero(redo)));
+            }
+            clear_touched();
+            continue;
+        }
         for (std::size_t j = 0; j < next.size(); ++j) {
             const bool names_changed =
                 next[j].kind == Next::Pair && is_touched[static_cast<std::size_t>(next[j].other)];
@@ -752,7 +1181,7 @@ void ExactEngine::Impl::run_events() {
 }
 
 void ExactEngine::Impl::finish() {
-    result.end_time_s = now;
+    result.end_time_s = time_now();
     for (std::size_t i = 0; i < pos.size(); ++i) {
         Body& b = result.bodies[i];
         b.pos_px = active[i] ? pos[i] : pocketed_at[i];

@@ -1,7 +1,10 @@
 #include "carrom/scene.hpp"
 
+#include <array>
 #include <cmath>
+#include <cstdint>
 #include <numbers>
+#include <vector>
 
 namespace carrom {
 
@@ -82,6 +85,7 @@ Body make_striker(const PhysicsConfig& config, Baseline baseline, const Shot& sh
 
 std::optional<SceneError> validate_scene(const PhysicsConfig& config, std::span<const Body> bodies,
                                          double overlap_tolerance_px) {
+    std::uint64_t small_ids = 0; // bit id set: an earlier body has this id (ids 0 to 63)
     for (std::size_t i = 0; i < bodies.size(); ++i) {
         const Body& b = bodies[i];
         const std::string_view kind = to_string(b.kind);
@@ -89,11 +93,19 @@ std::optional<SceneError> validate_scene(const PhysicsConfig& config, std::span<
             return SceneError{"bad_kind", b.id, "kind",
                               "body " + std::to_string(b.id) + " has an unknown kind"};
         }
-        for (std::size_t j = 0; j < i; ++j) {
-            if (bodies[j].id == b.id) {
-                return SceneError{"duplicate_id", b.id, "id",
-                                  "body " + std::to_string(b.id) + " appears more than once"};
+        bool duplicate = false;
+        if (b.id >= 0 && b.id < 64) {
+            const std::uint64_t bit = std::uint64_t{1} << b.id;
+            duplicate = (small_ids & bit) != 0;
+            small_ids |= bit;
+        } else {
+            for (std::size_t j = 0; j < i && !duplicate; ++j) {
+                duplicate = bodies[j].id == b.id;
             }
+        }
+        if (duplicate) {
+            return SceneError{"duplicate_id", b.id, "id",
+                              "body " + std::to_string(b.id) + " appears more than once"};
         }
         const std::pair<const char*, double> fields[] = {{"pos.x", b.pos_px.x},
                                                          {"pos.y", b.pos_px.y},
@@ -126,23 +138,43 @@ std::optional<SceneError> validate_scene(const PhysicsConfig& config, std::span<
             }
         }
     }
+    // Overlaps: the centres and radii of the bodies on the board are gathered once (on the
+    // stack for scenes of up to 64 bodies), in input order, so the first overlapping pair found
+    // is the same as in a plain double loop over the input.
+    struct Disc {
+        double x, y, r;
+        std::size_t index;
+    };
+    constexpr std::size_t kStackDiscs = 64;
+    std::array<Disc, kStackDiscs> stack_discs;
+    std::vector<Disc> heap_discs;
+    Disc* discs = stack_discs.data();
+    if (bodies.size() > kStackDiscs) {
+        heap_discs.resize(bodies.size());
+        discs = heap_discs.data();
+    }
+    std::size_t count = 0;
     for (std::size_t i = 0; i < bodies.size(); ++i) {
-        for (std::size_t j = i + 1; j < bodies.size(); ++j) {
-            const Body& a = bodies[i];
-            const Body& b = bodies[j];
-            if (a.pocketed || b.pocketed) {
-                continue;
-            }
-            const double reach = config.radius(a.kind) + config.radius(b.kind);
-            const Vec2 d = b.pos_px - a.pos_px;
+        const Body& b = bodies[i];
+        if (!b.pocketed) {
+            discs[count++] = {b.pos_px.x, b.pos_px.y, config.radius(b.kind), i};
+        }
+    }
+    for (std::size_t i = 0; i < count; ++i) {
+        const Disc a = discs[i];
+        for (std::size_t j = i + 1; j < count; ++j) {
+            const double reach = a.r + discs[j].r;
+            const Vec2 d{discs[j].x - a.x, discs[j].y - a.y};
             if (std::fabs(d.x) >= reach || std::fabs(d.y) >= reach) {
                 continue; // cheap rejection; exact test below
             }
             const double overlap = reach - length(d);
             if (overlap > overlap_tolerance_px) {
-                return SceneError{"overlap", b.id, "pos",
-                                  "body " + std::to_string(b.id) + " overlaps body " +
-                                      std::to_string(a.id) + " by " + fmt(overlap) + " px"};
+                const Body& first = bodies[a.index];
+                const Body& second = bodies[discs[j].index];
+                return SceneError{"overlap", second.id, "pos",
+                                  "body " + std::to_string(second.id) + " overlaps body " +
+                                      std::to_string(first.id) + " by " + fmt(overlap) + " px"};
             }
         }
     }

@@ -44,6 +44,42 @@ TEST(ExactDeterminism, RepeatsAreBitIdenticalAndEngineReuseChangesNothing) {
     }
 }
 
+// Scenes of more than 64 bodies skip the bit-mask broad phase and test every pair. Pocketed
+// bodies take no part, so padding the break with pocketed coins must change nothing: both paths
+// give the same events and final state, to the bit.
+TEST(ExactDeterminism, BroadPhaseWithoutBitMasksGivesTheSameBreak) {
+    const PhysicsConfig config;
+    const std::vector<Body> scene = centred_break(config, 1234.5);
+    std::vector<Body> padded = scene;
+    for (int i = 0; i < 50; ++i) {
+        Body extra = coin(1000 + i, 57.0, 57.0);
+        extra.pocketed = true;
+        padded.push_back(extra);
+    }
+    ASSERT_GT(padded.size(), 64U);
+    const SimulateResult small = simulate_exact(config, scene);
+    const SimulateResult large = simulate_exact(config, padded);
+    ASSERT_FALSE(small.error);
+    ASSERT_FALSE(large.error);
+    ASSERT_EQ(small.result.events.size(), large.result.events.size());
+    ASSERT_GT(small.result.events.size(), 20U);
+    for (std::size_t i = 0; i < small.result.events.size(); ++i) {
+        const Event& a = small.result.events[i];
+        const Event& b = large.result.events[i];
+        EXPECT_TRUE(same_bits(a.t_s, b.t_s) && a.kind == b.kind && a.a == b.a && a.b == b.b &&
+                    same_bits(a.impulse, b.impulse) && same_bits(a.pos_px.x, b.pos_px.x) &&
+                    same_bits(a.pos_px.y, b.pos_px.y))
+            << "event " << i;
+    }
+    for (std::size_t i = 0; i < scene.size(); ++i) {
+        const Body& a = small.result.bodies[i];
+        const Body& b = large.result.bodies[i];
+        EXPECT_TRUE(same_bits(a.pos_px.x, b.pos_px.x) && same_bits(a.pos_px.y, b.pos_px.y) &&
+                    a.pocketed == b.pocketed)
+            << "body " << a.id;
+    }
+}
+
 TEST(ExactDeterminism, StandardLayoutIsExactlyMirrorSymmetric) {
     const PhysicsConfig config;
     const std::vector<Body> layout = standard_layout(config);
@@ -184,6 +220,36 @@ TEST(ExactValidation, DuplicateIdsAreRejected) {
     ASSERT_TRUE(sim.error);
     EXPECT_EQ(sim.error->code, "duplicate_id");
     EXPECT_EQ(sim.error->body_id, 5);
+}
+
+TEST(ExactValidation, DuplicateIdsOfAnyValueAreRejectedAtTheSecondBody) {
+    const PhysicsConfig config;
+    // Ids below 0, in 0..63 and above 63 take different paths in validate_scene.
+    for (const int id : {-3, 0, 63, 64, 1000}) {
+        const std::vector<Body> scene{coin(7, 100.0, 100.0), coin(id, 200.0, 200.0),
+                                      coin(id == 9 ? 8 : 9, 300.0, 300.0), coin(id, 400.0, 400.0)};
+        const auto error = validate_scene(config, scene);
+        ASSERT_TRUE(error) << id;
+        EXPECT_EQ(error->code, "duplicate_id") << id;
+        EXPECT_EQ(error->body_id, id);
+    }
+    EXPECT_FALSE(
+        validate_scene(config, std::vector<Body>{coin(-1, 100.0, 100.0), coin(63, 200.0, 200.0),
+                                                 coin(64, 300.0, 300.0)}));
+}
+
+TEST(ExactValidation, TheFirstOverlappingPairInInputOrderIsReported) {
+    const PhysicsConfig config;
+    Body gone = coin(2, 305.0, 300.0);
+    gone.pocketed = true;
+    // 4 overlaps 6 and 9 overlaps 6; the pair (4, 6) comes first; the pocketed body is ignored.
+    const auto error =
+        validate_scene(config, std::vector<Body>{coin(1, 100.0, 100.0), coin(4, 300.0, 300.0), gone,
+                                                 coin(9, 300.0, 335.0), coin(6, 300.0, 318.0)});
+    ASSERT_TRUE(error);
+    EXPECT_EQ(error->code, "overlap");
+    EXPECT_EQ(error->body_id, 6);
+    EXPECT_NE(error->message.find("body 6 overlaps body 4"), std::string::npos);
 }
 
 TEST(ExactValidation, PocketedBodiesMayOverlapAndLieAnywhere) {

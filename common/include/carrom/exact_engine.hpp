@@ -40,6 +40,10 @@ struct SimResult {
     double end_time_s = 0.0;   // time of the last event (or until_s)
     bool truncated = false;    // max_events reached: remaining bodies were stopped in place
     SimStats stats;
+    // Filled whatever SimOptions::record_events says (cheap summaries for callers that need
+    // no event list, such as the rules inside a bot's search):
+    std::vector<int> pocket_order;     // ids of pocketed bodies, in the order they went in
+    std::vector<int> collision_counts; // per body, input order: disc-disc contacts it had
 };
 
 // Reusable engine: keeps its buffers between runs, so bots can simulate many shots without

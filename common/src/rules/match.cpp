@@ -83,22 +83,18 @@ std::optional<RuleError> check_turn(const MatchState& state, int seat) {
 }
 
 StrokePhysics stroke_physics_from(const SimResult& result) {
+    // From the summaries the engine always fills, so the event list need not be recorded.
     StrokePhysics physics;
     physics.bodies = result.bodies;
+    physics.pocket_order = result.pocket_order;
     physics.striker_touched_coin = false;
-    for (const Event& event : result.events) {
-        if (event.kind == EventKind::Pocket) {
-            physics.pocket_order.push_back(event.a);
-            physics.striker_pocketed = physics.striker_pocketed || event.a == kStrikerId;
-        } else if (event.kind == EventKind::Collision &&
-                   (event.a == kStrikerId || event.b == kStrikerId)) {
-            physics.striker_touched_coin = true;
+    for (std::size_t i = 0; i < result.bodies.size(); ++i) {
+        if (result.bodies[i].id != kStrikerId) {
+            continue;
         }
-    }
-    for (const Body& body : result.bodies) {
-        if (body.id == kStrikerId && body.pocketed) {
-            physics.striker_pocketed = true;
-        }
+        physics.striker_pocketed = result.bodies[i].pocketed;
+        physics.striker_touched_coin =
+            i < result.collision_counts.size() && result.collision_counts[i] > 0;
     }
     return physics;
 }
