@@ -34,6 +34,19 @@ double snapshot_time_s(std::string_view text) {
     return t;
 }
 
+// "due_ms" of a snapshot's text (the server's steady clock, ms, when its schedule wanted it
+// sent), or -1 when absent.
+std::int64_t snapshot_due_ms(std::string_view text) {
+    const auto at = text.find("\"due_ms\":");
+    if (at == std::string_view::npos) {
+        return -1;
+    }
+    std::int64_t due = -1;
+    const char* begin = text.data() + at + 9;
+    std::from_chars(begin, text.data() + text.size(), due);
+    return due;
+}
+
 bool is_snapshot(std::string_view text) {
     return text.find("\"type\":\"snapshot\"") != std::string_view::npos;
 }
@@ -142,8 +155,17 @@ private:
             moving_since_ = now;
             moving_bytes_ = static_cast<double>(text.size());
         }
-        // Receive time minus the snapshot's match time: a constant per shot plus this
-        // snapshot's delivery delay. end_moving() subtracts the shot's smallest value.
+        // Lateness against the room's schedule: receive time minus the time the server's 60 Hz
+        // schedule wanted this snapshot sent (due_ms, the server's steady clock; steady_clock
+        // is CLOCK_MONOTONIC, shared by every process on this host).
+        const std::int64_t due_ms = snapshot_due_ms(text);
+        if (due_ms >= 0 && stats_.measuring) {
+            const double now_ms =
+                std::chrono::duration<double, std::milli>(now.time_since_epoch()).count();
+            stats_.lag_ms.push_back(now_ms - static_cast<double>(due_ms));
+        }
+        // The old relative figure: receive time minus the snapshot's match time, minus the
+        // shot's smallest such value (end_moving()).
         const double since_shot_ms =
             std::chrono::duration<double, std::milli>(now - pair_.shot_sent_at).count();
         shot_offsets_ms_.push_back(since_shot_ms - snapshot_time_s(text) * 1000.0);
@@ -158,7 +180,7 @@ private:
             const double fastest =
                 *std::min_element(shot_offsets_ms_.begin(), shot_offsets_ms_.end());
             for (const double offset : shot_offsets_ms_) {
-                stats_.lag_ms.push_back(offset - fastest);
+                stats_.relative_lag_ms.push_back(offset - fastest);
             }
         }
         shot_offsets_ms_.clear();

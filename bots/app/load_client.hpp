@@ -27,9 +27,11 @@ struct LoadStats {
     std::int64_t shots = 0;    // shot_result received by the shooter
     std::int64_t errors = 0;   // error messages received
     std::int64_t failures = 0; // connections that broke or never opened
+    // Per delta snapshot: receive time - the time the room's schedule had it due (due_ms), ms.
+    std::vector<double> lag_ms;
     // Per delta snapshot: its delivery delay beyond the fastest snapshot of the same shot, ms
     // (receive time - match time t, minus the smallest such value of the shot).
-    std::vector<double> lag_ms;
+    std::vector<double> relative_lag_ms;
     double moving_bytes = 0.0;   // bytes received while the client's board moved
     double moving_seconds = 0.0; // summed over clients
     bool measuring = false;      // lags and bytes counted only inside the window

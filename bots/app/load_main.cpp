@@ -353,6 +353,8 @@ int main(int argc, char** argv) {
         measured.errors += stats.errors;
         measured.failures += stats.failures;
         measured.lag_ms.insert(measured.lag_ms.end(), stats.lag_ms.begin(), stats.lag_ms.end());
+        measured.relative_lag_ms.insert(measured.relative_lag_ms.end(),
+                                        stats.relative_lag_ms.begin(), stats.relative_lag_ms.end());
         measured.moving_bytes += stats.moving_bytes;
         measured.moving_seconds += stats.moving_seconds;
     }
@@ -406,6 +408,8 @@ int main(int argc, char** argv) {
         {"snapshot_lag_ms_p99", quantile(measured.lag_ms, 0.99)},
         {"snapshot_lag_ms_max", quantile(measured.lag_ms, 1.0)},
         {"lag_samples", measured.lag_ms.size()},
+        {"relative_lag_ms_p50", quantile(measured.relative_lag_ms, 0.50)},
+        {"relative_lag_ms_p99", quantile(measured.relative_lag_ms, 0.99)},
         {"server_send_lag_p50", server_lag_quantile(metrics_before, metrics_after, 0.50)},
         {"server_send_lag_p99", server_lag_quantile(metrics_before, metrics_after, 0.99)},
         {"snapshots_dropped",

@@ -185,12 +185,16 @@ json encode_body(const Snapshot& m) {
     for (const auto& b : m.bodies) {
         bodies.push_back(json::array({b.id, b.pos_px.x, b.pos_px.y, b.vel_px_s.x, b.vel_px_s.y}));
     }
-    return json{{"seq", m.seq},
-                {"turn", m.turn},
-                {"t", m.t_s},
-                {"keyframe", m.keyframe},
-                {"bodies", std::move(bodies)},
-                {"pocketed", m.pocketed}};
+    json out{{"seq", m.seq},
+             {"turn", m.turn},
+             {"t", m.t_s},
+             {"keyframe", m.keyframe},
+             {"bodies", std::move(bodies)},
+             {"pocketed", m.pocketed}};
+    if (m.due_ms) {
+        out["due_ms"] = *m.due_ms;
+    }
+    return out;
 }
 bool decode_snapshot_body(const json& item, SnapshotBody& b) {
     if (!item.is_array() || item.size() != 5) {
@@ -220,6 +224,7 @@ void decode_body(FieldReader& r, Snapshot& m) {
         }
     }
     m.pocketed = r.int_array("pocketed", 0, kMaxId, kMaxBodies);
+    decode_optional_time(r, "due_ms", m.due_ms);
 }
 
 // --- events ---

@@ -48,6 +48,7 @@ void start_ws_session(Core& core, beast::tcp_stream stream,
 WsSession::WsSession(Core& core, beast::tcp_stream stream)
     : core_(core), ws_(std::move(stream)), hello_timer_(ws_.get_executor()),
       idle_timer_(ws_.get_executor()), kill_timer_(ws_.get_executor()),
+      quick_timer_(ws_.get_executor()),
       queue_(core.settings.max_queue_bytes, core.settings.snapshot_backlog),
       limiter_(core.settings.max_rate, core.settings.rate_burst, core.clock.now_ms()) {}
 
@@ -179,7 +180,7 @@ void WsSession::handle(const proto::ClientMessage& message) {
     } else if (const auto* quick = std::get_if<proto::QuickMatch>(&message)) {
         handle_quick_match(*quick);
     } else if (std::holds_alternative<proto::Leave>(message)) {
-        core_.registry.cancel_quick_match(player_id_);
+        stop_quick_match();
         if (room_) {
             room_->post([self = shared_from_this()](Room& room) { room.leave(*self); });
             room_.reset();
@@ -253,27 +254,34 @@ void WsSession::handle_create(const proto::CreateRoom& create) {
         send_error(proto::code::kAlreadyInRoom, "Leave this room first.");
         return;
     }
-    std::shared_ptr<BotBrain> brain;
     if (create.bot) {
         if (!core_.bots) {
             send_error(proto::code::kUnsupported, "This server has no bots.");
             return;
         }
-        brain = core_.bots(create.bot->level);
+        enter_bot_room(create.rule_set, create.options, create.bot->level);
+        return;
     }
     auto created = core_.create_room(create.rule_set, create.options);
     if (auto* error = std::get_if<proto::Error>(&created)) {
         send_error(error->code, error->message);
         return;
     }
-    auto room = std::get<std::shared_ptr<RoomActor>>(created);
-    core_.registry.cancel_quick_match(player_id_);
-    enter_room(room, proto::Role::Player);
-    if (brain) {
-        const std::string bot_name =
-            "Bot (" + std::string(proto::to_string(create.bot->level)) + ")";
-        room->post([brain, bot_name](Room& r) { (void)r.seat_bot(bot_name, brain); });
+    enter_room(std::get<std::shared_ptr<RoomActor>>(created), proto::Role::Player);
+}
+
+void WsSession::enter_bot_room(proto::RuleSet rule_set, const proto::RoomOptions& options,
+                               proto::BotLevel level) {
+    std::shared_ptr<BotBrain> brain = core_.bots(level);
+    auto created = core_.create_room(rule_set, options);
+    if (auto* error = std::get_if<proto::Error>(&created)) {
+        send_error(error->code, error->message);
+        return;
     }
+    auto room = std::get<std::shared_ptr<RoomActor>>(created);
+    enter_room(room, proto::Role::Player);
+    const std::string bot_name = "Bot (" + std::string(proto::to_string(level)) + ")";
+    room->post([brain, bot_name](Room& r) { (void)r.seat_bot(bot_name, brain); });
 }
 
 void WsSession::handle_join(const proto::JoinRoom& join) {
@@ -286,11 +294,11 @@ void WsSession::handle_join(const proto::JoinRoom& join) {
         send_error(proto::code::kRoomNotFound, "No room has the code " + join.code + ".");
         return;
     }
-    core_.registry.cancel_quick_match(player_id_);
     enter_room(room, join.as);
 }
 
 void WsSession::enter_room(const std::shared_ptr<RoomActor>& room, proto::Role role) {
+    stop_quick_match();
     room_ = room;
     if (role == proto::Role::Player) {
         core_.registry.set_player_room(token_, room->code());
@@ -316,7 +324,21 @@ void WsSession::handle_quick_match(const proto::QuickMatch& quick) {
     for (;;) {
         auto partner_ref = core_.registry.quick_match(quick.rule_set, player_id_, weak_from_this());
         if (!partner_ref) {
-            return; // queued; paired when the next player asks
+            // Queued (or already queued): paired when the next player asks, or given a bot once
+            // the wait is over. A repeated quick_match keeps the first wait.
+            const double wait_s = core_.settings.quick_match_bot_s;
+            if (!quick_waiting_ && wait_s > 0.0 && core_.bots) {
+                quick_waiting_ = true;
+                const auto generation = ++quick_generation_;
+                quick_timer_.expires_after(to_duration(wait_s));
+                quick_timer_.async_wait([self = shared_from_this(), generation,
+                                         rule_set = quick.rule_set](beast::error_code ec) {
+                    if (!ec) {
+                        self->on_quick_match_wait(generation, rule_set);
+                    }
+                });
+            }
+            return;
         }
         auto partner = partner_ref->lock();
         if (!partner) {
@@ -332,6 +354,34 @@ void WsSession::handle_quick_match(const proto::QuickMatch& quick) {
         enter_room(room, proto::Role::Player);
         return;
     }
+}
+
+void WsSession::stop_quick_match() {
+    if (player_id_ >= 0) {
+        (void)core_.registry.cancel_quick_match(player_id_);
+    }
+    if (quick_waiting_) {
+        quick_waiting_ = false;
+        ++quick_generation_;
+        quick_timer_.cancel();
+    }
+}
+
+void WsSession::on_quick_match_wait(std::uint64_t generation, proto::RuleSet rule_set) {
+    if (generation != quick_generation_ || !quick_waiting_) {
+        return; // cancelled, or a newer wait
+    }
+    quick_waiting_ = false;
+    if (ended_ || close_code_ || room_) {
+        return;
+    }
+    // Only a player still in the queue gets a bot: if a partner took it out first, that
+    // partner's room is on its way (assign_room).
+    if (!core_.registry.cancel_quick_match(player_id_)) {
+        return;
+    }
+    spdlog::debug("player {}: no quick-match partner, seating a bot", player_id_);
+    enter_bot_room(rule_set, proto::RoomOptions{}, core_.settings.quick_match_bot_level);
 }
 
 void WsSession::assign_room(std::shared_ptr<RoomActor> room) {
@@ -486,6 +536,8 @@ void WsSession::end() {
     hello_timer_.cancel();
     idle_timer_.cancel();
     kill_timer_.cancel();
+    quick_timer_.cancel();
+    quick_waiting_ = false;
     if (!accepted_) {
         return;
     }

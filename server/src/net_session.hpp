@@ -49,6 +49,12 @@ private:
     void handle_create(const proto::CreateRoom& create);
     void handle_join(const proto::JoinRoom& join);
     void handle_quick_match(const proto::QuickMatch& quick);
+    // Leaves the quick-match queue and stops the bot fallback timer.
+    void stop_quick_match();
+    void on_quick_match_wait(std::uint64_t generation, proto::RuleSet rule_set);
+    // A new room with this player in seat 0 and a server bot in seat 1 (create_room with bot).
+    void enter_bot_room(proto::RuleSet rule_set, const proto::RoomOptions& options,
+                        proto::BotLevel level);
     void enter_room(const std::shared_ptr<RoomActor>& room, proto::Role role);
     void send_now(Outgoing message);
     void send_error(std::string_view code, std::string message);
@@ -66,6 +72,9 @@ private:
     asio::steady_timer hello_timer_;
     asio::steady_timer idle_timer_;
     asio::steady_timer kill_timer_;
+    asio::steady_timer quick_timer_; // quick match: seat a bot when it fires
+    std::uint64_t quick_generation_ = 0;
+    bool quick_waiting_ = false;
     WriteQueue queue_;
     RateLimiter limiter_;
     std::atomic<bool> keyframe_request_{false};

@@ -2,6 +2,7 @@
 
 #include "carrom/proto/codec.hpp"
 #include "carrom/server/outcome_messages.hpp"
+#include "carrom/server/snapshot_writer.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -447,19 +448,20 @@ void Room::stream_tick(std::int64_t now_ms) {
     metrics_.observe_snapshot_lag_ms(static_cast<double>(now_ms - s.next_ms));
     const double t_s = config_.time_scale * static_cast<double>(now_ms - s.start_ms) / 1000.0;
     ShotStream::Step step = s.stream.advance(t_s, ++seq_);
+    step.snapshot.due_ms = s.next_ms;
     for (auto& event : step.events) {
         const bool pocket = std::holds_alternative<proto::PocketEvent>(event);
         broadcast(proto::ServerMessage{std::move(event)},
                   pocket ? MessageKind::Normal : MessageKind::Snapshot);
     }
     metrics_.snapshots_total.fetch_add(1, std::memory_order_relaxed);
-    auto delta = std::make_shared<const std::string>(proto::encode(step.snapshot));
+    auto delta = std::make_shared<const std::string>(encode_snapshot(step.snapshot));
     std::shared_ptr<const std::string> keyframe;
     for (Peer* peer : members()) {
         if (peer->take_keyframe_request()) {
             if (!keyframe) {
                 keyframe =
-                    std::make_shared<const std::string>(proto::encode(s.stream.keyframe(seq_)));
+                    std::make_shared<const std::string>(encode_snapshot(s.stream.keyframe(seq_)));
             }
             peer->send({keyframe, MessageKind::Snapshot});
         } else {

@@ -134,6 +134,9 @@ TEST(ProtoServer, SnapshotRoundTripAndCompactBodies) {
     EXPECT_EQ(encode(ServerMessage{snap}),
               R"({"bodies":[[19,300.12,401.5,-12.5,-600.0],[3,250.0,250.0,0.0,0.0]],)"
               R"("keyframe":false,"pocketed":[7],"seq":99,"t":0.25,"turn":4,"type":"snapshot"})");
+    snap.due_ms = 1700000000123;
+    EXPECT_EQ(round_trip(snap), ServerMessage{snap});
+    EXPECT_NE(encode(ServerMessage{snap}).find(R"("due_ms":1700000000123)"), std::string::npos);
 }
 
 TEST(ProtoServer, SnapshotValidation) {
@@ -162,6 +165,14 @@ TEST(ProtoServer, SnapshotValidation) {
     j = good;
     j.erase("keyframe");
     EXPECT_EQ(error_of(j), "bad_field");
+    j = good;
+    j["due_ms"] = 12345; // optional server clock
+    EXPECT_EQ(error_of(j), "");
+    for (const json& bad : {json(-1), json(1.5), json("12"), json(nullptr), json(1e300)}) {
+        j = good;
+        j["due_ms"] = bad;
+        EXPECT_EQ(error_of(j), "bad_field") << bad.dump();
+    }
 }
 
 TEST(ProtoServer, EveryEventKindRoundTrips) {

@@ -86,6 +86,10 @@ struct Snapshot {
     bool keyframe = false;            // "keyframe"
     std::vector<SnapshotBody> bodies; // "bodies": [[id, x, y, vx, vy], ...]
     std::vector<int> pocketed;        // "pocketed": [id, ...]
+    // "due_ms"?: the server-clock time (ms) this snapshot was due by the room's snapshot
+    // schedule (deltas while a shot plays; absent in keyframes). A client on the server's host
+    // (the load tool) compares it with its own monotonic clock to measure lateness.
+    std::optional<std::int64_t> due_ms;
     friend bool operator==(const Snapshot&, const Snapshot&) = default;
 };
 

@@ -134,11 +134,14 @@ public:
         }
         return std::nullopt;
     }
-    void cancel_quick_match(std::int64_t player_id) {
+    // Takes the player out of every queue; true if it was waiting (so nobody paired it).
+    bool cancel_quick_match(std::int64_t player_id) {
         std::lock_guard lock(mutex_);
+        std::size_t removed = 0;
         for (auto& [rule_set, queue] : queues_) {
-            std::erase_if(queue, [&](const auto& w) { return w.first == player_id; });
+            removed += std::erase_if(queue, [&](const auto& w) { return w.first == player_id; });
         }
+        return removed > 0;
     }
     std::size_t waiting_count() const {
         std::lock_guard lock(mutex_);

@@ -1,6 +1,8 @@
 #pragma once
 // Every server setting, with the defaults of the command line (see docs/server.md).
 
+#include "carrom/proto/types.hpp"
+
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -25,6 +27,9 @@ struct ServerSettings {
     std::size_t max_queue_bytes = 1 << 20; // per-session write queue bound
     std::size_t snapshot_backlog = 8;      // queued messages above which snapshots are dropped
     double shutdown_grace_s = 3.0;         // SIGINT/SIGTERM: time to close cleanly
+    // A quick-match waiter with no partner after this long gets a bot room; 0 = never.
+    double quick_match_bot_s = 20.0;
+    proto::BotLevel quick_match_bot_level = proto::BotLevel::Medium;
 };
 
 } // namespace carrom::server
