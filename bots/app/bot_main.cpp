@@ -18,7 +18,8 @@ namespace {
 
 using namespace carrom;
 
-nlohmann::json summary_json(const bots::BotSummary& s, std::string_view strategy) {
+nlohmann::json summary_json(const bots::BotSummary& s, const bots::Strategy& strategy) {
+    const bots::Strategy::SearchTotals totals = strategy.search_totals();
     nlohmann::json errors = nlohmann::json::object();
     for (const auto& [code, count] : s.errors) {
         errors[code] = count;
@@ -31,7 +32,7 @@ nlohmann::json summary_json(const bots::BotSummary& s, std::string_view strategy
                                      : "drawn";
     }
     return {{"ok", s.failure.empty() && s.finished},
-            {"strategy", strategy},
+            {"strategy", strategy.name()},
             {"room", s.room_code},
             {"seat", s.seat},
             {"games", s.games},
@@ -49,7 +50,11 @@ nlohmann::json summary_json(const bots::BotSummary& s, std::string_view strategy
             {"resumes", s.resumes},
             {"decode_errors", s.decode_errors},
             {"errors", errors},
-            {"failure", s.failure}};
+            {"failure", s.failure},
+            {"candidates", totals.candidates},
+            {"think_s", totals.seconds},
+            {"candidates_per_s",
+             totals.seconds > 0.0 ? static_cast<double>(totals.candidates) / totals.seconds : 0.0}};
 }
 
 std::optional<std::string> read_file(const std::string& path, std::string& out) {
@@ -106,6 +111,9 @@ int main(int argc, char** argv) {
         ->check(CLI::IsMember(bots::strategy_names()));
     app.add_option("--script", script_path, "Shots for --strategy scripted (JSON lines)");
     app.add_option("--seed", strategy_options.seed, "Random seed");
+    app.add_option("--level", strategy_options.level,
+                   "--strategy greedy: execution skill (perfect, hard, medium, easy)")
+        ->check(CLI::IsMember({"perfect", "hard", "medium", "easy"}));
     app.add_option("--games", config.games, "Games to play before leaving")
         ->check(CLI::Range(1, 100000));
     app.add_option("--think-ms", think_ms, "Time budget per decision, ms")
@@ -181,6 +189,6 @@ int main(int argc, char** argv) {
     runner.start();
     runner.run_until_done(std::chrono::milliseconds(static_cast<std::int64_t>(timeout_s * 1000.0)));
     const auto& summary = runner.summary();
-    std::cout << summary_json(summary, strategy->name()).dump() << std::endl;
+    std::cout << summary_json(summary, *strategy).dump() << std::endl;
     return summary.finished && summary.failure.empty() ? 0 : 1;
 }

@@ -1,3 +1,4 @@
+#include "carrom/bots/greedy_strategy.hpp"
 #include "carrom/bots/random_strategy.hpp"
 #include "carrom/bots/sampling_strategy.hpp"
 #include "carrom/bots/scripted_strategy.hpp"
@@ -9,7 +10,7 @@ constexpr int kSamplingCandidates = 200; // per decision (about 2 ms on one core
 } // namespace
 
 std::vector<std::string> strategy_names() {
-    return {"random", "scripted", "sampling"};
+    return {"random", "scripted", "sampling", "greedy"};
 }
 
 std::variant<std::unique_ptr<Strategy>, std::string> make_strategy(const StrategyOptions& options) {
@@ -19,6 +20,17 @@ std::variant<std::unique_ptr<Strategy>, std::string> make_strategy(const Strateg
     if (options.name == "sampling") {
         return std::unique_ptr<Strategy>(
             std::make_unique<SamplingStrategy>(options.seed, kSamplingCandidates));
+    }
+    if (options.name == "greedy") {
+        const auto level = parse_skill_level(options.level);
+        if (!level) {
+            return "Unknown level '" + options.level +
+                   "' for the greedy strategy (known: perfect, hard, medium, easy).";
+        }
+        GreedyOptions greedy;
+        greedy.level = *level;
+        greedy.seed = options.seed;
+        return std::unique_ptr<Strategy>(std::make_unique<GreedyStrategy>(greedy));
     }
     if (options.name == "scripted") {
         if (options.script.empty()) {

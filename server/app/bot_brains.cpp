@@ -1,8 +1,11 @@
 #include "bot_brains.hpp"
 
+#include "carrom/bots/greedy_strategy.hpp"
 #include "carrom/bots/random_strategy.hpp"
-#include "carrom/bots/sampling_strategy.hpp"
 
+#include <spdlog/spdlog.h>
+
+#include <algorithm>
 #include <atomic>
 #include <mutex>
 
@@ -10,51 +13,70 @@ namespace carrom::server {
 
 namespace {
 
-// Candidate shots the sampling strategy simulates per decision, by level.
-int candidates_for(proto::BotLevel level) {
+std::optional<bots::SkillLevel> skill_of(proto::BotLevel level) {
     switch (level) {
     case proto::BotLevel::Easy:
-        return 8;
+        return bots::SkillLevel::Easy;
     case proto::BotLevel::Medium:
-        return 64;
+        return bots::SkillLevel::Medium;
     case proto::BotLevel::Hard:
-        return 512;
+        return bots::SkillLevel::Hard;
     case proto::BotLevel::Random:
-        return 0;
+        break;
     }
-    return 0;
+    return std::nullopt;
 }
+
+// A bot that queued longer than its budget still thinks this long (its first candidates).
+constexpr std::chrono::milliseconds kLeastThink{10};
 
 // A strategy behind a mutex: the server may call a brain from any worker thread, one at a time.
 class StrategyBrain final : public BotBrain {
 public:
-    explicit StrategyBrain(std::unique_ptr<bots::Strategy> strategy)
-        : strategy_(std::move(strategy)) {}
+    StrategyBrain(std::unique_ptr<bots::Strategy> strategy, std::chrono::milliseconds think)
+        : strategy_(std::move(strategy)), budget_{think, bots::DecisionBudget{}.max_candidates} {}
 
-    Shot choose_shot(const rules::MatchState& state, int seat) override {
+    Shot choose_shot(const rules::MatchState& state, int seat,
+                     std::chrono::milliseconds waited) override {
         const std::lock_guard lock(mutex_);
-        return strategy_->choose_shot(state, seat, bots::DecisionBudget{});
+        bots::DecisionBudget budget = budget_;
+        budget.time = std::max(budget_.time - waited, kLeastThink);
+        const auto before = strategy_->search_totals();
+        const Shot shot = strategy_->choose_shot(state, seat, budget);
+        const auto after = strategy_->search_totals();
+        if (after.candidates > before.candidates) {
+            const double seconds = after.seconds - before.seconds;
+            spdlog::debug("bot {}: {} candidates in {:.1f} ms ({:.0f}/s)", strategy_->name(),
+                          after.candidates - before.candidates, 1000.0 * seconds,
+                          seconds > 0.0
+                              ? static_cast<double>(after.candidates - before.candidates) / seconds
+                              : 0.0);
+        }
+        return shot;
     }
 
 private:
     std::mutex mutex_;
     std::unique_ptr<bots::Strategy> strategy_;
+    bots::DecisionBudget budget_;
 };
 
 } // namespace
 
-BotFactory make_strategy_bot_factory(std::uint64_t seed) {
+BotFactory make_strategy_bot_factory(std::uint64_t seed, std::chrono::milliseconds think) {
     auto next_seed = std::make_shared<std::atomic<std::uint64_t>>(seed);
-    return [next_seed](proto::BotLevel level) -> std::shared_ptr<BotBrain> {
+    return [next_seed, think](proto::BotLevel level) -> std::shared_ptr<BotBrain> {
         const std::uint64_t bot_seed = next_seed->fetch_add(1);
-        const int candidates = candidates_for(level);
         std::unique_ptr<bots::Strategy> strategy;
-        if (candidates == 0) {
-            strategy = std::make_unique<bots::RandomStrategy>(bot_seed);
+        if (const auto skill = skill_of(level)) {
+            bots::GreedyOptions options;
+            options.level = *skill;
+            options.seed = bot_seed;
+            strategy = std::make_unique<bots::GreedyStrategy>(options);
         } else {
-            strategy = std::make_unique<bots::SamplingStrategy>(bot_seed, candidates);
+            strategy = std::make_unique<bots::RandomStrategy>(bot_seed);
         }
-        return std::make_shared<StrategyBrain>(std::move(strategy));
+        return std::make_shared<StrategyBrain>(std::move(strategy), think);
     };
 }
 

@@ -15,6 +15,7 @@ int main(int argc, char** argv) {
     carrom::server::ServerSettings s;
     std::string log_level = "info";
     std::uint64_t bot_seed = 1;
+    int bot_think_ms = 300;
     bool no_bots = false;
     CLI::App app{"carrom-server: authoritative carrom game server (WebSocket + HTTP)"};
     app.option_defaults()->always_capture_default();
@@ -67,18 +68,34 @@ int main(int argc, char** argv) {
         ->check(CLI::Range(0.0, 60.0));
     app.add_option("--bot-seed", bot_seed, "Seed of the first server-side bot's random choices")
         ->envname("CARROM_BOT_SEED");
+    app.add_option("--bot-think-ms", bot_think_ms,
+                   "Time budget of a server-side bot's decision, ms (queueing included)")
+        ->envname("CARROM_BOT_THINK_MS")
+        ->check(CLI::Range(10, 60000));
+    app.add_option("--quick-match-bot", s.quick_match_bot_s,
+                   "Seconds a quick-match player waits for a partner before a bot is seated "
+                   "(0 = never)")
+        ->envname("CARROM_QUICK_MATCH_BOT")
+        ->check(CLI::Range(0.0, 86400.0));
+    std::string quick_bot_level{carrom::proto::to_string(s.quick_match_bot_level)};
+    app.add_option("--quick-match-bot-level", quick_bot_level,
+                   "Level of the quick-match bot: random, easy, medium, hard")
+        ->envname("CARROM_QUICK_MATCH_BOT_LEVEL")
+        ->check(CLI::IsMember({"random", "easy", "medium", "hard"}));
     app.add_flag("--no-bots", no_bots, "Refuse rooms that ask for a bot seat (\"unsupported\")")
         ->envname("CARROM_NO_BOTS");
     app.add_option("--log-level", log_level, "trace, debug, info, warn, error, off")
         ->envname("CARROM_LOG_LEVEL")
         ->check(CLI::IsMember({"trace", "debug", "info", "warn", "error", "off"}));
     CLI11_PARSE(app, argc, argv);
+    (void)carrom::proto::parse(quick_bot_level, s.quick_match_bot_level);
 
     spdlog::set_level(spdlog::level::from_str(log_level));
     try {
-        carrom::server::Server server(s, no_bots
-                                             ? carrom::server::BotFactory{}
-                                             : carrom::server::make_strategy_bot_factory(bot_seed));
+        carrom::server::Server server(
+            s, no_bots ? carrom::server::BotFactory{}
+                       : carrom::server::make_strategy_bot_factory(
+                             bot_seed, std::chrono::milliseconds(bot_think_ms)));
         const auto port = server.listen();
         std::printf("listening on %s:%u\n", s.host.c_str(), static_cast<unsigned>(port));
         std::fflush(stdout);

@@ -151,7 +151,7 @@ TEST(MakeStrategy, KnownNamesAndAClearErrorOtherwise) {
     EXPECT_TRUE(std::holds_alternative<std::unique_ptr<Strategy>>(make_strategy(options)));
     options.name = "genius";
     EXPECT_EQ(std::get<std::string>(make_strategy(options)),
-              "Unknown strategy 'genius' (known: random, scripted, sampling).");
+              "Unknown strategy 'genius' (known: random, scripted, sampling, greedy).");
 }
 
 } // namespace

@@ -387,7 +387,9 @@ TEST_F(RoomTest, RematchAfterGameOver) {
 
 class ScriptedBrain final : public BotBrain {
 public:
-    Shot choose_shot(const rules::MatchState&, int) override { return {300.0, 1.2, 5.0}; }
+    Shot choose_shot(const rules::MatchState&, int, std::chrono::milliseconds) override {
+        return {300.0, 1.2, 5.0};
+    }
 };
 
 TEST_F(RoomTest, BotSeatTakesItsTurnThroughTheSeam) {
@@ -412,7 +414,7 @@ TEST_F(RoomTest, BotSeatTakesItsTurnThroughTheSeam) {
     EXPECT_EQ(turn->seat, 1);
     EXPECT_EQ(turn->turn, room.match().turn_number);
     EXPECT_FALSE(room.take_bot_turn()); // handed out once per turn
-    const Shot shot = turn->brain->choose_shot(turn->state, turn->seat);
+    const Shot shot = turn->brain->choose_shot(turn->state, turn->seat, {});
     EXPECT_FALSE(room.bot_shoot(turn->seat, turn->turn, {shot.x_px, -kUp, 10.0}));
     EXPECT_EQ(room.phase(), proto::Phase::Moving);
     EXPECT_FALSE(room.abandoned());

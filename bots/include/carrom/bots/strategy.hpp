@@ -7,6 +7,7 @@
 #include "carrom/scene.hpp"
 
 #include <chrono>
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
@@ -35,12 +36,21 @@ public:
     // The server refused the shot just chosen (e.g. illegal_placement after a state mismatch):
     // the next choose_shot for the same state should differ. Default: nothing to learn.
     virtual void shot_refused() {}
+
+    // Totals over every decision so far, for search strategies (0 for the others): candidate
+    // shots simulated and wall time spent choosing, s.
+    struct SearchTotals {
+        std::int64_t candidates = 0;
+        double seconds = 0.0;
+    };
+    virtual SearchTotals search_totals() const { return {}; }
 };
 
 struct StrategyOptions {
-    std::string name = "random"; // "random", "scripted", "sampling"
+    std::string name = "random"; // "random", "scripted", "sampling", "greedy"
     std::uint64_t seed = 1;
-    std::vector<Shot> script; // "scripted": shots in order, repeated from the start
+    std::string level = "hard"; // "greedy": perfect, hard, medium or easy (skill.hpp)
+    std::vector<Shot> script;   // "scripted": shots in order, repeated from the start
 };
 
 // Makes the named strategy, or one sentence saying why it cannot.

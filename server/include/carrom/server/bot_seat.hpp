@@ -8,6 +8,7 @@
 #include "carrom/rules/match_state.hpp"
 #include "carrom/scene.hpp"
 
+#include <chrono>
 #include <functional>
 #include <memory>
 #include <string>
@@ -17,8 +18,11 @@ namespace carrom::server {
 class BotBrain {
 public:
     virtual ~BotBrain() = default;
-    // May take a while (a time budget); must not touch the room.
-    virtual Shot choose_shot(const rules::MatchState& state, int seat) = 0;
+    // May take a while (a time budget); must not touch the room. waited: how long the turn
+    // waited for a free bot worker before this call, to be taken off the brain's budget so
+    // that the answer comes within the budget of the turn being handed out.
+    virtual Shot choose_shot(const rules::MatchState& state, int seat,
+                             std::chrono::milliseconds waited) = 0;
 };
 
 // Makes a brain for a level; an empty factory means the server has no bots ("unsupported").
