@@ -176,6 +176,7 @@ struct ExactEngine::Impl {
     void process_instant(std::span<const int> seeds);
     bool isolated_pair_round(std::size_t a, std::size_t b);
     bool isolated_pair(std::size_t a, std::size_t b);
+    bool approaching_pair(std::size_t lo_i, std::size_t hi_i, Contact& out) const;
     bool collect_isolated_pair();
     bool collect_lone_body();
     void collect_walls(std::size_t a);
@@ -956,16 +957,12 @@ bool ExactEngine::Impl::isolated_pair_round(std::size_t a, std::size_t b) {
     if (solve_inv_mass[lo_i] == 0.0 && solve_inv_mass[hi_i] == 0.0) {
         return false;
     }
-    const Vec2 d = pos[hi_i] - pos[lo_i];
-    const double dist = std::sqrt(length_squared(d));
-    const Vec2 normal = d * (1.0 / dist);
-    const double u = dot(vel[hi_i] - vel[lo_i], normal);
-    if (!(u < -kApproachTolerancePxS)) {
+    Contact contact{};
+    if (!approaching_pair(lo_i, hi_i, contact)) {
         return false;
     }
     contacts.clear();
-    contacts.push_back(
-        {static_cast<int>(lo_i), static_cast<int>(hi_i), normal, restitution(-u, false), 0.0});
+    contacts.push_back(contact);
     ++result.stats.contact_rounds;
     solver.resolve(contacts, vel, solve_inv_mass);
     frontier.clear();
@@ -1011,14 +1008,24 @@ bool ExactEngine::Impl::collect_isolated_pair() {
     if (solve_inv_mass[lo_i] == 0.0 && solve_inv_mass[hi_i] == 0.0) {
         return true;
     }
+    Contact contact{};
+    if (approaching_pair(lo_i, hi_i, contact)) {
+        contacts.push_back(contact);
+    }
+    return true;
+}
+
+// The contact of two touching bodies (lo_i < hi_i) as collect_impacts_near builds it, when they
+// approach (normal relative speed above the approach tolerance); false otherwise.
+bool ExactEngine::Impl::approaching_pair(std::size_t lo_i, std::size_t hi_i, Contact& out) const {
     const Vec2 d = pos[hi_i] - pos[lo_i];
     const double dist = std::sqrt(length_squared(d));
     const Vec2 normal = d * (1.0 / dist);
     const double u = dot(vel[hi_i] - vel[lo_i], normal);
-    if (u < -kApproachTolerancePxS) {
-        contacts.push_back(
-            {static_cast<int>(lo_i), static_cast<int>(hi_i), normal, restitution(-u, false), 0.0});
+    if (!(u < -kApproachTolerancePxS)) {
+        return false;
     }
+    out = {static_cast<int>(lo_i), static_cast<int>(hi_i), normal, restitution(-u, false), 0.0};
     return true;
 }
 
