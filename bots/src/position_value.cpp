@@ -59,15 +59,18 @@ double colour_progress(const rules::MatchState& state, int team, const ValueWeig
            w.due * (dues_of(state, team) - dues_of(state, other_team(team)));
 }
 
-bool wanted_by(const rules::MatchState& state, int team, BodyKind kind) {
-    if (kind == BodyKind::Queen) {
+} // namespace
+
+bool wants_to_pocket(const rules::MatchState& state, int team, const Body& body) {
+    if (body.pocketed || body.kind == BodyKind::Striker) {
+        return false;
+    }
+    if (body.kind == BodyKind::Queen) {
         return state.queen.status == rules::QueenStatus::OnBoard;
     }
     const auto own = rules::team_colour(state, team);
-    return !own || kind == *own;
+    return !own || body.kind == *own;
 }
-
-} // namespace
 
 double position_value(const rules::MatchState& state, int team, const ValueWeights& w) {
     const int them = other_team(team);
@@ -102,7 +105,7 @@ double easy_coins(const rules::MatchState& state, int team, const ValueWeights& 
     const auto pockets = state.physics.pocket_centres();
     double easy = 0.0;
     for (const Body& body : state.bodies) {
-        if (body.pocketed || body.kind == BodyKind::Striker || !wanted_by(state, team, body.kind)) {
+        if (!wants_to_pocket(state, team, body)) {
             continue;
         }
         double nearest_px = w.easy_range_px;

@@ -1,5 +1,6 @@
 #include "carrom/bots/shot_candidates.hpp"
 
+#include "carrom/bots/position_value.hpp"
 #include "carrom/bots/shot_geometry.hpp"
 #include "carrom/rules/placement.hpp"
 
@@ -24,17 +25,6 @@ std::optional<double> nearest_legal(const StrokeEvaluator& evaluator, double x_p
         }
     }
     return std::nullopt;
-}
-
-bool wanted(const rules::MatchState& state, int team, const Body& body) {
-    if (body.pocketed || body.kind == BodyKind::Striker) {
-        return false;
-    }
-    if (body.kind == BodyKind::Queen) {
-        return state.queen.status == rules::QueenStatus::OnBoard;
-    }
-    const auto own = rules::team_colour(state, team);
-    return !own || body.kind == *own;
 }
 
 // Striker speed at contact (px/s) that sends a coin at rest off at the speed it needs to travel
@@ -97,7 +87,7 @@ std::vector<Shot> aimed_shots(const rules::MatchState& state, int seat, std::spa
     for (const double x : xs) {
         const Vec2 striker = rules::striker_for(physics, side, Shot{x, 0.0, 0.0}).pos_px;
         for (const Body& coin : state.bodies) {
-            if (!wanted(state, team, coin)) {
+            if (!wants_to_pocket(state, team, coin)) {
                 continue;
             }
             for (const Vec2& pocket : physics.pocket_centres()) {

@@ -36,6 +36,10 @@ double position_value(const rules::MatchState& state, int team, const ValueWeigh
 // phase is AwaitingShot.
 double turn_value(const rules::MatchState& state, int team, const ValueWeights& w = {});
 
+// True for a piece on the board that team may want to pocket: its own colour (any coin in
+// freestyle), or the queen while it is on the board.
+bool wants_to_pocket(const rules::MatchState& state, int team, const Body& body);
+
 // Coins (and the queen while it is on the board) that team may want to pocket next, each
 // weighted in [0, 1] by how close it is to its nearest pocket (1 at the pocket's edge, 0 at
 // easy_range_px or more).
