@@ -58,6 +58,9 @@ constexpr int kRoundsBeforeCollapse = 16;
 // Where pocketed bodies are kept, px: far enough that no distance or box test ever passes.
 constexpr Vec2 kFarAway{1e30, 1e30};
 
+// The overlap tolerance of validate_scene's default, px.
+constexpr double kOverlapTolerancePx = 1e-9;
+
 // A float below (above) the finite x, px: x is moved outwards by 1e-3 px plus 1e-6 of |x|, more
 // than the relative rounding of the conversion (2^-24), so the float box contains the double
 // box. Branch-free, unlike std::nextafter.
@@ -160,8 +163,24 @@ struct ExactEngine::Impl {
     SimOptions options;
     SimResult result;
 
+    // The last scene that passed validate_scene (empty after a rejected one).
+    std::vector<Body> validated;
+    std::uint64_t unchanged_since_validated(std::span<const Body> bodies) const;
+
     void load(std::span<const Body> bodies);
-    void settle_initial_state();
+    void settle_initial_state(std::uint64_t unchanged);
+
+    // The path boxes and near[] rows that the last run's set-up computed for the bodies that
+    // lay at rest on the board, kept for the next run (use_near only): bit i of resting_cached
+    // says entry i holds body i's box and its row restricted to resting_cached. A body that is
+    // bit for bit the same in the next scene has the same box and the same overlaps with the
+    // other such bodies, so set-up copies them instead of computing them (see docs/physics.md).
+    std::uint64_t resting_cached = 0;
+    std::vector<double> cached_sweep; // 4 per body: x0, y0, x1, y1
+    std::vector<float> cached_box;    // 4 per body: x0, y0, x1, y1
+    std::vector<std::uint64_t> cached_near;
+    void restore_resting_box(std::size_t i);
+    void remember_resting_layout();
     void run_events();
     void finish();
 
@@ -377,9 +396,11 @@ void ExactEngine::Impl::advance(double u) {
     Vec2* const v = vel.data();
     double* const sp = speed.data();
     if (use_near) {
-        // The moving bodies are the set bits of moving_mask, always current.
-        for (std::uint64_t bits = moving_mask; bits != 0; bits &= bits - 1) {
-            const auto i = static_cast<std::size_t>(std::countr_zero(bits));
+        // At most 64 bodies: one branch-free pass over all of them (vectorised), cheaper than
+        // walking moving_mask. A body at rest or pocketed has v == 0 and speed 0, so
+        // p + 0 * s == p and its state is unchanged.
+        const std::size_t n = pos.size();
+        for (std::size_t i = 0; i < n; ++i) {
             const Vec2 vi = v[i];
             p[i] += vi * s;
             v[i] = vi * decay;
@@ -1036,8 +1057,53 @@ void ExactEngine::Impl::clear_touched() {
     touched.clear();
 }
 
-void ExactEngine::Impl::settle_initial_state() {
+void ExactEngine::Impl::restore_resting_box(std::size_t i) {
+    box_dirty[i] = 1;
+    sweep_x0[i] = cached_sweep[4 * i];
+    sweep_y0[i] = cached_sweep[4 * i + 1];
+    sweep_x1[i] = cached_sweep[4 * i + 2];
+    sweep_y1[i] = cached_sweep[4 * i + 3];
+    box_x0[i] = cached_box[4 * i];
+    box_y0[i] = cached_box[4 * i + 1];
+    box_x1[i] = cached_box[4 * i + 2];
+    box_y1[i] = cached_box[4 * i + 3];
+}
+
+// Called when every near[] row is current and before any event: keeps the boxes and rows of
+// the bodies at rest for the next run's set-up.
+void ExactEngine::Impl::remember_resting_layout() {
+    const std::size_t n = pos.size();
+    resting_cached = use_near ? active_mask & ~moving_mask : 0;
+    cached_sweep.resize(4 * n);
+    cached_box.resize(4 * n);
+    cached_near.resize(n);
+    for (std::uint64_t bits = resting_cached; bits != 0; bits &= bits - 1) {
+        const auto i = static_cast<std::size_t>(std::countr_zero(bits));
+        cached_sweep[4 * i] = sweep_x0[i];
+        cached_sweep[4 * i + 1] = sweep_y0[i];
+        cached_sweep[4 * i + 2] = sweep_x1[i];
+        cached_sweep[4 * i + 3] = sweep_y1[i];
+        cached_box[4 * i] = box_x0[i];
+        cached_box[4 * i + 1] = box_y0[i];
+        cached_box[4 * i + 2] = box_x1[i];
+        cached_box[4 * i + 3] = box_y1[i];
+        cached_near[i] = near[i] & resting_cached;
+    }
+}
+
+// unchanged: bit i set when body i is bit for bit body i of the previous run's scene.
+void ExactEngine::Impl::settle_initial_state(std::uint64_t unchanged) {
+    // Bodies at rest now and in the previous set-up, with the same data: their boxes and
+    // their rows among themselves are those of the previous run. They were active and at rest
+    // then, so they are neither in a pocket nor below the stop speed now.
+    const std::uint64_t reuse = use_near && cached_near.size() == pos.size()
+                                    ? unchanged & resting_cached & ~moving_mask
+                                    : 0;
     for (std::size_t i = 0; i < pos.size(); ++i) {
+        if (((reuse >> i) & 1U) != 0) {
+            restore_resting_box(i);
+            continue;
+        }
         if (!active[i]) {
             continue;
         }
@@ -1059,7 +1125,8 @@ void ExactEngine::Impl::settle_initial_state() {
         refresh(i);
     }
     frontier.clear();
-    std::vector<int> seeds;
+    std::vector<int>& seeds = event_seeds;
+    seeds.clear();
     for (std::size_t i = 0; i < pos.size(); ++i) {
         if (moving[i]) {
             seeds.push_back(static_cast<int>(i));
@@ -1069,12 +1136,21 @@ void ExactEngine::Impl::settle_initial_state() {
         process_instant(seeds);
         clear_touched();
     }
-    // Every row of near[] must be current before any prediction reads it.
+    // Every row of near[] must be current before any prediction reads it. The reused rows
+    // first (they hold only bits among reused bodies, so near[] stays symmetric), then the
+    // others, which set their bits in every row they overlap: the result is the overlap
+    // relation of all boxes, as if every row had been computed.
+    for (std::uint64_t bits = reuse; bits != 0; bits &= bits - 1) {
+        const auto i = static_cast<std::size_t>(std::countr_zero(bits));
+        near[i] = cached_near[i] & reuse;
+        box_dirty[i] = 0;
+    }
     for (std::size_t i = 0; use_near && i < pos.size(); ++i) {
         if (active[i] && box_dirty[i]) {
             update_near(i);
         }
     }
+    remember_resting_layout();
     for (std::size_t i = 0; i < pos.size(); ++i) {
         predict(i);
     }
@@ -1197,6 +1273,33 @@ void ExactEngine::Impl::finish() {
     }
 }
 
+namespace {
+
+// Same bits: doubles compared by representation, so -0.0 differs from 0.0 and NaN from nothing.
+bool same_body(const Body& a, const Body& b) {
+    return a.id == b.id && a.kind == b.kind && a.pocketed == b.pocketed &&
+           std::bit_cast<std::uint64_t>(a.pos_px.x) == std::bit_cast<std::uint64_t>(b.pos_px.x) &&
+           std::bit_cast<std::uint64_t>(a.pos_px.y) == std::bit_cast<std::uint64_t>(b.pos_px.y) &&
+           std::bit_cast<std::uint64_t>(a.vel_px_s.x) ==
+               std::bit_cast<std::uint64_t>(b.vel_px_s.x) &&
+           std::bit_cast<std::uint64_t>(a.vel_px_s.y) == std::bit_cast<std::uint64_t>(b.vel_px_s.y);
+}
+
+} // namespace
+
+// Bit i set: bodies[i] is bit for bit body i of the last validated scene (the same engine, so
+// the same config and tolerance). 0 when the sizes differ or there are more than 64 bodies.
+std::uint64_t ExactEngine::Impl::unchanged_since_validated(std::span<const Body> bodies) const {
+    if (bodies.size() != validated.size() || bodies.size() > 64) {
+        return 0;
+    }
+    std::uint64_t mask = 0;
+    for (std::size_t i = 0; i < bodies.size(); ++i) {
+        mask |= static_cast<std::uint64_t>(same_body(bodies[i], validated[i])) << i;
+    }
+    return mask;
+}
+
 ExactEngine::ExactEngine(const PhysicsConfig& config) : impl_(std::make_unique<Impl>(config)) {}
 ExactEngine::~ExactEngine() = default;
 
@@ -1205,12 +1308,18 @@ const PhysicsConfig& ExactEngine::config() const {
 }
 
 ExactEngine::Outcome ExactEngine::run(std::span<const Body> bodies, const SimOptions& options) {
-    if (auto error = validate_scene(impl_->config, bodies)) {
+    // Bodies identical to those of the last scene that passed validation are known not to
+    // overlap one another (a bot's search runs thousands of scenes that differ in the striker).
+    const std::uint64_t unchanged = impl_->unchanged_since_validated(bodies);
+    if (auto error = validate_scene(impl_->config, bodies, kOverlapTolerancePx, unchanged)) {
+        impl_->validated.clear();
+        impl_->resting_cached = 0;
         return {std::move(error), nullptr};
     }
+    impl_->validated.assign(bodies.begin(), bodies.end());
     impl_->options = options;
     impl_->load(bodies);
-    impl_->settle_initial_state();
+    impl_->settle_initial_state(unchanged);
     impl_->run_events();
     impl_->finish();
     return {std::nullopt, &impl_->result};

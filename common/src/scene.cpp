@@ -1,5 +1,6 @@
 #include "carrom/scene.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -83,8 +84,33 @@ Body make_striker(const PhysicsConfig& config, Baseline baseline, const Shot& sh
     return {kStrikerId, BodyKind::Striker, pos, vel, false};
 }
 
-std::optional<SceneError> validate_scene(const PhysicsConfig& config, std::span<const Body> bodies,
-                                         double overlap_tolerance_px) {
+namespace {
+
+// True when every body-by-body check passes, by a pass without early exits: known kinds, ids
+// 0 to 63 without repeats, finite numbers, unpocketed centres inside the cushions (with the
+// tolerance). False means first_body_error must look (it also handles ids outside 0 to 63).
+bool bodies_plainly_valid(const PhysicsConfig& config, std::span<const Body> bodies) {
+    std::uint64_t ids = 0;
+    bool ok = true;
+    for (const Body& b : bodies) {
+        const bool small_id = b.id >= 0 && b.id < 64;
+        const std::uint64_t bit = small_id ? std::uint64_t{1} << b.id : 0;
+        const double r = config.radius(b.kind);
+        const double lo = config.cushion_min(r) - kCushionTolerancePx;
+        const double hi = config.cushion_max(r) + kCushionTolerancePx;
+        const bool inside =
+            b.pos_px.x >= lo && b.pos_px.x <= hi && b.pos_px.y >= lo && b.pos_px.y <= hi;
+        ok &= small_id & ((ids & bit) == 0) & (b.kind <= BodyKind::Striker) &
+              std::isfinite(b.vel_px_s.x) & std::isfinite(b.vel_px_s.y) &
+              std::isfinite(b.pos_px.x) & std::isfinite(b.pos_px.y) & (b.pocketed || inside);
+        ids |= bit;
+    }
+    return ok;
+}
+
+// The first body-by-body problem, in the order documented for validate_scene.
+std::optional<SceneError> first_body_error(const PhysicsConfig& config,
+                                           std::span<const Body> bodies) {
     std::uint64_t small_ids = 0; // bit id set: an earlier body has this id (ids 0 to 63)
     for (std::size_t i = 0; i < bodies.size(); ++i) {
         const Body& b = bodies[i];
@@ -138,40 +164,84 @@ std::optional<SceneError> validate_scene(const PhysicsConfig& config, std::span<
             }
         }
     }
+    return std::nullopt;
+}
+
+// The first pair of unpocketed bodies that overlap beyond the tolerance, skipping pairs of two
+// bodies in known_pairs_ok (see validate_scene).
+std::optional<SceneError> first_overlap(const PhysicsConfig& config, std::span<const Body> bodies,
+                                        double overlap_tolerance_px, std::uint64_t known_pairs_ok) {
     // Overlaps: the centres and radii of the bodies on the board are gathered once (on the
     // stack for scenes of up to 64 bodies), in input order, so the first overlapping pair found
-    // is the same as in a plain double loop over the input.
-    struct Disc {
-        double x, y, r;
-        std::size_t index;
-    };
+    // is the same as in a plain double loop over the input. A branch-free pass first asks
+    // whether any pair comes within reach + slack of each other (none does in a valid scene);
+    // only then does the exact search for the first overlapping pair run.
     constexpr std::size_t kStackDiscs = 64;
-    std::array<Disc, kStackDiscs> stack_discs;
-    std::vector<Disc> heap_discs;
-    Disc* discs = stack_discs.data();
+    std::array<double, kStackDiscs> stack_x, stack_y, stack_r;
+    std::array<std::size_t, kStackDiscs> stack_index;
+    std::vector<double> heap_x, heap_y, heap_r;
+    std::vector<std::size_t> heap_index;
+    double* xs = stack_x.data();
+    double* ys = stack_y.data();
+    double* rs = stack_r.data();
+    std::size_t* index = stack_index.data();
     if (bodies.size() > kStackDiscs) {
-        heap_discs.resize(bodies.size());
-        discs = heap_discs.data();
+        heap_x.resize(bodies.size());
+        heap_y.resize(bodies.size());
+        heap_r.resize(bodies.size());
+        heap_index.resize(bodies.size());
+        xs = heap_x.data();
+        ys = heap_y.data();
+        rs = heap_r.data();
+        index = heap_index.data();
     }
     std::size_t count = 0;
+    std::array<char, kStackDiscs> stack_known{}; // disc is one of the known_pairs_ok bodies
+    std::vector<char> heap_known;
+    char* known = stack_known.data();
+    if (bodies.size() > kStackDiscs) {
+        heap_known.resize(bodies.size());
+        known = heap_known.data();
+    }
     for (std::size_t i = 0; i < bodies.size(); ++i) {
         const Body& b = bodies[i];
         if (!b.pocketed) {
-            discs[count++] = {b.pos_px.x, b.pos_px.y, config.radius(b.kind), i};
+            xs[count] = b.pos_px.x;
+            ys[count] = b.pos_px.y;
+            rs[count] = config.radius(b.kind);
+            index[count] = i;
+            known[count] = static_cast<char>(i < 64 && ((known_pairs_ok >> i) & 1U) != 0);
+            ++count;
         }
     }
+    // An overlap beyond the tolerance puts the centres closer than reach + slack, px (slack
+    // covers a negative tolerance and the rounding of the exact test).
+    const double slack = std::max(0.0, -overlap_tolerance_px) + 1e-3;
+    bool near_pair = false;
+    // Every pair with at least one body not known to be valid: such a body against all others
+    // (a pair of two of them is tested twice, which changes nothing).
     for (std::size_t i = 0; i < count; ++i) {
-        const Disc a = discs[i];
+        if (known[i] != 0) {
+            continue;
+        }
+        for (std::size_t j = 0; j < count; ++j) {
+            const double reach = rs[i] + rs[j] + slack;
+            const double dx = xs[j] - xs[i];
+            const double dy = ys[j] - ys[i];
+            near_pair |= j != i && dx * dx + dy * dy < reach * reach;
+        }
+    }
+    for (std::size_t i = 0; near_pair && i < count; ++i) {
         for (std::size_t j = i + 1; j < count; ++j) {
-            const double reach = a.r + discs[j].r;
-            const Vec2 d{discs[j].x - a.x, discs[j].y - a.y};
-            if (std::fabs(d.x) >= reach || std::fabs(d.y) >= reach) {
+            const double reach = rs[i] + rs[j];
+            const Vec2 d{xs[j] - xs[i], ys[j] - ys[i]};
+            if ((known[i] & known[j]) != 0 || std::fabs(d.x) >= reach || std::fabs(d.y) >= reach) {
                 continue; // cheap rejection; exact test below
             }
             const double overlap = reach - length(d);
             if (overlap > overlap_tolerance_px) {
-                const Body& first = bodies[a.index];
-                const Body& second = bodies[discs[j].index];
+                const Body& first = bodies[index[i]];
+                const Body& second = bodies[index[j]];
                 return SceneError{"overlap", second.id, "pos",
                                   "body " + std::to_string(second.id) + " overlaps body " +
                                       std::to_string(first.id) + " by " + fmt(overlap) + " px"};
@@ -179,6 +249,27 @@ std::optional<SceneError> validate_scene(const PhysicsConfig& config, std::span<
         }
     }
     return std::nullopt;
+}
+
+} // namespace
+
+std::optional<SceneError> validate_scene(const PhysicsConfig& config, std::span<const Body> bodies,
+                                         double overlap_tolerance_px) {
+    return validate_scene(config, bodies, overlap_tolerance_px, 0);
+}
+
+std::optional<SceneError> validate_scene(const PhysicsConfig& config, std::span<const Body> bodies,
+                                         double overlap_tolerance_px,
+                                         std::uint64_t known_pairs_ok) {
+    if (bodies.size() > 64) {
+        known_pairs_ok = 0;
+    }
+    if (!bodies_plainly_valid(config, bodies)) {
+        if (auto error = first_body_error(config, bodies)) {
+            return error;
+        }
+    }
+    return first_overlap(config, bodies, overlap_tolerance_px, known_pairs_ok);
 }
 
 } // namespace carrom

@@ -5,6 +5,7 @@
 #include "carrom/body.hpp"
 #include "carrom/config.hpp"
 
+#include <cstdint>
 #include <optional>
 #include <span>
 #include <string>
@@ -58,5 +59,14 @@ struct SceneError {
 // for finiteness and id checks.
 std::optional<SceneError> validate_scene(const PhysicsConfig& config, std::span<const Body> bodies,
                                          double overlap_tolerance_px = 1e-9);
+
+// validate_scene when some bodies are known to be valid together: bit i of known_pairs_ok set
+// (i < 64) says body i is bit for bit a body of a scene that passed this validation with the
+// same config and tolerance, at the same index, together with every other body whose bit is
+// set. The overlap test then skips the pairs of two such bodies (they cannot overlap); every
+// other check runs as before, so the answer, and the error reported first, are the same as
+// validate_scene's. A bot's search validates thousands of scenes that differ in the striker only.
+std::optional<SceneError> validate_scene(const PhysicsConfig& config, std::span<const Body> bodies,
+                                         double overlap_tolerance_px, std::uint64_t known_pairs_ok);
 
 } // namespace carrom
