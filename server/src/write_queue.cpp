@@ -5,9 +5,15 @@ namespace carrom::server {
 WriteQueue::WriteQueue(std::size_t max_bytes, std::size_t snapshot_backlog)
     : max_bytes_(max_bytes), snapshot_backlog_(snapshot_backlog) {}
 
+std::size_t WriteQueue::waiting_snapshots() const {
+    const bool in_flight_snapshot =
+        writing_ && !queue_.empty() && queue_.front().kind == MessageKind::Snapshot;
+    return snapshots_ - (in_flight_snapshot ? 1U : 0U);
+}
+
 WriteQueue::Push WriteQueue::push(Outgoing message) {
-    const std::size_t waiting = queue_.size() - (writing_ ? 1U : 0U);
-    if (message.kind == MessageKind::Snapshot && waiting >= snapshot_backlog_) {
+    const bool snapshot = message.kind == MessageKind::Snapshot;
+    if (snapshot && waiting_snapshots() >= snapshot_backlog_) {
         return Push::DroppedSnapshot;
     }
     const std::size_t size = message.text ? message.text->size() : 0;
@@ -15,6 +21,7 @@ WriteQueue::Push WriteQueue::push(Outgoing message) {
         return Push::Overflow;
     }
     bytes_ += size;
+    snapshots_ += snapshot ? 1U : 0U;
     queue_.push_back(std::move(message));
     return Push::Queued;
 }
@@ -33,6 +40,7 @@ void WriteQueue::finish_write() {
     }
     const std::size_t size = queue_.front().text ? queue_.front().text->size() : 0;
     bytes_ -= size;
+    snapshots_ -= queue_.front().kind == MessageKind::Snapshot ? 1U : 0U;
     queue_.pop_front();
     writing_ = false;
 }

@@ -39,13 +39,41 @@ TEST(WriteQueue, OneWriteInFlight) {
 
 TEST(WriteQueue, SnapshotsAreDroppedUnderBackPressure) {
     WriteQueue q(1000, 2);
-    EXPECT_EQ(q.push(text("1")), WriteQueue::Push::Queued);
+    EXPECT_EQ(q.push(text("s0", MessageKind::Snapshot)), WriteQueue::Push::Queued);
     ASSERT_TRUE(q.start_write()); // in flight does not count as waiting
-    EXPECT_EQ(q.push(text("s", MessageKind::Snapshot)), WriteQueue::Push::Queued);
-    EXPECT_EQ(q.push(text("2")), WriteQueue::Push::Queued);
-    EXPECT_EQ(q.push(text("s", MessageKind::Snapshot)), WriteQueue::Push::DroppedSnapshot);
+    EXPECT_EQ(q.push(text("s1", MessageKind::Snapshot)), WriteQueue::Push::Queued);
+    EXPECT_EQ(q.push(text("s2", MessageKind::Snapshot)), WriteQueue::Push::Queued);
+    EXPECT_EQ(q.waiting_snapshots(), 2U);
+    EXPECT_EQ(q.push(text("s3", MessageKind::Snapshot)), WriteQueue::Push::DroppedSnapshot);
     EXPECT_EQ(q.push(text("3")), WriteQueue::Push::Queued); // normal messages still queue
     EXPECT_EQ(q.queued_messages(), 4U);
+    // The in-flight snapshot finishes and the next starts: one snapshot waits, so a new one
+    // queues again.
+    q.finish_write();
+    ASSERT_TRUE(q.start_write());
+    EXPECT_EQ(q.waiting_snapshots(), 1U);
+    EXPECT_EQ(q.push(text("s4", MessageKind::Snapshot)), WriteQueue::Push::Queued);
+}
+
+TEST(WriteQueue, EventsDoNotCountTowardTheSnapshotBacklog) {
+    WriteQueue q(100000, 2);
+    ASSERT_EQ(q.push(text("e0")), WriteQueue::Push::Queued);
+    ASSERT_TRUE(q.start_write());
+    for (int i = 0; i < 50; ++i) { // a break's burst of collision events
+        ASSERT_EQ(q.push(text("e")), WriteQueue::Push::Queued);
+    }
+    EXPECT_EQ(q.waiting_snapshots(), 0U);
+    EXPECT_EQ(q.push(text("s1", MessageKind::Snapshot)), WriteQueue::Push::Queued);
+    EXPECT_EQ(q.push(text("s2", MessageKind::Snapshot)), WriteQueue::Push::Queued);
+    EXPECT_EQ(q.push(text("s3", MessageKind::Snapshot)), WriteQueue::Push::DroppedSnapshot);
+    // Drain everything: the counts return to zero.
+    q.finish_write();
+    while (q.start_write()) {
+        q.finish_write();
+    }
+    EXPECT_TRUE(q.empty());
+    EXPECT_EQ(q.waiting_snapshots(), 0U);
+    EXPECT_EQ(q.queued_bytes(), 0U);
 }
 
 TEST(WriteQueue, OverflowPastTheByteBound) {

@@ -25,7 +25,7 @@ struct ServerSettings {
     double grace_s = 60.0;                 // dropped seat kept this long
     double shot_clock_s = 20.0;            // default per stroke; 0 = off
     std::size_t max_queue_bytes = 1 << 20; // per-session write queue bound
-    std::size_t snapshot_backlog = 8;      // queued messages above which snapshots are dropped
+    std::size_t snapshot_backlog = 8;      // waiting snapshots at which new ones are dropped
     double shutdown_grace_s = 3.0;         // SIGINT/SIGTERM: time to close cleanly
     // A quick-match waiter with no partner after this long gets a bot room; 0 = never.
     double quick_match_bot_s = 20.0;
