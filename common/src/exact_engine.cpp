@@ -395,37 +395,33 @@ void ExactEngine::Impl::advance(double u) {
     Vec2* const p = pos.data();
     Vec2* const v = vel.data();
     double* const sp = speed.data();
-    if (use_near) {
-        // At most 64 bodies: one branch-free pass over all of them (vectorised), cheaper than
-        // walking moving_mask. A body at rest or pocketed has v == 0 and speed 0, so
-        // p + 0 * s == p and its state is unchanged.
-        const std::size_t n = pos.size();
-        for (std::size_t i = 0; i < n; ++i) {
-            const Vec2 vi = v[i];
-            p[i] += vi * s;
-            v[i] = vi * decay;
-            sp[i] *= decay;
-        }
-        u_now = u;
-        now_stale = true;
-        return;
-    }
-    const std::size_t n = pos.size();
-    if (moving_list_stale) {
-        moving_list.clear();
-        for (std::size_t i = 0; i < n; ++i) {
-            if (moving[i]) {
-                moving_list.push_back(static_cast<int>(i));
-            }
-        }
-        moving_list_stale = false;
-    }
-    for (int mi : moving_list) {
-        const auto i = static_cast<std::size_t>(mi);
+    const auto move = [p, v, sp, s, decay](std::size_t i) {
         const Vec2 vi = v[i];
         p[i] += vi * s;
         v[i] = vi * decay;
         sp[i] *= decay;
+    };
+    const std::size_t n = pos.size();
+    if (use_near) {
+        // At most 64 bodies: one branch-free pass over all of them (vectorised), cheaper than
+        // walking moving_mask. A body at rest or pocketed has v == 0 and speed 0, so
+        // p + 0 * s == p and its state is unchanged.
+        for (std::size_t i = 0; i < n; ++i) {
+            move(i);
+        }
+    } else {
+        if (moving_list_stale) {
+            moving_list.clear();
+            for (std::size_t i = 0; i < n; ++i) {
+                if (moving[i]) {
+                    moving_list.push_back(static_cast<int>(i));
+                }
+            }
+            moving_list_stale = false;
+        }
+        for (int mi : moving_list) {
+            move(static_cast<std::size_t>(mi));
+        }
     }
     u_now = u;
     now_stale = true;
@@ -1100,7 +1096,7 @@ void ExactEngine::Impl::settle_initial_state(std::uint64_t unchanged) {
                                     ? unchanged & resting_cached & ~moving_mask
                                     : 0;
     for (std::size_t i = 0; i < pos.size(); ++i) {
-        if (((reuse >> i) & 1U) != 0) {
+        if (i < 64 && ((reuse >> i) & 1U) != 0) {
             restore_resting_box(i);
             continue;
         }

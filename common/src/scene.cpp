@@ -174,74 +174,56 @@ std::optional<SceneError> first_overlap(const PhysicsConfig& config, std::span<c
     // Overlaps: the centres and radii of the bodies on the board are gathered once (on the
     // stack for scenes of up to 64 bodies), in input order, so the first overlapping pair found
     // is the same as in a plain double loop over the input. A branch-free pass first asks
-    // whether any pair comes within reach + slack of each other (none does in a valid scene);
-    // only then does the exact search for the first overlapping pair run.
+    // whether any pair with a body not in known_pairs_ok comes within reach + slack (none does
+    // in a valid scene); only then does the ordered search for the first overlap run.
+    struct Disc {
+        double x, y, r;
+        std::size_t index;
+        bool known; // one of the known_pairs_ok bodies
+    };
     constexpr std::size_t kStackDiscs = 64;
-    std::array<double, kStackDiscs> stack_x, stack_y, stack_r;
-    std::array<std::size_t, kStackDiscs> stack_index;
-    std::vector<double> heap_x, heap_y, heap_r;
-    std::vector<std::size_t> heap_index;
-    double* xs = stack_x.data();
-    double* ys = stack_y.data();
-    double* rs = stack_r.data();
-    std::size_t* index = stack_index.data();
+    std::array<Disc, kStackDiscs> stack_discs;
+    std::vector<Disc> heap_discs;
+    Disc* discs = stack_discs.data();
     if (bodies.size() > kStackDiscs) {
-        heap_x.resize(bodies.size());
-        heap_y.resize(bodies.size());
-        heap_r.resize(bodies.size());
-        heap_index.resize(bodies.size());
-        xs = heap_x.data();
-        ys = heap_y.data();
-        rs = heap_r.data();
-        index = heap_index.data();
+        heap_discs.resize(bodies.size());
+        discs = heap_discs.data();
     }
     std::size_t count = 0;
-    std::array<char, kStackDiscs> stack_known{}; // disc is one of the known_pairs_ok bodies
-    std::vector<char> heap_known;
-    char* known = stack_known.data();
-    if (bodies.size() > kStackDiscs) {
-        heap_known.resize(bodies.size());
-        known = heap_known.data();
-    }
     for (std::size_t i = 0; i < bodies.size(); ++i) {
         const Body& b = bodies[i];
         if (!b.pocketed) {
-            xs[count] = b.pos_px.x;
-            ys[count] = b.pos_px.y;
-            rs[count] = config.radius(b.kind);
-            index[count] = i;
-            known[count] = static_cast<char>(i < 64 && ((known_pairs_ok >> i) & 1U) != 0);
-            ++count;
+            const bool known = i < 64 && ((known_pairs_ok >> i) & 1U) != 0;
+            discs[count++] = {b.pos_px.x, b.pos_px.y, config.radius(b.kind), i, known};
         }
     }
     // An overlap beyond the tolerance puts the centres closer than reach + slack, px (slack
     // covers a negative tolerance and the rounding of the exact test).
     const double slack = std::max(0.0, -overlap_tolerance_px) + 1e-3;
     bool near_pair = false;
-    // Every pair with at least one body not known to be valid: such a body against all others
-    // (a pair of two of them is tested twice, which changes nothing).
+    // Each body not known to be valid against all others (a pair of two such bodies is tested
+    // twice, which changes nothing).
     for (std::size_t i = 0; i < count; ++i) {
-        if (known[i] != 0) {
-            continue;
-        }
-        for (std::size_t j = 0; j < count; ++j) {
-            const double reach = rs[i] + rs[j] + slack;
-            const double dx = xs[j] - xs[i];
-            const double dy = ys[j] - ys[i];
+        const Disc a = discs[i];
+        for (std::size_t j = 0; !a.known && j < count; ++j) {
+            const double reach = a.r + discs[j].r + slack;
+            const double dx = discs[j].x - a.x;
+            const double dy = discs[j].y - a.y;
             near_pair |= j != i && dx * dx + dy * dy < reach * reach;
         }
     }
     for (std::size_t i = 0; near_pair && i < count; ++i) {
+        const Disc a = discs[i];
         for (std::size_t j = i + 1; j < count; ++j) {
-            const double reach = rs[i] + rs[j];
-            const Vec2 d{xs[j] - xs[i], ys[j] - ys[i]};
-            if ((known[i] & known[j]) != 0 || std::fabs(d.x) >= reach || std::fabs(d.y) >= reach) {
+            const double reach = a.r + discs[j].r;
+            const Vec2 d{discs[j].x - a.x, discs[j].y - a.y};
+            if ((a.known && discs[j].known) || std::fabs(d.x) >= reach || std::fabs(d.y) >= reach) {
                 continue; // cheap rejection; exact test below
             }
             const double overlap = reach - length(d);
             if (overlap > overlap_tolerance_px) {
-                const Body& first = bodies[index[i]];
-                const Body& second = bodies[index[j]];
+                const Body& first = bodies[a.index];
+                const Body& second = bodies[discs[j].index];
                 return SceneError{"overlap", second.id, "pos",
                                   "body " + std::to_string(second.id) + " overlaps body " +
                                       std::to_string(first.id) + " by " + fmt(overlap) + " px"};

@@ -100,11 +100,18 @@ TEST(ExactLayoutReuse, ChangedBodiesAreNotTakenFromTheLastScene) {
     }
 }
 
-TEST(ExactLayoutReuse, ACoinMovedOntoAnotherIsRejectedAfterAValidLayout) {
+// An engine that has just simulated a valid shot on the standard layout.
+class AfterAValidLayout : public ::testing::Test {
+protected:
+    void SetUp() override {
+        ASSERT_TRUE(engine.run(with_striker(layout, 300.0, -std::numbers::pi / 2.0, 10.0)).result);
+    }
     const PhysicsConfig config;
     const std::vector<Body> layout = standard_layout(config);
-    ExactEngine engine(config);
-    ASSERT_TRUE(engine.run(with_striker(layout, 300.0, -std::numbers::pi / 2.0, 10.0)).result);
+    ExactEngine engine{config};
+};
+
+TEST_F(AfterAValidLayout, ACoinMovedOntoAnotherIsRejected) {
     std::vector<Body> bad = layout;
     bad[1].pos_px = bad[0].pos_px + Vec2{10.0, 0.0}; // inner-ring coin 1 onto the queen
     const std::vector<Body> scene = with_striker(bad, 300.0, -std::numbers::pi / 2.0, 10.0);
@@ -119,11 +126,7 @@ TEST(ExactLayoutReuse, ACoinMovedOntoAnotherIsRejectedAfterAValidLayout) {
     EXPECT_TRUE(engine.run(scene).error);
 }
 
-TEST(ExactLayoutReuse, AStrikerPlacedOnACoinIsRejectedAfterAValidLayout) {
-    const PhysicsConfig config;
-    const std::vector<Body> layout = standard_layout(config);
-    ExactEngine engine(config);
-    ASSERT_TRUE(engine.run(with_striker(layout, 300.0, -std::numbers::pi / 2.0, 10.0)).result);
+TEST_F(AfterAValidLayout, AStrikerPlacedOnACoinIsRejected) {
     std::vector<Body> scene = layout;
     scene.push_back(striker(kStrikerId, layout[4].pos_px.x + 20.0, layout[4].pos_px.y));
     const ExactEngine::Outcome outcome = engine.run(scene);
