@@ -33,16 +33,27 @@ inline double time_to_reach(Vec2 d, Vec2 w, double reach, double s_max) {
     }
     // c = |d|^2 - reach^2. Far apart, the direct difference loses nothing; near touching it is
     // computed as (|d| - reach)(|d| + reach) to keep the small gap exact.
-    double c = dd - reach * reach;
-    if (dd < 4.0 * reach * reach) {
+    // With c > 0, sqrt(b^2 - a c) <= -b, so the root is at least c / (-2 b): when c exceeds
+    // `late`, the root is beyond s_max even after rounding, the same answer as the full solve.
+    const double late = 2.000001 * -b * s_max;
+    const double rr = reach * reach;
+    const double a = dot(w, w);
+    double c = dd - rr;
+    if (dd < 4.0 * rr) {
+        // The direct c differs from the near-touching form by less than 1e-15 (rr + |c|) (both
+        // are within a few roundings of the true value; docs/physics.md, "Contact times"), so a
+        // margin of 1e-13 of the magnitudes decides these two rejections without the square
+        // roots, exactly as the full solve below would.
+        const double slack = 1e-13 * (rr + std::fabs(c));
+        if (c - slack > late || b * b - a * c + 1e-13 * (b * b + a * (rr + std::fabs(c))) < 0.0) {
+            return kNever;
+        }
         const double dist = std::sqrt(dd);
         c = (dist - reach) * (dist + reach);
-    } else if (c > 2.000001 * -b * s_max) {
-        // Far apart (c > 0): sqrt(b^2 - a c) <= -b, so the root is at least c / (-2 b), which
-        // is beyond s_max even after rounding; the same answer as the full solve, cheaper.
+    }
+    if (c > late) {
         return kNever;
     }
-    const double a = dot(w, w);
     const double disc = b * b - a * c;
     if (disc < 0.0) {
         return kNever;

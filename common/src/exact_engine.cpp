@@ -1036,9 +1036,18 @@ bool ExactEngine::Impl::collect_isolated_pair() {
 // approach (normal relative speed above the approach tolerance); false otherwise.
 bool ExactEngine::Impl::approaching_pair(std::size_t lo_i, std::size_t hi_i, Contact& out) const {
     const Vec2 d = pos[hi_i] - pos[lo_i];
+    const Vec2 w = vel[hi_i] - vel[lo_i];
+    // Clearly moving apart (the pair just exchanged its impulse, say): w . d exceeds the
+    // rounding of the normalised form below (a few 1e-16 of its terms) by far, so u > 0 there
+    // too and the answer is the same, without the square root and the division.
+    const double wx_dx = w.x * d.x;
+    const double wy_dy = w.y * d.y;
+    if (wx_dx + wy_dy > 1e-12 * (std::fabs(wx_dx) + std::fabs(wy_dy))) {
+        return false;
+    }
     const double dist = std::sqrt(length_squared(d));
     const Vec2 normal = d * (1.0 / dist);
-    const double u = dot(vel[hi_i] - vel[lo_i], normal);
+    const double u = dot(w, normal);
     if (!(u < -kApproachTolerancePxS)) {
         return false;
     }

@@ -48,7 +48,12 @@ int count_pocketed(const MatchState& state, BodyKind kind) {
 
 namespace {
 
-const Body* find_body(const std::vector<Body>& bodies, int id) {
+// The body with this id (ids are unique). The engine returns bodies in input order, so the
+// one at `hint` (the index in the state) is checked first.
+const Body* find_body(const std::vector<Body>& bodies, int id, std::size_t hint) {
+    if (hint < bodies.size() && bodies[hint].id == id) {
+        return &bodies[hint];
+    }
     for (const Body& body : bodies) {
         if (body.id == id) {
             return &body;
@@ -60,8 +65,9 @@ const Body* find_body(const std::vector<Body>& bodies, int id) {
 // Newly pocketed piece ids: first in pocket_order, then any others by id.
 std::vector<int> newly_pocketed(const MatchState& state, const StrokePhysics& physics) {
     std::vector<int> fresh;
-    for (const Body& before : state.bodies) {
-        const Body* after = find_body(physics.bodies, before.id);
+    for (std::size_t i = 0; i < state.bodies.size(); ++i) {
+        const Body& before = state.bodies[i];
+        const Body* after = find_body(physics.bodies, before.id, i);
         if (!before.pocketed && after != nullptr && after->pocketed) {
             fresh.push_back(before.id);
         }
@@ -101,8 +107,9 @@ Stroke begin_stroke(const MatchState& state, int seat, const Shot& shot,
     s.touched = physics.striker_touched_coin;
     s.cover_stroke = state.queen.status == QueenStatus::PendingCover && state.queen.seat == seat;
     s.scores_before = state.scores;
-    for (Body& body : s.state.bodies) {
-        const Body* after = find_body(physics.bodies, body.id);
+    for (std::size_t i = 0; i < s.state.bodies.size(); ++i) {
+        Body& body = s.state.bodies[i];
+        const Body* after = find_body(physics.bodies, body.id, i);
         if (after != nullptr && !body.pocketed) {
             body.pos_px = inside_cushions(state.physics, body.kind, after->pos_px);
         }

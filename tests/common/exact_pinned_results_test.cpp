@@ -1,0 +1,98 @@
+// The engine's results, pinned: a hash of every event and final state of the break and of 512
+// random shots on the standard layout. Speed work on the engine must keep results bit for bit
+// (docs/physics.md, "Speed"), because the bot measurements of docs/bots.md were taken with them.
+// If a change alters results on purpose, update the constants below and re-run the bots report
+// (the command is in docs/bots.md).
+
+#include "carrom/exact_engine.hpp"
+#include "carrom/scene.hpp"
+
+#include <gtest/gtest.h>
+
+#include <bit>
+#include <cstdint>
+#include <numbers>
+#include <random>
+#include <vector>
+
+namespace carrom {
+namespace {
+
+// FNV-1a over the bits of everything a run reports.
+class ResultHash {
+public:
+    void add(std::uint64_t word) {
+        for (int byte = 0; byte < 8; ++byte) {
+            value_ ^= (word >> (8 * byte)) & 0xFFU;
+            value_ *= 1099511628211ULL;
+        }
+    }
+    void add(double x) { add(std::bit_cast<std::uint64_t>(x)); }
+    void add(int x) { add(static_cast<std::uint64_t>(static_cast<std::uint32_t>(x))); }
+    void add(const SimResult& r) {
+        for (const Event& e : r.events) {
+            add(e.t_s);
+            add(static_cast<int>(e.kind));
+            add(e.a);
+            add(e.b);
+            add(e.impulse);
+            add(e.pos_px.x);
+            add(e.pos_px.y);
+        }
+        for (const Body& b : r.bodies) {
+            add(b.pos_px.x);
+            add(b.pos_px.y);
+            add(b.vel_px_s.x);
+            add(b.vel_px_s.y);
+            add(b.pocketed ? 1 : 0);
+        }
+        add(r.end_time_s);
+        for (int id : r.pocket_order) {
+            add(id);
+        }
+    }
+    std::uint64_t value() const { return value_; }
+
+private:
+    std::uint64_t value_ = 1469598103934665603ULL;
+};
+
+// A double in [lo, hi) from the generator's raw output (whose sequence the standard fixes).
+double draw(std::mt19937_64& rng, double lo, double hi) {
+    return lo + (hi - lo) * static_cast<double>(rng() >> 11U) * 0x1.0p-53;
+}
+
+TEST(ExactPinnedResults, TheBreakGivesThePinnedEventsAndFinalState) {
+    const PhysicsConfig config;
+    std::vector<Body> scene = standard_layout(config);
+    scene.push_back(
+        make_striker(config, Baseline::Bottom, Shot{300.0, -std::numbers::pi / 2.0, 25.0}));
+    ExactEngine engine(config);
+    const ExactEngine::Outcome run = engine.run(scene);
+    ASSERT_FALSE(run.error.has_value());
+    ResultHash hash;
+    hash.add(*run.result);
+    EXPECT_EQ(run.result->events.size(), 77U);
+    EXPECT_EQ(hash.value(), 0x8f8a41ca1aee0befULL) << std::hex << "actual 0x" << hash.value();
+}
+
+TEST(ExactPinnedResults, RandomShotsGiveThePinnedEventsAndFinalStates) {
+    const PhysicsConfig config;
+    const std::vector<Body> layout = standard_layout(config);
+    std::mt19937_64 rng(20261122);
+    ExactEngine engine(config);
+    ResultHash hash;
+    for (int shot = 0; shot < 512; ++shot) {
+        std::vector<Body> scene = layout;
+        const Shot s{draw(rng, baseline_x_min(config), baseline_x_max(config)),
+                     -std::numbers::pi / 2.0 + draw(rng, -1.0, 1.0), draw(rng, 5.0, 25.0)};
+        scene.push_back(make_striker(config, Baseline::Bottom, s));
+        const ExactEngine::Outcome run = engine.run(scene);
+        ASSERT_FALSE(run.error.has_value()) << "shot " << shot;
+        hash.add(*run.result);
+    }
+    EXPECT_EQ(hash.value(), 0xc602b793a38295e3ULL) << std::hex << "actual 0x" << hash.value();
+}
+
+} // namespace
+} // namespace carrom
