@@ -41,7 +41,7 @@ inline double time_to_reach(Vec2 d, Vec2 w, double reach, double s_max) {
     double c = dd - rr;
     if (dd < 4.0 * rr) {
         // The direct c differs from the near-touching form by less than 1e-15 (rr + |c|) (both
-        // are within a few roundings of the true value; docs/physics.md, "Contact times"), so a
+        // are within a few roundings of the true value; docs/physics.md, "Speed"), so a
         // margin of 1e-13 of the magnitudes decides these two rejections without the square
         // roots, exactly as the full solve below would.
         const double slack = 1e-13 * (rr + std::fabs(c));
