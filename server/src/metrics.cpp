@@ -52,6 +52,8 @@ std::string Metrics::prometheus_text() const {
     metric(out, "carrom_snapshots_total", "counter", "Snapshot broadcasts.", snapshots_total);
     metric(out, "carrom_snapshots_dropped_total", "counter", "Snapshots dropped for slow clients.",
            snapshots_dropped_total);
+    metric(out, "carrom_cues_dropped_total", "counter",
+           "Collision and aim cues dropped for clients that were behind.", cues_dropped_total);
     metric(out, "carrom_slow_client_disconnects_total", "counter",
            "Clients disconnected for a full write queue.", slow_client_disconnects_total);
     metric(out, "carrom_http_requests_total", "counter", "Plain HTTP requests.",

@@ -411,6 +411,9 @@ void WsSession::send_now(Outgoing message) {
         core_.metrics.snapshots_dropped_total.fetch_add(1, std::memory_order_relaxed);
         keyframe_request_ = true;
         break;
+    case WriteQueue::Push::DroppedCue:
+        core_.metrics.cues_dropped_total.fetch_add(1, std::memory_order_relaxed);
+        break;
     case WriteQueue::Push::Overflow:
         core_.metrics.slow_client_disconnects_total.fetch_add(1, std::memory_order_relaxed);
         spdlog::info("player {}: write queue full, disconnecting", player_id_);

@@ -402,8 +402,7 @@ void Room::aim(Peer& peer, const proto::Aim& aim) {
         return;
     }
     aim_x_px_ = aim.x_px;
-    broadcast(proto::Event{proto::AimEvent{seat, aim.turn, aim.x_px}}, MessageKind::Snapshot,
-              &peer);
+    broadcast(proto::Event{proto::AimEvent{seat, aim.turn, aim.x_px}}, MessageKind::Cue, &peer);
 }
 
 void Room::shoot(Peer& peer, const proto::Shoot& shoot) {
@@ -452,7 +451,7 @@ void Room::stream_tick(std::int64_t now_ms) {
     for (auto& event : step.events) {
         const bool pocket = std::holds_alternative<proto::PocketEvent>(event);
         broadcast(proto::ServerMessage{std::move(event)},
-                  pocket ? MessageKind::Normal : MessageKind::Snapshot);
+                  pocket ? MessageKind::Normal : MessageKind::Cue);
     }
     metrics_.snapshots_total.fetch_add(1, std::memory_order_relaxed);
     auto delta = std::make_shared<const std::string>(encode_snapshot(step.snapshot));

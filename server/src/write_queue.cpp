@@ -2,26 +2,42 @@
 
 namespace carrom::server {
 
-WriteQueue::WriteQueue(std::size_t max_bytes, std::size_t snapshot_backlog)
-    : max_bytes_(max_bytes), snapshot_backlog_(snapshot_backlog) {}
+WriteQueue::WriteQueue(std::size_t max_bytes, std::size_t snapshot_backlog, std::size_t cue_backlog)
+    : max_bytes_(max_bytes), snapshot_backlog_(snapshot_backlog), cue_backlog_(cue_backlog) {}
+
+// 1 when the message in flight is of this kind.
+std::size_t WriteQueue::in_flight(MessageKind kind) const {
+    return writing_ && !queue_.empty() && queue_.front().kind == kind ? 1U : 0U;
+}
+
+void WriteQueue::count(MessageKind kind, int sign) {
+    const auto step = static_cast<std::size_t>(sign); // +1 or, wrapping, -1
+    snapshots_ += kind == MessageKind::Snapshot ? step : 0U;
+    cues_ += kind == MessageKind::Cue ? step : 0U;
+}
 
 std::size_t WriteQueue::waiting_snapshots() const {
-    const bool in_flight_snapshot =
-        writing_ && !queue_.empty() && queue_.front().kind == MessageKind::Snapshot;
-    return snapshots_ - (in_flight_snapshot ? 1U : 0U);
+    return snapshots_ - in_flight(MessageKind::Snapshot);
+}
+
+std::size_t WriteQueue::waiting_cues() const {
+    return cues_ - in_flight(MessageKind::Cue);
 }
 
 WriteQueue::Push WriteQueue::push(Outgoing message) {
-    const bool snapshot = message.kind == MessageKind::Snapshot;
-    if (snapshot && waiting_snapshots() >= snapshot_backlog_) {
+    const bool behind = waiting_snapshots() >= snapshot_backlog_;
+    if (message.kind == MessageKind::Snapshot && behind) {
         return Push::DroppedSnapshot;
+    }
+    if (message.kind == MessageKind::Cue && (behind || waiting_cues() >= cue_backlog_)) {
+        return Push::DroppedCue;
     }
     const std::size_t size = message.text ? message.text->size() : 0;
     if (bytes_ + size > max_bytes_) {
         return Push::Overflow;
     }
     bytes_ += size;
-    snapshots_ += snapshot ? 1U : 0U;
+    count(message.kind, 1);
     queue_.push_back(std::move(message));
     return Push::Queued;
 }
@@ -40,7 +56,7 @@ void WriteQueue::finish_write() {
     }
     const std::size_t size = queue_.front().text ? queue_.front().text->size() : 0;
     bytes_ -= size;
-    snapshots_ -= queue_.front().kind == MessageKind::Snapshot ? 1U : 0U;
+    count(queue_.front().kind, -1);
     queue_.pop_front();
     writing_ = false;
 }

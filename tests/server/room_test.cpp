@@ -250,7 +250,7 @@ TEST_F(RoomTest, AimIsRelayedToOthersOnly) {
     EXPECT_TRUE(a_->events<proto::AimEvent>().empty());
     ASSERT_EQ(b_->events<proto::AimEvent>().size(), 1U);
     EXPECT_EQ(b_->events<proto::AimEvent>()[0], (proto::AimEvent{0, 0, 250.5}));
-    EXPECT_EQ(b_->kinds.back(), MessageKind::Snapshot); // droppable under back-pressure
+    EXPECT_EQ(b_->kinds.back(), MessageKind::Cue); // droppable, and asks for no keyframe
 }
 
 TEST_F(RoomTest, SlowPeerGetsAKeyframeInsteadOfADelta) {

@@ -55,14 +55,15 @@ TEST(WriteQueue, SnapshotsAreDroppedUnderBackPressure) {
     EXPECT_EQ(q.push(text("s4", MessageKind::Snapshot)), WriteQueue::Push::Queued);
 }
 
-TEST(WriteQueue, EventsDoNotCountTowardTheSnapshotBacklog) {
+TEST(WriteQueue, CollisionCuesDoNotCountTowardTheSnapshotBacklog) {
     WriteQueue q(100000, 2);
-    ASSERT_EQ(q.push(text("e0")), WriteQueue::Push::Queued);
+    ASSERT_EQ(q.push(text("e0", MessageKind::Cue)), WriteQueue::Push::Queued);
     ASSERT_TRUE(q.start_write());
-    for (int i = 0; i < 50; ++i) { // a break's burst of collision events
-        ASSERT_EQ(q.push(text("e")), WriteQueue::Push::Queued);
+    for (int i = 0; i < 50; ++i) { // a break's burst of collision events, as the room sends them
+        ASSERT_EQ(q.push(text("e", MessageKind::Cue)), WriteQueue::Push::Queued);
     }
     EXPECT_EQ(q.waiting_snapshots(), 0U);
+    EXPECT_EQ(q.waiting_cues(), 50U);
     EXPECT_EQ(q.push(text("s1", MessageKind::Snapshot)), WriteQueue::Push::Queued);
     EXPECT_EQ(q.push(text("s2", MessageKind::Snapshot)), WriteQueue::Push::Queued);
     EXPECT_EQ(q.push(text("s3", MessageKind::Snapshot)), WriteQueue::Push::DroppedSnapshot);
@@ -73,7 +74,48 @@ TEST(WriteQueue, EventsDoNotCountTowardTheSnapshotBacklog) {
     }
     EXPECT_TRUE(q.empty());
     EXPECT_EQ(q.waiting_snapshots(), 0U);
+    EXPECT_EQ(q.waiting_cues(), 0U);
     EXPECT_EQ(q.queued_bytes(), 0U);
+}
+
+TEST(WriteQueue, NormalMessagesDoNotCountTowardTheSnapshotBacklog) {
+    WriteQueue q(100000, 1);
+    ASSERT_EQ(q.push(text("n0")), WriteQueue::Push::Queued);
+    ASSERT_TRUE(q.start_write());
+    for (int i = 0; i < 20; ++i) {
+        ASSERT_EQ(q.push(text("n")), WriteQueue::Push::Queued);
+    }
+    EXPECT_EQ(q.push(text("s1", MessageKind::Snapshot)), WriteQueue::Push::Queued);
+    EXPECT_EQ(q.push(text("s2", MessageKind::Snapshot)), WriteQueue::Push::DroppedSnapshot);
+}
+
+TEST(WriteQueue, CuesAreDroppedWhileTheClientIsBehindOnSnapshots) {
+    WriteQueue q(100000, 2);
+    ASSERT_EQ(q.push(text("s0", MessageKind::Snapshot)), WriteQueue::Push::Queued);
+    ASSERT_TRUE(q.start_write());
+    ASSERT_EQ(q.push(text("s1", MessageKind::Snapshot)), WriteQueue::Push::Queued);
+    EXPECT_EQ(q.push(text("c1", MessageKind::Cue)),
+              WriteQueue::Push::Queued); // 1 waits: not behind
+    ASSERT_EQ(q.push(text("s2", MessageKind::Snapshot)), WriteQueue::Push::Queued);
+    EXPECT_EQ(q.push(text("c2", MessageKind::Cue)), WriteQueue::Push::DroppedCue); // 2 wait
+    EXPECT_EQ(q.push(text("n")), WriteQueue::Push::Queued); // a normal message still queues
+    EXPECT_EQ(q.waiting_cues(), 1U);
+    // Once the client catches up (one snapshot written), cues queue again.
+    q.finish_write();
+    ASSERT_TRUE(q.start_write()); // s1 in flight, s2 waits
+    EXPECT_EQ(q.push(text("c3", MessageKind::Cue)), WriteQueue::Push::Queued);
+}
+
+TEST(WriteQueue, CuesHaveTheirOwnBacklog) {
+    WriteQueue q(100000, 8, 3);
+    ASSERT_EQ(q.push(text("c0", MessageKind::Cue)), WriteQueue::Push::Queued);
+    ASSERT_TRUE(q.start_write()); // the cue in flight does not count as waiting
+    for (int i = 0; i < 3; ++i) {
+        ASSERT_EQ(q.push(text("c", MessageKind::Cue)), WriteQueue::Push::Queued);
+    }
+    EXPECT_EQ(q.push(text("c4", MessageKind::Cue)), WriteQueue::Push::DroppedCue);
+    EXPECT_EQ(q.push(text("s", MessageKind::Snapshot)), WriteQueue::Push::Queued);
+    EXPECT_EQ(q.queued_messages(), 5U); // c0 in flight, 3 cues, the snapshot
 }
 
 TEST(WriteQueue, OverflowPastTheByteBound) {

@@ -25,6 +25,7 @@ struct Metrics {
     std::atomic<std::int64_t> errors_sent_total{0};
     std::atomic<std::int64_t> snapshots_total{0};         // snapshot broadcasts
     std::atomic<std::int64_t> snapshots_dropped_total{0}; // dropped for slow clients
+    std::atomic<std::int64_t> cues_dropped_total{0};      // collision and aim cues dropped
     std::atomic<std::int64_t> slow_client_disconnects_total{0};
     std::atomic<std::int64_t> http_requests_total{0};
 

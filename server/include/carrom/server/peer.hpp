@@ -11,6 +11,8 @@ namespace carrom::server {
 enum class MessageKind : std::uint8_t {
     Normal,   // must be delivered (or the client is disconnected)
     Snapshot, // a delta snapshot: may be dropped under back-pressure (then a keyframe follows)
+    Cue,      // only useful while fresh (a collision's sound, the opponent's aim): dropped, with
+              // no keyframe, while the client is behind; never counted as a snapshot
 };
 
 struct Outgoing {

@@ -14,12 +14,14 @@ class WriteQueue {
 public:
     // A snapshot is dropped while `snapshot_backlog` or more snapshots wait (not counting the
     // one in flight): the client is then that many frames of motion behind. Other messages
-    // (events, room state) never count toward it, so a burst of physics events at a break does
-    // not cost a fast client its snapshots. Once queued bytes would exceed max_bytes the queue
-    // overflows (the session disconnects the slow client).
-    WriteQueue(std::size_t max_bytes, std::size_t snapshot_backlog);
+    // never count toward it, so a burst of collision cues at a break does not cost a fast
+    // client its snapshots. A cue is dropped while the client is that far behind, or while
+    // `cue_backlog` cues already wait (a cascade of collisions in one instant). Once queued
+    // bytes would exceed max_bytes the queue overflows (the session disconnects the slow
+    // client).
+    WriteQueue(std::size_t max_bytes, std::size_t snapshot_backlog, std::size_t cue_backlog = 64);
 
-    enum class Push { Queued, DroppedSnapshot, Overflow };
+    enum class Push { Queued, DroppedSnapshot, DroppedCue, Overflow };
     Push push(Outgoing message);
 
     // The next message to write, if none is in flight; marks it in flight.
@@ -31,15 +33,20 @@ public:
     bool empty() const { return queue_.empty() && !writing_; }
     std::size_t queued_messages() const { return queue_.size(); }
     std::size_t queued_bytes() const { return bytes_; }
-    // Snapshots queued and not in flight.
+    // Snapshots (cues) queued and not in flight.
     std::size_t waiting_snapshots() const;
+    std::size_t waiting_cues() const;
 
 private:
     std::size_t max_bytes_;
     std::size_t snapshot_backlog_;
+    std::size_t cue_backlog_;
     std::deque<Outgoing> queue_; // front is in flight while writing_
     std::size_t bytes_ = 0;
     std::size_t snapshots_ = 0; // snapshots in queue_, the one in flight included
+    std::size_t cues_ = 0;      // cues in queue_, the one in flight included
+    std::size_t in_flight(MessageKind kind) const;
+    void count(MessageKind kind, int sign);
     bool writing_ = false;
 };
 
