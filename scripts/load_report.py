@@ -2,7 +2,8 @@
 """Runs carrom-load at several match counts and writes the table and plot of docs/server-load.md.
 
 usage: scripts/load_report.py --build build/h-srv-rel [--matches 10 100 250 500 1000]
-                              [--duration 20] [--out-json /tmp/load.json] [--plot docs/img/server-load.png]
+                              [--duration 20] [--think-ms 8000] [--think-spread-ms 4000]
+                              [--out-json /tmp/load.json] [--plot docs/img/server-load.png]
 
 Each run starts its own carrom-server (Release build, 127.0.0.1, ephemeral port, 2 I/O threads),
 ramps the matches up, measures for --duration seconds and stops the server. Prints a Markdown
@@ -46,6 +47,11 @@ def run(build, matches, duration, think_ms, extra, nice):
     return result
 
 
+def think_spread(row):
+    spread = row.get("think_spread_ms", 0)
+    return f" ± {spread}" if spread else ""
+
+
 def table(rows):
     head = ("| matches | think ms | held | server CPU % | load tool CPU % | msgs/s received | "
             "snapshot lag p50 / p99 ms | relative lag p50 / p99 ms | server send lag p50 / p99 | "
@@ -54,7 +60,7 @@ def table(rows):
     lines = [head, "|" + " --- |" * 13]
     for r in rows:
         lines.append(
-            f"| {r['matches']} | {r['think_ms']} | {r['held_at_end']} | "
+            f"| {r['matches']} | {r['think_ms']}{think_spread(r)} | {r['held_at_end']} | "
             f"{r['server_cpu_percent']:.0f} | {r['client_cpu_percent']:.0f} | "
             f"{r['client_messages_per_s']:.0f} | {r['snapshot_lag_ms_p50']:.1f} / "
             f"{r['snapshot_lag_ms_p99']:.1f} | {r['relative_lag_ms_p50']:.1f} / "
@@ -94,6 +100,8 @@ def main():
     parser.add_argument("--matches", type=int, nargs="+", default=[10, 100, 250, 500, 1000])
     parser.add_argument("--duration", type=float, default=20.0)
     parser.add_argument("--think-ms", type=int, default=0)
+    parser.add_argument("--think-spread-ms", type=int, default=0,
+                        help="each pause drawn uniformly within this of --think-ms")
     parser.add_argument("--server-arg", action="append", default=[])
     parser.add_argument("--nice", type=int, default=0,
                         help="run at this niceness, in a new session whose scheduler autogroup "
@@ -102,7 +110,7 @@ def main():
     parser.add_argument("--out-json")
     parser.add_argument("--plot")
     args = parser.parse_args()
-    extra = []
+    extra = ["--think-spread-ms", str(args.think_spread_ms)] if args.think_spread_ms else []
     for a in args.server_arg:
         extra += ["--server-arg=" + a]
     rows = []

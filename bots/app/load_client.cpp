@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <charconv>
 #include <deque>
+#include <random>
 
 namespace carrom::load {
 
@@ -62,7 +63,7 @@ public:
     Player(asio::io_context& ioc, MatchPair& pair, const LoadOptions& options, LoadStats& stats,
            bool creator, std::uint64_t seed)
         : pair_(pair), options_(options), stats_(stats), creator_(creator), ws_(ioc), think_(ioc),
-          strategy_(seed) {}
+          think_rng_(seed ^ 0x9e3779b97f4a7c15ULL), strategy_(seed) {}
 
     void start(std::string code) {
         code_ = std::move(code);
@@ -163,6 +164,7 @@ private:
             const double now_ms =
                 std::chrono::duration<double, std::milli>(now.time_since_epoch()).count();
             stats_.lag_ms.push_back(now_ms - static_cast<double>(due_ms));
+            stats_.lag_due_ms.push_back(due_ms);
         }
         // The old relative figure: receive time minus the snapshot's match time, minus the
         // shot's smallest such value (end_moving()).
@@ -255,12 +257,22 @@ private:
         }
         last_turn_ = room_->turn;
         const int turn = room_->turn;
-        think_.expires_after(options_.think);
+        think_.expires_after(think_delay());
         think_.async_wait([self = shared_from_this(), turn](beast::error_code ec) {
             if (!ec) {
                 self->shoot(turn);
             }
         });
+    }
+
+    std::chrono::milliseconds think_delay() {
+        const auto spread = options_.think_spread.count();
+        if (spread <= 0) {
+            return options_.think;
+        }
+        std::uniform_int_distribution<std::int64_t> offset(-spread, spread);
+        return std::max(std::chrono::milliseconds(0),
+                        options_.think + std::chrono::milliseconds(offset(think_rng_)));
     }
 
     void shoot(int turn) {
@@ -320,6 +332,7 @@ private:
     bool creator_;
     websocket::stream<beast::tcp_stream> ws_;
     asio::steady_timer think_;
+    std::mt19937_64 think_rng_; // the spread of think delays
     beast::flat_buffer buffer_;
     std::deque<std::string> outbox_;
     bool writing_ = false;

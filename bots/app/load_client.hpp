@@ -29,6 +29,7 @@ struct LoadStats {
     std::int64_t failures = 0; // connections that broke or never opened
     // Per delta snapshot: receive time - the time the room's schedule had it due (due_ms), ms.
     std::vector<double> lag_ms;
+    std::vector<std::int64_t> lag_due_ms; // due_ms of each lag_ms sample, for the timeline
     // Per delta snapshot: its delivery delay beyond the fastest snapshot of the same shot, ms
     // (receive time - match time t, minus the smallest such value of the shot).
     std::vector<double> relative_lag_ms;
@@ -41,6 +42,9 @@ struct LoadOptions {
     boost::asio::ip::tcp::endpoint server;
     proto::RuleSet rule_set = proto::RuleSet::Freestyle;
     std::chrono::milliseconds think{0}; // delay before each shot
+    // Each delay is drawn uniformly from [think - think_spread, think + think_spread] (players
+    // are not in step); 0: every delay is exactly `think`.
+    std::chrono::milliseconds think_spread{0};
 };
 
 // Two players of one room. The creator makes the room; the joiner starts once it has a code.

@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cmath>
 #include <csignal>
 #include <cstdio>
 #include <fstream>
@@ -196,6 +197,27 @@ double quantile(std::vector<double> values, double q) {
     return values[k];
 }
 
+// Lag per second of the window, by due time: [second, samples, p99 ms, max ms] rows, so a stall
+// shows where it happened rather than only in the percentiles of the whole window.
+nlohmann::json lag_timeline(const std::vector<double>& lag_ms,
+                            const std::vector<std::int64_t>& due_ms, std::int64_t window_start_ms,
+                            double duration_s) {
+    const auto seconds = static_cast<std::size_t>(std::ceil(duration_s));
+    std::vector<std::vector<double>> by_second(seconds);
+    for (std::size_t i = 0; i < lag_ms.size() && i < due_ms.size(); ++i) {
+        const std::int64_t offset_ms = due_ms[i] - window_start_ms;
+        if (offset_ms >= 0 && static_cast<std::size_t>(offset_ms / 1000) < seconds) {
+            by_second[static_cast<std::size_t>(offset_ms / 1000)].push_back(lag_ms[i]);
+        }
+    }
+    nlohmann::json rows = nlohmann::json::array();
+    for (std::size_t s = 0; s < seconds; ++s) {
+        rows.push_back(
+            {s, by_second[s].size(), quantile(by_second[s], 0.99), quantile(by_second[s], 1.0)});
+    }
+    return rows;
+}
+
 template <class F> auto on_io(asio::io_context& ioc, F f) {
     std::promise<decltype(f())> promise;
     auto future = promise.get_future();
@@ -230,6 +252,7 @@ int main(int argc, char** argv) {
     double warmup_s = 5.0;
     double duration_s = 20.0;
     int think_ms = 0;
+    int think_spread_ms = 0;
     std::string rule_set_name = "freestyle";
     std::uint64_t seed = 1;
     std::string json_out;
@@ -255,6 +278,9 @@ int main(int argc, char** argv) {
                    "Delay before each shot, ms (0: the board is nearly "
                    "always moving)")
         ->check(CLI::Range(0, 60000));
+    app.add_option("--think-spread-ms", think_spread_ms,
+                   "Each delay is drawn uniformly within this of --think-ms (players out of step)")
+        ->check(CLI::Range(0, 60000));
     app.add_option("--rule-set", rule_set_name, "Rule set")
         ->check(CLI::IsMember({"icf", "seed", "freestyle", "discpool"}));
     app.add_option("--seed", seed, "Random seed of the players");
@@ -262,6 +288,10 @@ int main(int argc, char** argv) {
         ->check(CLI::Range(1, 16));
     app.add_option("--json-out", json_out, "Also write the JSON result here");
     CLI11_PARSE(app, argc, argv);
+    if (think_spread_ms > think_ms) {
+        std::cerr << "--think-spread-ms must not exceed --think-ms.\n";
+        return 2;
+    }
     if (server_bin.empty() && port == 0) {
         std::cerr << "Give --server-bin PATH, or --port PORT [--server-pid PID].\n";
         return 2;
@@ -286,6 +316,7 @@ int main(int argc, char** argv) {
     options.server = {asio::ip::make_address("127.0.0.1"), server_port};
     proto::parse(rule_set_name, options.rule_set);
     options.think = std::chrono::milliseconds(think_ms);
+    options.think_spread = std::chrono::milliseconds(think_spread_ms);
     // Shards: each client thread runs its own io_context with its own matches and stats, so
     // nothing is shared between threads.
     struct Shard {
@@ -353,6 +384,8 @@ int main(int argc, char** argv) {
         measured.errors += stats.errors;
         measured.failures += stats.failures;
         measured.lag_ms.insert(measured.lag_ms.end(), stats.lag_ms.begin(), stats.lag_ms.end());
+        measured.lag_due_ms.insert(measured.lag_due_ms.end(), stats.lag_due_ms.begin(),
+                                   stats.lag_due_ms.end());
         measured.relative_lag_ms.insert(measured.relative_lag_ms.end(),
                                         stats.relative_lag_ms.begin(), stats.relative_lag_ms.end());
         measured.moving_bytes += stats.moving_bytes;
@@ -390,6 +423,7 @@ int main(int argc, char** argv) {
         {"matches", matches},
         {"rule_set", rule_set_name},
         {"think_ms", think_ms},
+        {"think_spread_ms", think_spread_ms},
         {"client_threads", client_threads},
         {"duration_s", elapsed},
         {"held_at_start", held_before},
@@ -408,6 +442,11 @@ int main(int argc, char** argv) {
         {"snapshot_lag_ms_p99", quantile(measured.lag_ms, 0.99)},
         {"snapshot_lag_ms_max", quantile(measured.lag_ms, 1.0)},
         {"lag_samples", measured.lag_ms.size()},
+        {"lag_by_second", lag_timeline(measured.lag_ms, measured.lag_due_ms,
+                                       std::chrono::duration_cast<std::chrono::milliseconds>(
+                                           start.time_since_epoch())
+                                           .count(),
+                                       elapsed)},
         {"relative_lag_ms_p50", quantile(measured.relative_lag_ms, 0.50)},
         {"relative_lag_ms_p99", quantile(measured.relative_lag_ms, 0.99)},
         {"server_send_lag_p50", server_lag_quantile(metrics_before, metrics_after, 0.50)},

@@ -1,0 +1,90 @@
+// The carrom-load executable end to end: it starts its own carrom-server on 127.0.0.1, drives a
+// few bot matches for a short window and prints the figures of docs/server-load.md as JSON.
+// Bounded: 4 matches, a 3 s window, the server at 4x speed so that shots end inside it; the run
+// ends by itself in about 6 s.
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <cstdio>
+#include <string>
+#include <sys/wait.h>
+
+#if defined(CARROM_LOAD_PATH) && defined(CARROM_SERVER_PATH)
+
+namespace carrom::integration {
+namespace {
+
+struct Ran {
+    int exit = -1;
+    std::string out;
+};
+
+Ran run(const std::string& command) {
+    Ran ran;
+    FILE* pipe = popen(command.c_str(), "r");
+    if (!pipe) {
+        return ran;
+    }
+    char buffer[4096];
+    std::size_t n = 0;
+    while ((n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0) {
+        ran.out.append(buffer, n);
+    }
+    const int status = pclose(pipe);
+    ran.exit = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return ran;
+}
+
+std::string load_command(const std::string& args) {
+    return std::string(CARROM_LOAD_PATH) + " --server-bin " + CARROM_SERVER_PATH + " " + args +
+           " 2>/dev/null";
+}
+
+TEST(LoadCli, DrivesMatchesAndReportsTheirFigures) {
+    const Ran ran = run(load_command("--matches 4 --ramp 0 --warmup 1 --duration 3 "
+                                     "--think-ms 300 --think-spread-ms 200 --seed 7 "
+                                     "--server-arg=--time-scale=4"));
+    ASSERT_EQ(ran.exit, 0) << ran.out;
+    const auto out = nlohmann::json::parse(ran.out);
+    EXPECT_EQ(out["matches"], 4);
+    EXPECT_EQ(out["think_ms"], 300);
+    EXPECT_EQ(out["think_spread_ms"], 200);
+    EXPECT_EQ(out["held_at_start"], 4);
+    EXPECT_EQ(out["held_at_end"], 4);
+    EXPECT_EQ(out["client_failures"], 0);
+    EXPECT_EQ(out["errors_received"], 0);
+    EXPECT_EQ(out["server_exit"], 0); // stopped by SIGTERM, exits cleanly
+    EXPECT_GT(out["lag_samples"].get<long>(), 0);
+    EXPECT_GT(out["bytes_per_client_per_s_moving"].get<double>(), 0.0);
+    EXPECT_GT(out["server_kib_per_match"].get<double>(), 0.0);
+    const double p50 = out["snapshot_lag_ms_p50"];
+    const double p99 = out["snapshot_lag_ms_p99"];
+    const double max = out["snapshot_lag_ms_max"];
+    EXPECT_LE(p50, p99);
+    EXPECT_LE(p99, max);
+    // The timeline: one row per second of the window, [second, samples, p99, max], whose samples
+    // are at most all samples of the window.
+    const auto& timeline = out["lag_by_second"];
+    ASSERT_TRUE(timeline.is_array());
+    ASSERT_GE(timeline.size(), 3u);
+    long in_timeline = 0;
+    for (std::size_t s = 0; s < timeline.size(); ++s) {
+        ASSERT_EQ(timeline[s].size(), 4u);
+        EXPECT_EQ(timeline[s][0], s);
+        in_timeline += timeline[s][1].get<long>();
+        EXPECT_LE(timeline[s][2].get<double>(), timeline[s][3].get<double>());
+        EXPECT_LE(timeline[s][3].get<double>(), max);
+    }
+    EXPECT_GT(in_timeline, 0);
+    EXPECT_LE(in_timeline, out["lag_samples"].get<long>());
+}
+
+TEST(LoadCli, RejectsASpreadLargerThanThePause) {
+    const Ran ran = run(load_command("--matches 1 --think-ms 100 --think-spread-ms 200"));
+    EXPECT_EQ(ran.exit, 2);
+}
+
+} // namespace
+} // namespace carrom::integration
+
+#endif
