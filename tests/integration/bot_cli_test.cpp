@@ -7,7 +7,6 @@
 
 #include <cstdio>
 #include <fstream>
-#include <sys/wait.h>
 #include <thread>
 
 #ifdef CARROM_BOT_PATH
@@ -16,28 +15,6 @@ namespace carrom::integration {
 namespace {
 
 using namespace std::chrono_literals;
-
-struct Ran {
-    int exit = -1;
-    std::string out;
-};
-
-// Runs a shell command line; collects stdout and the exit status.
-Ran run(const std::string& command) {
-    Ran ran;
-    FILE* pipe = popen(command.c_str(), "r");
-    if (!pipe) {
-        return ran;
-    }
-    char buffer[4096];
-    std::size_t n = 0;
-    while ((n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0) {
-        ran.out.append(buffer, n);
-    }
-    const int status = pclose(pipe);
-    ran.exit = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return ran;
-}
 
 std::string temp_path(const std::string& name) {
     return ::testing::TempDir() + "carrom_bot_cli_" + std::to_string(getpid()) + "_" + name;
@@ -48,11 +25,11 @@ TEST(BotCli, TwoBotProcessesPlayAMatch) {
     const std::string bot = CARROM_BOT_PATH;
     const std::string creator_err = temp_path("creator.err");
     const std::string timeout = server_has_time_scale() ? "60" : "300";
-    Ran creator;
+    CommandRun creator;
     std::thread creator_thread([&] {
-        creator = run(bot + " --url " + server.url() + " --create --rule-set freestyle" +
-                      " --target-points 30 --shot-clock 0 --strategy sampling --seed 3" +
-                      " --timeout " + timeout + " 2> " + creator_err);
+        creator = run_command(bot + " --url " + server.url() + " --create --rule-set freestyle" +
+                              " --target-points 30 --shot-clock 0 --strategy sampling --seed 3" +
+                              " --timeout " + timeout + " 2> " + creator_err);
     });
     std::string code;
     for (int i = 0; i < 200 && code.empty(); ++i) {
@@ -66,8 +43,8 @@ TEST(BotCli, TwoBotProcessesPlayAMatch) {
         }
     }
     ASSERT_EQ(code.size(), 6u);
-    const Ran joiner = run(bot + " --url " + server.url() + " --join " + code +
-                           " --strategy random --seed 4 --timeout " + timeout);
+    const CommandRun joiner = run_command(bot + " --url " + server.url() + " --join " + code +
+                                          " --strategy random --seed 4 --timeout " + timeout);
     creator_thread.join();
     std::remove(creator_err.c_str());
     ASSERT_EQ(creator.exit, 0) << creator.out;
@@ -93,7 +70,8 @@ TEST(BotCli, UnreachableServerSaysSoAndExitsWithOne) {
         TestServer server;
         url = server.url();
     } // stopped: nothing listens on its port any more
-    const Ran ran = run(std::string(CARROM_BOT_PATH) + " --url " + url + " --quick --timeout 10");
+    const CommandRun ran =
+        run_command(std::string(CARROM_BOT_PATH) + " --url " + url + " --quick --timeout 10");
     EXPECT_EQ(ran.exit, 1);
     const auto summary = nlohmann::json::parse(ran.out);
     EXPECT_EQ(summary["ok"], false);
@@ -103,8 +81,8 @@ TEST(BotCli, UnreachableServerSaysSoAndExitsWithOne) {
 TEST(BotCli, BadScriptIsRefusedWithTheLine) {
     const std::string script = temp_path("bad.jsonl");
     std::ofstream(script) << "{\"x\": 300, \"angle\": -1.5, \"power\": 20}\n{\"x\": 300}\n";
-    const Ran ran =
-        run(std::string(CARROM_BOT_PATH) + " --strategy scripted --script " + script + " 2>&1");
+    const CommandRun ran = run_command(std::string(CARROM_BOT_PATH) +
+                                       " --strategy scripted --script " + script + " 2>&1");
     std::remove(script.c_str());
     EXPECT_EQ(ran.exit, 2);
     EXPECT_NE(ran.out.find("line 2: missing field 'angle'."), std::string::npos) << ran.out;

@@ -26,6 +26,14 @@ server::ServerSettings test_settings();
 // Whether this server build can play shots faster than real time.
 bool server_has_time_scale();
 
+// A command line run through the shell: its standard output and exit status (-1 when it did not
+// exit normally or could not be started).
+struct CommandRun {
+    int exit = -1;
+    std::string out;
+};
+CommandRun run_command(const std::string& command);
+
 class TestServer {
 public:
     explicit TestServer(server::ServerSettings settings = test_settings());

@@ -2,38 +2,17 @@
 // few bot matches for a short window and prints the figures of docs/server-load.md as JSON.
 // Bounded: 4 matches, a 3 s window, the server at 4x speed so that shots end inside it; the run
 // ends by itself in about 6 s.
+#include "harness.hpp"
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include <cstdio>
 #include <string>
-#include <sys/wait.h>
 
 #if defined(CARROM_LOAD_PATH) && defined(CARROM_SERVER_PATH)
 
 namespace carrom::integration {
 namespace {
-
-struct Ran {
-    int exit = -1;
-    std::string out;
-};
-
-Ran run(const std::string& command) {
-    Ran ran;
-    FILE* pipe = popen(command.c_str(), "r");
-    if (!pipe) {
-        return ran;
-    }
-    char buffer[4096];
-    std::size_t n = 0;
-    while ((n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0) {
-        ran.out.append(buffer, n);
-    }
-    const int status = pclose(pipe);
-    ran.exit = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return ran;
-}
 
 std::string load_command(const std::string& args) {
     return std::string(CARROM_LOAD_PATH) + " --server-bin " + CARROM_SERVER_PATH + " " + args +
@@ -41,9 +20,9 @@ std::string load_command(const std::string& args) {
 }
 
 TEST(LoadCli, DrivesMatchesAndReportsTheirFigures) {
-    const Ran ran = run(load_command("--matches 4 --ramp 0 --warmup 1 --duration 3 "
-                                     "--think-ms 300 --think-spread-ms 200 --seed 7 "
-                                     "--server-arg=--time-scale=4"));
+    const CommandRun ran = run_command(load_command("--matches 4 --ramp 0 --warmup 1 --duration 3 "
+                                                    "--think-ms 300 --think-spread-ms 200 --seed 7 "
+                                                    "--server-arg=--time-scale=4"));
     ASSERT_EQ(ran.exit, 0) << ran.out;
     const auto out = nlohmann::json::parse(ran.out);
     EXPECT_EQ(out["matches"], 4);
@@ -80,7 +59,8 @@ TEST(LoadCli, DrivesMatchesAndReportsTheirFigures) {
 }
 
 TEST(LoadCli, RejectsASpreadLargerThanThePause) {
-    const Ran ran = run(load_command("--matches 1 --think-ms 100 --think-spread-ms 200"));
+    const CommandRun ran =
+        run_command(load_command("--matches 1 --think-ms 100 --think-spread-ms 200"));
     EXPECT_EQ(ran.exit, 2);
 }
 
