@@ -5,15 +5,16 @@ namespace carrom::server {
 WriteQueue::WriteQueue(std::size_t max_bytes, std::size_t snapshot_backlog, std::size_t cue_backlog)
     : max_bytes_(max_bytes), snapshot_backlog_(snapshot_backlog), cue_backlog_(cue_backlog) {}
 
-// 1 when the message in flight is of this kind.
 std::size_t WriteQueue::in_flight(MessageKind kind) const {
     return writing_ && !queue_.empty() && queue_.front().kind == kind ? 1U : 0U;
 }
 
-void WriteQueue::count(MessageKind kind, int sign) {
-    const auto step = static_cast<std::size_t>(sign); // +1 or, wrapping, -1
-    snapshots_ += kind == MessageKind::Snapshot ? step : 0U;
-    cues_ += kind == MessageKind::Cue ? step : 0U;
+void WriteQueue::count(MessageKind kind, bool added) {
+    if (kind == MessageKind::Normal) {
+        return;
+    }
+    std::size_t& counter = kind == MessageKind::Snapshot ? snapshots_ : cues_;
+    counter = added ? counter + 1 : counter - 1;
 }
 
 std::size_t WriteQueue::waiting_snapshots() const {
@@ -37,7 +38,7 @@ WriteQueue::Push WriteQueue::push(Outgoing message) {
         return Push::Overflow;
     }
     bytes_ += size;
-    count(message.kind, 1);
+    count(message.kind, true);
     queue_.push_back(std::move(message));
     return Push::Queued;
 }
@@ -56,7 +57,7 @@ void WriteQueue::finish_write() {
     }
     const std::size_t size = queue_.front().text ? queue_.front().text->size() : 0;
     bytes_ -= size;
-    count(queue_.front().kind, -1);
+    count(queue_.front().kind, false);
     queue_.pop_front();
     writing_ = false;
 }

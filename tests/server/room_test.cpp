@@ -149,6 +149,31 @@ TEST_F(RoomTest, ShotStreamsSnapshotsThenTheResult) {
     EXPECT_EQ(metrics_.shots_total.load(), 1);
 }
 
+// What the write queue may drop under back-pressure: deltas (a keyframe repairs them) and the
+// collision and cushion cues (sound only); never a pocket, the result or anything else.
+TEST_F(RoomTest, ShotMessagesCarryTheirDeliveryKinds) {
+    seat_both();
+    a_->clear();
+    room_.shoot(*a_, break_shot(0));
+    play_out();
+    ASSERT_EQ(a_->received.size(), a_->kinds.size());
+    int cues = 0;
+    for (std::size_t i = 0; i < a_->received.size(); ++i) {
+        const auto& message = a_->received[i];
+        MessageKind expected = MessageKind::Normal;
+        if (const auto* snapshot = std::get_if<proto::Snapshot>(&message)) {
+            expected = snapshot->keyframe ? MessageKind::Normal : MessageKind::Snapshot;
+        } else if (const auto* event = std::get_if<proto::Event>(&message)) {
+            const bool cue = std::holds_alternative<proto::CollisionEvent>(*event) ||
+                             std::holds_alternative<proto::CushionEvent>(*event);
+            expected = cue ? MessageKind::Cue : MessageKind::Normal;
+            cues += cue ? 1 : 0;
+        }
+        EXPECT_EQ(a_->kinds[i], expected) << "message " << i;
+    }
+    EXPECT_GT(cues, 10); // a break's collisions
+}
+
 TEST_F(RoomTest, DeltasReconstructTheFinalKeyframeBeforeTheRulesAct) {
     seat_both();
     a_->clear();

@@ -38,6 +38,11 @@ public:
     std::size_t waiting_cues() const;
 
 private:
+    // 1 when the message in flight is of this kind, else 0.
+    std::size_t in_flight(MessageKind kind) const;
+    // Counts a queued (added) or finished (removed) message in snapshots_ or cues_.
+    void count(MessageKind kind, bool added);
+
     std::size_t max_bytes_;
     std::size_t snapshot_backlog_;
     std::size_t cue_backlog_;
@@ -45,8 +50,6 @@ private:
     std::size_t bytes_ = 0;
     std::size_t snapshots_ = 0; // snapshots in queue_, the one in flight included
     std::size_t cues_ = 0;      // cues in queue_, the one in flight included
-    std::size_t in_flight(MessageKind kind) const;
-    void count(MessageKind kind, int sign);
     bool writing_ = false;
 };
 
