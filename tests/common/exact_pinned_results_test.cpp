@@ -1,7 +1,8 @@
 // The engine's results, pinned: a hash of every event and final state of the break and of 512
 // random shots on the standard layout. Speed work on the engine must keep results bit for bit
 // (docs/physics.md, "Speed"), because the bot measurements of docs/bots.md were taken with them.
-// If a change alters results on purpose, update the constants below and re-run the bots report
+// If a change alters results on purpose, update the constants below (and the break's hash in
+// bench/engine_runs/CMakeLists.txt) and re-run the bots report
 // (the command is in docs/bots.md).
 
 #include "carrom/exact_engine.hpp"
