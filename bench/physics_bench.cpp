@@ -3,6 +3,7 @@
 // integrator on the break for scale. Every benchmark also reports "min" over repetitions:
 //   carrom_bench --benchmark_filter=Physics --benchmark_repetitions=10
 
+#include "benchmark_shots.hpp"
 #include "carrom/exact_engine.hpp"
 #include "carrom/fixed_step.hpp"
 #include "carrom/scene.hpp"
@@ -10,42 +11,13 @@
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
-#include <numbers>
-#include <random>
 #include <vector>
 
 namespace {
 
 using namespace carrom;
-
-// The standard layout plus the striker: centred, straight up, full power, bottom baseline.
-std::vector<Body> break_scene(const PhysicsConfig& config) {
-    std::vector<Body> bodies = standard_layout(config);
-    bodies.push_back(
-        make_striker(config, Baseline::Bottom, Shot{300.0, -std::numbers::pi / 2.0, 25.0}));
-    return bodies;
-}
-
-// A fixed list of random full shots from the bottom baseline: x over the baseline range, angle
-// within 60 degrees of straight up, power in [5, 25].
-std::vector<std::vector<Body>> random_shots(const PhysicsConfig& config, int count) {
-    std::mt19937_64 rng(20240601);
-    std::uniform_real_distribution<double> x(baseline_x_min(config), baseline_x_max(config));
-    std::uniform_real_distribution<double> angle(-std::numbers::pi / 2.0 - std::numbers::pi / 3.0,
-                                                 -std::numbers::pi / 2.0 + std::numbers::pi / 3.0);
-    std::uniform_real_distribution<double> power(5.0, 25.0);
-    std::vector<std::vector<Body>> shots;
-    const std::vector<Body> layout = standard_layout(config);
-    for (int i = 0; i < count; ++i) {
-        std::vector<Body> bodies = layout;
-        const double sx = x(rng);
-        const double sa = angle(rng);
-        const double sp = power(rng);
-        bodies.push_back(make_striker(config, Baseline::Bottom, Shot{sx, sa, sp}));
-        shots.push_back(std::move(bodies));
-    }
-    return shots;
-}
+using carrom::bench::break_scene;
+using carrom::bench::random_shots;
 
 void add_min_statistic(benchmark::internal::Benchmark* b) {
     b->ComputeStatistics(

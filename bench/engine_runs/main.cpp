@@ -8,90 +8,20 @@
 //   - bit-identity of an engine change: the same hash before and after.
 // See docs/physics.md, "Speed".
 
+#include "benchmark_shots.hpp"
 #include "carrom/exact_engine.hpp"
-#include "carrom/scene.hpp"
+#include "carrom/result_hash.hpp"
 
 #include <CLI/CLI.hpp>
 
-#include <bit>
 #include <chrono>
-#include <cstdint>
 #include <cstdio>
 #include <map>
-#include <numbers>
-#include <random>
 #include <string>
 #include <vector>
 
-namespace {
-
-using namespace carrom;
-
-// The shots of bench/physics_bench.cpp, drawn the same way.
-std::vector<std::vector<Body>> random_shots(const PhysicsConfig& config, int count) {
-    std::mt19937_64 rng(20240601);
-    std::uniform_real_distribution<double> x(baseline_x_min(config), baseline_x_max(config));
-    std::uniform_real_distribution<double> angle(-std::numbers::pi / 2.0 - std::numbers::pi / 3.0,
-                                                 -std::numbers::pi / 2.0 + std::numbers::pi / 3.0);
-    std::uniform_real_distribution<double> power(5.0, 25.0);
-    std::vector<std::vector<Body>> shots;
-    const std::vector<Body> layout = standard_layout(config);
-    for (int i = 0; i < count; ++i) {
-        std::vector<Body> bodies = layout;
-        const double sx = x(rng);
-        const double sa = angle(rng);
-        const double sp = power(rng);
-        bodies.push_back(make_striker(config, Baseline::Bottom, Shot{sx, sa, sp}));
-        shots.push_back(std::move(bodies));
-    }
-    return shots;
-}
-
-std::vector<std::vector<Body>> break_shot(const PhysicsConfig& config) {
-    std::vector<Body> bodies = standard_layout(config);
-    bodies.push_back(
-        make_striker(config, Baseline::Bottom, Shot{300.0, -std::numbers::pi / 2.0, 25.0}));
-    return {bodies};
-}
-
-// FNV-1a over the bits of everything a run reports.
-struct ResultHash {
-    std::uint64_t value = 1469598103934665603ULL;
-    void add(std::uint64_t word) {
-        for (int byte = 0; byte < 8; ++byte) {
-            value ^= (word >> (8 * byte)) & 0xFFU;
-            value *= 1099511628211ULL;
-        }
-    }
-    void add(double x) { add(std::bit_cast<std::uint64_t>(x)); }
-    void add(int x) { add(static_cast<std::uint64_t>(static_cast<std::uint32_t>(x))); }
-    void add(const SimResult& r) {
-        for (const Event& e : r.events) {
-            add(e.t_s);
-            add(static_cast<int>(e.kind));
-            add(e.a);
-            add(e.b);
-            add(e.impulse);
-            add(e.pos_px.x);
-            add(e.pos_px.y);
-        }
-        for (const Body& b : r.bodies) {
-            add(b.pos_px.x);
-            add(b.pos_px.y);
-            add(b.vel_px_s.x);
-            add(b.vel_px_s.y);
-            add(b.pocketed ? 1 : 0);
-        }
-        add(r.end_time_s);
-        for (int id : r.pocket_order) {
-            add(id);
-        }
-    }
-};
-
-} // namespace
-
 int main(int argc, char** argv) {
+    using namespace carrom;
     CLI::App app{"carrom-engine-runs: the physics benchmarks' shots, for instruction counts and "
                  "result hashes (docs/physics.md)"};
     enum class Scene { Break, Random };
@@ -106,7 +36,8 @@ int main(int argc, char** argv) {
 
     const PhysicsConfig config;
     const bool is_break = scene == Scene::Break;
-    const auto shots = is_break ? break_shot(config) : random_shots(config, 1024);
+    const auto shots = is_break ? std::vector<std::vector<Body>>{bench::break_scene(config)}
+                                : bench::random_shots(config, 1024);
     ExactEngine engine(config);
     SimOptions options;
     options.record_events = true;
@@ -132,6 +63,6 @@ int main(int argc, char** argv) {
         std::chrono::steady_clock::now() - start;
     std::printf("scene %s runs %d events %ld hash %016llx us_per_shot %.3f\n",
                 is_break ? "break" : "random", runs, events,
-                static_cast<unsigned long long>(hash.value), elapsed.count() / runs);
+                static_cast<unsigned long long>(hash.value()), elapsed.count() / runs);
     return 0;
 }

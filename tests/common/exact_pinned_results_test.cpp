@@ -6,11 +6,11 @@
 // (the command is in docs/bots.md).
 
 #include "carrom/exact_engine.hpp"
+#include "carrom/result_hash.hpp"
 #include "carrom/scene.hpp"
 
 #include <gtest/gtest.h>
 
-#include <bit>
 #include <cstdint>
 #include <numbers>
 #include <random>
@@ -18,45 +18,6 @@
 
 namespace carrom {
 namespace {
-
-// FNV-1a over the bits of everything a run reports.
-class ResultHash {
-public:
-    void add(std::uint64_t word) {
-        for (int byte = 0; byte < 8; ++byte) {
-            value_ ^= (word >> (8 * byte)) & 0xFFU;
-            value_ *= 1099511628211ULL;
-        }
-    }
-    void add(double x) { add(std::bit_cast<std::uint64_t>(x)); }
-    void add(int x) { add(static_cast<std::uint64_t>(static_cast<std::uint32_t>(x))); }
-    void add(const SimResult& r) {
-        for (const Event& e : r.events) {
-            add(e.t_s);
-            add(static_cast<int>(e.kind));
-            add(e.a);
-            add(e.b);
-            add(e.impulse);
-            add(e.pos_px.x);
-            add(e.pos_px.y);
-        }
-        for (const Body& b : r.bodies) {
-            add(b.pos_px.x);
-            add(b.pos_px.y);
-            add(b.vel_px_s.x);
-            add(b.vel_px_s.y);
-            add(b.pocketed ? 1 : 0);
-        }
-        add(r.end_time_s);
-        for (int id : r.pocket_order) {
-            add(id);
-        }
-    }
-    std::uint64_t value() const { return value_; }
-
-private:
-    std::uint64_t value_ = 1469598103934665603ULL;
-};
 
 // A double in [lo, hi) from the generator's raw output (whose sequence the standard fixes).
 double draw(std::mt19937_64& rng, double lo, double hi) {
