@@ -1,16 +1,23 @@
-// carrom-engine-runs: runs the exact engine on the shots of the physics benchmarks (the standard
-// break, or the benchmark's 1,024 random full shots in turn) a given number of times, then
-// prints one line: the scene, the runs, the events of the timed runs, an FNV-1a hash of every
-// event and final state of a first, untimed pass, and the wall time per timed run, us. For
-// measurements that the shared machine's drifting speed does not blur:
-//   - instructions per shot: the difference of two runs under valgrind
+// carrom-engine-runs: runs the exact engine on the shots of the benchmarks a given number of
+// times and prints one line, for measurements that the shared machine's drifting speed does not
+// blur (docs/physics.md, "Speed"):
+//   - instructions per shot or per bot candidate: the difference of two runs under valgrind
 //     (scripts/engine_instructions.sh);
-//   - bit-identity of an engine change: the same hash before and after.
-// See docs/physics.md, "Speed".
+//   - bit-identity of an engine change: the same result hash before and after.
+// Scenes: `break` (the standard break), `random` (the physics benchmark's 1,024 random full
+// shots in turn): the line gives the runs, the events of the timed runs, a ResultHash of every
+// event and final state of a first, untimed pass, and the wall time per run, us. `greedy` (built
+// with the bots library): runs are decisions of the hard greedy bot on the standard layout, as
+// in BotsGreedyStandardLayout; the line gives the candidates and the wall time per candidate.
 
 #include "benchmark_shots.hpp"
 #include "carrom/exact_engine.hpp"
 #include "carrom/result_hash.hpp"
+
+#if defined(CARROM_ENGINE_RUNS_GREEDY)
+#include "carrom/bots/greedy_strategy.hpp"
+#include "carrom/rules/match.hpp"
+#endif
 
 #include <CLI/CLI.hpp>
 
@@ -20,25 +27,17 @@
 #include <string>
 #include <vector>
 
-int main(int argc, char** argv) {
-    using namespace carrom;
-    CLI::App app{"carrom-engine-runs: the physics benchmarks' shots, for instruction counts and "
-                 "result hashes (docs/physics.md)"};
-    enum class Scene { Break, Random };
-    const std::map<std::string, Scene> scenes{{"break", Scene::Break}, {"random", Scene::Random}};
-    Scene scene = Scene::Break;
-    int runs = 1;
-    app.add_option("--scene", scene, "break (the standard break) or random (1,024 random shots)")
-        ->transform(CLI::CheckedTransformer(scenes, CLI::ignore_case));
-    app.add_option("--runs", runs, "shots to simulate (the random list is cycled)")
-        ->check(CLI::Range(1, 100000000));
-    CLI11_PARSE(app, argc, argv);
+namespace {
 
-    const PhysicsConfig config;
-    const bool is_break = scene == Scene::Break;
-    const auto shots = is_break ? std::vector<std::vector<Body>>{bench::break_scene(config)}
-                                : bench::random_shots(config, 1024);
-    ExactEngine engine(config);
+using namespace carrom;
+using Clock = std::chrono::steady_clock;
+
+double elapsed_us(Clock::time_point start) {
+    return std::chrono::duration<double, std::micro>(Clock::now() - start).count();
+}
+
+int run_shots(const char* name, const std::vector<std::vector<Body>>& shots, int runs) {
+    ExactEngine engine(PhysicsConfig{});
     SimOptions options;
     options.record_events = true;
     ResultHash hash;
@@ -53,16 +52,75 @@ int main(int argc, char** argv) {
     // The timed runs record no events, as in the benchmarks.
     options.record_events = false;
     long events = 0;
-    const auto start = std::chrono::steady_clock::now();
+    const Clock::time_point start = Clock::now();
     for (int run = 0; run < runs; ++run) {
         const auto& shot = shots[static_cast<std::size_t>(run) % shots.size()];
         const SimResult* result = engine.run(shot, options).result;
         events += result != nullptr ? result->stats.events : 0;
     }
-    const std::chrono::duration<double, std::micro> elapsed =
-        std::chrono::steady_clock::now() - start;
-    std::printf("scene %s runs %d events %ld hash %016llx us_per_shot %.3f\n",
-                is_break ? "break" : "random", runs, events,
-                static_cast<unsigned long long>(hash.value()), elapsed.count() / runs);
+    const double us = elapsed_us(start);
+    std::printf("scene %s runs %d events %ld hash %016llx us_per_shot %.3f\n", name, runs, events,
+                static_cast<unsigned long long>(hash.value()), us / runs);
     return 0;
+}
+
+#if defined(CARROM_ENGINE_RUNS_GREEDY)
+// As bench/bots_bench.cpp: the hard greedy bot, at most 2,000 candidates, no time limit.
+int run_greedy(int decisions) {
+    rules::RulesConfig config;
+    config.shot_clock_s = 0.0;
+    const rules::MatchState state = rules::new_match(rules::RuleSet::Icf, config, PhysicsConfig{});
+    bots::GreedyOptions options;
+    options.level = bots::SkillLevel::Hard;
+    bots::GreedyStrategy greedy(options);
+    bots::DecisionBudget budget;
+    budget.time = std::chrono::seconds(60);
+    budget.max_candidates = 2000;
+    long candidates = 0;
+    const Clock::time_point start = Clock::now();
+    for (int decision = 0; decision < decisions; ++decision) {
+        greedy.choose_shot(state, 0, budget);
+        candidates += greedy.last_decision().candidates;
+    }
+    const double us = elapsed_us(start);
+    std::printf("scene greedy runs %d candidates %ld us_per_candidate %.3f\n", decisions,
+                candidates, candidates > 0 ? us / static_cast<double>(candidates) : 0.0);
+    return 0;
+}
+#endif
+
+} // namespace
+
+int main(int argc, char** argv) {
+    CLI::App app{"carrom-engine-runs: the benchmarks' shots, for instruction counts and result "
+                 "hashes (docs/physics.md)"};
+    enum class Scene { Break, Random, Greedy };
+    std::map<std::string, Scene> scenes{{"break", Scene::Break}, {"random", Scene::Random}};
+#if defined(CARROM_ENGINE_RUNS_GREEDY)
+    scenes.emplace("greedy", Scene::Greedy);
+#endif
+    Scene scene = Scene::Break;
+    int runs = 1;
+    app.add_option("--scene", scene,
+                   "break (the standard break), random (1,024 random shots) or greedy (bot "
+                   "decisions)")
+        ->transform(CLI::CheckedTransformer(scenes, CLI::ignore_case));
+    app.add_option("--runs", runs, "shots to simulate (the random list is cycled), or decisions")
+        ->check(CLI::Range(1, 100000000));
+    CLI11_PARSE(app, argc, argv);
+
+    const PhysicsConfig config;
+    switch (scene) {
+    case Scene::Break:
+        return run_shots("break", {bench::break_scene(config)}, runs);
+    case Scene::Random:
+        return run_shots("random", bench::random_shots(config, 1024), runs);
+    case Scene::Greedy:
+#if defined(CARROM_ENGINE_RUNS_GREEDY)
+        return run_greedy(runs);
+#else
+        break;
+#endif
+    }
+    return 2;
 }
