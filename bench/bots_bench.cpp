@@ -4,20 +4,14 @@
 // standard layout. items_per_second is candidates per second:
 //   carrom_bench --benchmark_filter=Greedy --benchmark_repetitions=5
 
-#include "carrom/bots/greedy_strategy.hpp"
-#include "carrom/rules/match.hpp"
+#include "benchmark_bots.hpp"
 
 #include <benchmark/benchmark.h>
 
 namespace {
 
 using namespace carrom;
-
-rules::MatchState standard_match() {
-    rules::RulesConfig config;
-    config.shot_clock_s = 0.0;
-    return rules::new_match(rules::RuleSet::Icf, config, PhysicsConfig{});
-}
+using carrom::bench::standard_match;
 
 // The standard layout with every other piece off the board (9 left, the queen among them).
 rules::MatchState sparse_match() {
@@ -33,12 +27,8 @@ rules::MatchState sparse_match() {
 }
 
 void run_greedy(benchmark::State& bench, const rules::MatchState& state) {
-    bots::GreedyOptions options;
-    options.level = bots::SkillLevel::Hard;
-    bots::GreedyStrategy greedy(options);
-    bots::DecisionBudget budget;
-    budget.time = std::chrono::seconds(60);
-    budget.max_candidates = 2000;
+    bots::GreedyStrategy greedy(bench::greedy_options());
+    const bots::DecisionBudget budget = bench::decision_budget();
     std::int64_t candidates = 0;
     for (auto _ : bench) {
         const Shot shot = greedy.choose_shot(state, 0, budget);

@@ -15,8 +15,7 @@
 #include "carrom/result_hash.hpp"
 
 #if defined(CARROM_ENGINE_RUNS_GREEDY)
-#include "carrom/bots/greedy_strategy.hpp"
-#include "carrom/rules/match.hpp"
+#include "benchmark_bots.hpp"
 #endif
 
 #include <CLI/CLI.hpp>
@@ -65,17 +64,11 @@ int run_shots(const char* name, const std::vector<std::vector<Body>>& shots, int
 }
 
 #if defined(CARROM_ENGINE_RUNS_GREEDY)
-// As bench/bots_bench.cpp: the hard greedy bot, at most 2,000 candidates, no time limit.
+// The decisions of bench/bots_bench.cpp's BotsGreedyStandardLayout.
 int run_greedy(int decisions) {
-    rules::RulesConfig config;
-    config.shot_clock_s = 0.0;
-    const rules::MatchState state = rules::new_match(rules::RuleSet::Icf, config, PhysicsConfig{});
-    bots::GreedyOptions options;
-    options.level = bots::SkillLevel::Hard;
-    bots::GreedyStrategy greedy(options);
-    bots::DecisionBudget budget;
-    budget.time = std::chrono::seconds(60);
-    budget.max_candidates = 2000;
+    const rules::MatchState state = bench::standard_match();
+    bots::GreedyStrategy greedy(bench::greedy_options());
+    const bots::DecisionBudget budget = bench::decision_budget();
     long candidates = 0;
     const Clock::time_point start = Clock::now();
     for (int decision = 0; decision < decisions; ++decision) {
