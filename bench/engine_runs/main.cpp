@@ -5,10 +5,11 @@
 //     (scripts/engine_instructions.sh);
 //   - bit-identity of an engine change: the same result hash before and after.
 // Scenes: `break` (the standard break), `random` (the physics benchmark's 1,024 random full
-// shots in turn): the line gives the runs, the events of the timed runs, a ResultHash of every
-// event and final state of a first, untimed pass, and the wall time per run, us. `greedy` (built
-// with the bots library): runs are decisions of the hard greedy bot on the standard layout, as
-// in BotsGreedyStandardLayout; the line gives the candidates and the wall time per candidate.
+// shots in turn, or with --shot K only shot K): the line gives the runs, the events of the timed
+// runs, a ResultHash of every event and final state of a first, untimed pass, and the wall time per
+// run, us. `greedy` (built with the bots library): runs are decisions of the hard greedy bot on the
+// standard layout, as in BotsGreedyStandardLayout; the line gives the candidates and the wall time
+// per candidate.
 
 #include "benchmark_shots.hpp"
 #include "carrom/exact_engine.hpp"
@@ -100,14 +101,22 @@ int main(int argc, char** argv) {
         ->transform(CLI::CheckedTransformer(scenes, CLI::ignore_case));
     app.add_option("--runs", runs, "shots to simulate (the random list is cycled), or decisions")
         ->check(CLI::Range(1, 100000000));
+    int only = -1;
+    app.add_option("--shot", only, "random: repeat only this shot of the list (0 to 1023)")
+        ->check(CLI::Range(0, 1023));
     CLI11_PARSE(app, argc, argv);
 
     const PhysicsConfig config;
     switch (scene) {
     case Scene::Break:
         return run_shots("break", {bench::break_scene(config)}, runs);
-    case Scene::Random:
-        return run_shots("random", bench::random_shots(config, 1024), runs);
+    case Scene::Random: {
+        std::vector<std::vector<Body>> shots = bench::random_shots(config, 1024);
+        if (only >= 0) {
+            shots = {shots[static_cast<std::size_t>(only)]};
+        }
+        return run_shots("random", shots, runs);
+    }
     case Scene::Greedy:
 #if defined(CARROM_ENGINE_RUNS_GREEDY)
         return run_greedy(runs);
