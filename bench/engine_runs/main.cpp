@@ -36,8 +36,9 @@ double elapsed_us(Clock::time_point start) {
     return std::chrono::duration<double, std::micro>(Clock::now() - start).count();
 }
 
-int run_shots(const char* name, const std::vector<std::vector<Body>>& shots, int runs) {
-    ExactEngine engine(PhysicsConfig{});
+int run_shots(const PhysicsConfig& config, const char* name,
+              const std::vector<std::vector<Body>>& shots, int runs) {
+    ExactEngine engine(config);
     SimOptions options;
     options.record_events = true;
     ResultHash hash;
@@ -109,13 +110,13 @@ int main(int argc, char** argv) {
     const PhysicsConfig config;
     switch (scene) {
     case Scene::Break:
-        return run_shots("break", {bench::break_scene(config)}, runs);
+        return run_shots(config, "break", {bench::break_scene(config)}, runs);
     case Scene::Random: {
         std::vector<std::vector<Body>> shots = bench::random_shots(config, 1024);
         if (only >= 0) {
             shots = {shots[static_cast<std::size_t>(only)]};
         }
-        return run_shots("random", shots, runs);
+        return run_shots(config, "random", shots, runs);
     }
     case Scene::Greedy:
 #if defined(CARROM_ENGINE_RUNS_GREEDY)
