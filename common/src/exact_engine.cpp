@@ -6,6 +6,11 @@
 //     the global next event is the earliest over next[], i.e. the largest key in keys[] (see
 //     docs/physics.md, "Event queue").
 //   - bodies at rest have no events of their own; a pair with both bodies at rest is never solved.
+//     A body that has been at rest since the start has no prediction at all (next[i] is None):
+//     the prediction of every moving body covers its pairs with such bodies, which never change.
+//     A body that comes to rest later keeps one, which covers its pairs with the moving bodies
+//     whose predictions took it as moving (tests/common/exact_stiff_test.cpp,
+//     ACoinThatStopsInAMoversPathIsStillHit).
 //   - with at most 64 bodies: near[] is symmetric and current for every body whose box_dirty is
 //     0; every dirty row is recomputed before a prediction reads near[]; watchers[o] holds
 //     exactly the bodies whose next[] is a Pair naming o.
@@ -1156,8 +1161,12 @@ void ExactEngine::Impl::settle_initial_state(std::uint64_t unchanged) {
         }
     }
     remember_resting_layout();
+    // Bodies at rest get no prediction: every pair they could take part in has a moving body,
+    // whose prediction covers it.
     for (std::size_t i = 0; i < pos.size(); ++i) {
-        predict(i);
+        if (moving[i]) {
+            predict(i);
+        }
     }
 }
 

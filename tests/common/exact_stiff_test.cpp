@@ -134,5 +134,44 @@ TEST(ExactStiff, RandomShotsKeepEveryInvariant) {
     }
 }
 
+// Coin 1 slides 10 px to the right and stops at t = 1.01 s, in the path of coin 2, which
+// reaches that spot at about t = 1.5 s. When coin 2's first prediction is made, coin 1 is still
+// moving, and their lines meet only after coin 1's stop, so that prediction names its own stop
+// instead. The engine must see the contact once coin 1 is at rest (in this engine through the
+// prediction of the body at rest): one collision of 1 and 2, after coin 1's stop, and no
+// overlap. With 63 more coins at rest along the top cushion the scene has 65 bodies, which
+// takes the engine's general path for scenes of more than 64.
+TEST(ExactStiff, ACoinThatStopsInAMoversPathIsStillHit) {
+    const PhysicsConfig config;
+    const double k = config.damping_per_s;
+    const double slide_px = 10.0;                                     // (v - stop speed) / k
+    const double coin1_speed = config.stop_speed_px_s + k * slide_px; // px/s
+    const double travel = (1.0 - std::exp(-k * 1.5)) / k;             // travel factor at 1.5 s, s
+    const double coin2_speed = (500.0 - 328.0) / travel;              // px/s
+    for (int extra : {0, 63}) {
+        std::vector<Body> scene{coin(1, 300.0, 300.0, coin1_speed, 0.0),
+                                coin(2, 300.0 + slide_px, 500.0, 0.0, -coin2_speed)};
+        for (int e = 0; e < extra; ++e) {
+            scene.push_back(coin(100 + e, 50.0 + 28.0 * (e % 17), 50.0 + 28.0 * (e / 17)));
+        }
+        const SimulateResult sim = simulate_exact(config, scene);
+        ASSERT_FALSE(sim.error.has_value()) << sim.error->message;
+        int collisions = 0;
+        double coin1_stop_s = -1.0;
+        for (const Event& event : sim.result.events) {
+            if (event.kind == EventKind::Stop && event.a == 1 && coin1_stop_s < 0.0) {
+                coin1_stop_s = event.t_s;
+            }
+            if (event.kind == EventKind::Collision) {
+                ++collisions;
+                EXPECT_EQ(event.a + event.b, 3) << "extra " << extra;
+                EXPECT_GT(coin1_stop_s, 0.0) << "extra " << extra;
+            }
+        }
+        EXPECT_EQ(collisions, 1) << "extra " << extra;
+        expect_invariants(run_checked(config, scene), 20);
+    }
+}
+
 } // namespace
 } // namespace carrom
