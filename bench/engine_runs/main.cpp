@@ -106,6 +106,10 @@ int main(int argc, char** argv) {
     app.add_option("--shot", only, "random: repeat only this shot of the list (0 to 1023)")
         ->check(CLI::Range(0, 1023));
     CLI11_PARSE(app, argc, argv);
+    if (only >= 0 && scene != Scene::Random) {
+        std::fprintf(stderr, "carrom-engine-runs: --shot applies only to --scene random\n");
+        return 2;
+    }
 
     const PhysicsConfig config;
     switch (scene) {

@@ -134,7 +134,7 @@ TEST(ExactStiff, RandomShotsKeepEveryInvariant) {
     }
 }
 
-// Coin 1 slides 10 px to the right and stops at t = 1.01 s, in the path of coin 2, which
+// Coin 1 slides 10 px to the right and stops at t = 1.02 s, in the path of coin 2, which
 // reaches that spot at about t = 1.5 s. When coin 2's first prediction is made, coin 1 is still
 // moving, and their lines meet only after coin 1's stop, so that prediction names its own stop
 // instead. The engine must see the contact once coin 1 is at rest (in this engine through the
