@@ -54,9 +54,7 @@ public:
         ioc_.restart();
         ioc_.run_for(timeout);
         if (!result) {
-            beast::get_lowest_layer(ws_).socket().cancel();
-            ioc_.restart();
-            ioc_.run();
+            end_read(result);
             closed_ = true; // a cancelled read leaves the stream unusable
             return std::nullopt;
         }
@@ -132,6 +130,27 @@ public:
     std::vector<proto::ServerMessage> log;
 
 private:
+    // Ends a read that ran past its deadline. One cancel is not enough: when the deadline falls
+    // between two steps of the read (its handler for a keep-alive ping queued, no socket
+    // operation pending), the cancel finds nothing, and the read answers the ping and waits on
+    // the socket again, for a message that may never come. So cancel until the read has ended;
+    // close the socket only if that does not end it, since callers expect the connection to
+    // stay open (the server still counts it).
+    void end_read(const std::optional<beast::error_code>& result) {
+        auto& socket = beast::get_lowest_layer(ws_).socket();
+        for (int attempt = 0; !result && attempt < 500; ++attempt) {
+            socket.cancel();
+            ioc_.restart();
+            ioc_.run_for(std::chrono::milliseconds(10));
+        }
+        if (!result) {
+            beast::error_code ignored;
+            socket.close(ignored);
+            ioc_.restart();
+            ioc_.run();
+        }
+    }
+
     asio::io_context ioc_;
     websocket::stream<beast::tcp_stream> ws_;
     bool closed_ = false;
