@@ -68,15 +68,23 @@ private:
 
 constexpr int kMaxPlayOutTicks = 200000;
 
+// Moves the clock to the room's next wake-up (never back) and ticks; false if none is set.
+bool tick_at_next_wake(server::Room& room, server::ManualClock& clock) {
+    const auto wake = room.next_wake_ms();
+    if (!wake) {
+        return false;
+    }
+    clock.set_ms(std::max(clock.now_ms(), *wake));
+    room.tick();
+    return true;
+}
+
 void play_out(server::Room& room, server::ManualClock& clock) {
     int ticks = 0;
     while (room.phase() == proto::Phase::Moving) {
-        const auto wake = room.next_wake_ms();
-        if (!wake) {
+        if (!tick_at_next_wake(room, clock)) {
             fail("room: the board is moving but next_wake_ms() is empty");
         }
-        clock.set_ms(std::max(clock.now_ms(), *wake));
-        room.tick();
         if (++ticks > kMaxPlayOutTicks) {
             fail("room: a shot is still moving after 200000 ticks");
         }
@@ -161,11 +169,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         case 8:
             fuzz::play_out(room, clock);
             break;
-        default: // the next timed wake-up
-            if (const auto wake = room.next_wake_ms()) {
-                clock.set_ms(std::max(clock.now_ms(), *wake));
-                room.tick();
-            }
+        default: // the next timed wake-up, if any
+            (void)fuzz::tick_at_next_wake(room, clock);
             break;
         }
     }
