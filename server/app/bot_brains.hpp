@@ -4,7 +4,7 @@
 // are the greedy search strategy with that level's execution noise (docs/bots.md), each
 // decision within think_ms of wall time.
 
-#include "carrom/server/bot_seat.hpp"
+#include "carrom/server/bot_factory.hpp"
 
 #include <chrono>
 #include <cstdint>

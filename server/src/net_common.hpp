@@ -2,12 +2,12 @@
 // Private to the network layer: Boost includes and the shared server core. Only net_*.cpp
 // include this.
 
-#include "carrom/server/bot_seat.hpp"
-#include "carrom/server/clock.hpp"
+#include "carrom/room/clock.hpp"
+#include "carrom/room/room.hpp"
+#include "carrom/server/bot_factory.hpp"
 #include "carrom/server/metrics.hpp"
 #include "carrom/server/random.hpp"
 #include "carrom/server/registry.hpp"
-#include "carrom/server/room.hpp"
 #include "carrom/server/settings.hpp"
 
 #include <boost/asio/io_context.hpp>
@@ -47,7 +47,7 @@ struct Core {
     // need ioc.
     ServerSettings settings;
     BotFactory bots;
-    SteadyClock clock;
+    room::SteadyClock clock;
     SystemRandom random;
     Metrics metrics;
     asio::io_context ioc;
@@ -70,7 +70,7 @@ struct Core {
 // A room on its own strand, with the timer that drives Room::tick.
 class RoomActor : public std::enable_shared_from_this<RoomActor> {
 public:
-    RoomActor(Core& core, std::string code, RoomConfig config);
+    RoomActor(Core& core, std::string code, room::RoomConfig config);
     ~RoomActor();
 
     const std::string& code() const { return code_; }
@@ -93,7 +93,7 @@ private:
     std::string code_;
     asio::strand<asio::io_context::executor_type> strand_;
     asio::steady_timer timer_;
-    Room room_;
+    room::Room room_;
     std::int64_t scheduled_ms_ = -1;
     bool removed_ = false;
 };

@@ -1,7 +1,7 @@
 // The shared core and the room actors: each room's state is touched only on its strand.
 #include "net_common.hpp"
 
-#include "carrom/server/outcome_messages.hpp"
+#include "carrom/room/outcome_messages.hpp"
 
 #include <boost/asio/post.hpp>
 #include <spdlog/spdlog.h>
@@ -20,9 +20,9 @@ Core::Core(ServerSettings s, BotFactory b)
 
 std::variant<std::shared_ptr<RoomActor>, proto::Error>
 Core::create_room(proto::RuleSet rule_set, const proto::RoomOptions& options) {
-    RoomConfig config;
+    room::RoomConfig config;
     config.rule_set = rule_set;
-    config.rules = make_rules_config(rule_set, options, settings.shot_clock_s);
+    config.rules = room::make_rules_config(rule_set, options, settings.shot_clock_s);
     config.snapshot_hz = settings.snapshot_hz;
     config.time_scale = settings.time_scale;
     config.grace_s = settings.grace_s;
@@ -42,7 +42,7 @@ void Core::remove_room(const std::string& code) {
     spdlog::debug("room {} closed", code);
 }
 
-RoomActor::RoomActor(Core& core, std::string code, RoomConfig config)
+RoomActor::RoomActor(Core& core, std::string code, room::RoomConfig config)
     : core_(core), code_(code), strand_(asio::make_strand(core.ioc)), timer_(strand_),
       room_(std::move(code), std::move(config), core.clock, core.metrics) {}
 

@@ -172,7 +172,7 @@ void WsSession::handle(const proto::ClientMessage& message) {
     if (const auto* ping = std::get_if<proto::Ping>(&message)) {
         send_now({std::make_shared<const std::string>(
                       proto::encode(proto::Pong{ping->nonce, core_.clock.now_ms()})),
-                  MessageKind::Normal});
+                  room::MessageKind::Normal});
     } else if (const auto* create = std::get_if<proto::CreateRoom>(&message)) {
         handle_create(*create);
     } else if (const auto* join = std::get_if<proto::JoinRoom>(&message)) {
@@ -182,17 +182,19 @@ void WsSession::handle(const proto::ClientMessage& message) {
     } else if (std::holds_alternative<proto::Leave>(message)) {
         stop_quick_match();
         if (room_) {
-            room_->post([self = shared_from_this()](Room& room) { room.leave(*self); });
+            room_->post([self = shared_from_this()](room::Room& room) { room.leave(*self); });
             room_.reset();
         }
     } else if (!room_) {
         send_error(proto::code::kNotInRoom, "Join a room first.");
     } else if (const auto* aim = std::get_if<proto::Aim>(&message)) {
-        room_->post([self = shared_from_this(), a = *aim](Room& room) { room.aim(*self, a); });
+        room_->post(
+            [self = shared_from_this(), a = *aim](room::Room& room) { room.aim(*self, a); });
     } else if (const auto* shoot = std::get_if<proto::Shoot>(&message)) {
-        room_->post([self = shared_from_this(), s = *shoot](Room& room) { room.shoot(*self, s); });
+        room_->post(
+            [self = shared_from_this(), s = *shoot](room::Room& room) { room.shoot(*self, s); });
     } else if (std::holds_alternative<proto::Rematch>(message)) {
-        room_->post([self = shared_from_this()](Room& room) { room.rematch(*self); });
+        room_->post([self = shared_from_this()](room::Room& room) { room.rematch(*self); });
     }
 }
 
@@ -226,7 +228,7 @@ void WsSession::handle_hello(const proto::Hello& hello) {
     token_ = record->token;
     send_now({std::make_shared<const std::string>(proto::encode(proto::Welcome{
                   proto::kProtocolVersion, player_id_, token_, core_.clock.now_ms()})),
-              MessageKind::Normal});
+              room::MessageKind::Normal});
     if (!hello.resume_token || record->room_code.empty()) {
         return;
     }
@@ -236,10 +238,10 @@ void WsSession::handle_hello(const proto::Hello& hello) {
         return;
     }
     room_ = room;
-    room->post([self = shared_from_this(), room](Room& r) {
+    room->post([self = shared_from_this(), room](room::Room& r) {
         if (auto error = r.resume(self)) {
-            self->send(
-                {std::make_shared<const std::string>(proto::encode(*error)), MessageKind::Normal});
+            self->send({std::make_shared<const std::string>(proto::encode(*error)),
+                        room::MessageKind::Normal});
             asio::post(self->ws_.get_executor(), [self, room] {
                 if (self->room_ == room) {
                     self->room_.reset();
@@ -272,7 +274,7 @@ void WsSession::handle_create(const proto::CreateRoom& create) {
 
 void WsSession::enter_bot_room(proto::RuleSet rule_set, const proto::RoomOptions& options,
                                proto::BotLevel level) {
-    std::shared_ptr<BotBrain> brain = core_.bots(level);
+    std::shared_ptr<room::BotBrain> brain = core_.bots(level);
     auto created = core_.create_room(rule_set, options);
     if (auto* error = std::get_if<proto::Error>(&created)) {
         send_error(error->code, error->message);
@@ -281,7 +283,7 @@ void WsSession::enter_bot_room(proto::RuleSet rule_set, const proto::RoomOptions
     auto room = std::get<std::shared_ptr<RoomActor>>(created);
     enter_room(room, proto::Role::Player);
     const std::string bot_name = "Bot (" + std::string(proto::to_string(level)) + ")";
-    room->post([brain, bot_name](Room& r) { (void)r.seat_bot(bot_name, brain); });
+    room->post([brain, bot_name](room::Room& r) { (void)r.seat_bot(bot_name, brain); });
 }
 
 void WsSession::handle_join(const proto::JoinRoom& join) {
@@ -303,10 +305,10 @@ void WsSession::enter_room(const std::shared_ptr<RoomActor>& room, proto::Role r
     if (role == proto::Role::Player) {
         core_.registry.set_player_room(token_, room->code());
     }
-    room->post([self = shared_from_this(), room, role](Room& r) {
+    room->post([self = shared_from_this(), room, role](room::Room& r) {
         if (auto error = r.join(self, role)) {
-            self->send(
-                {std::make_shared<const std::string>(proto::encode(*error)), MessageKind::Normal});
+            self->send({std::make_shared<const std::string>(proto::encode(*error)),
+                        room::MessageKind::Normal});
             asio::post(self->ws_.get_executor(), [self, room] {
                 if (self->room_ == room) {
                     self->room_.reset();
@@ -394,13 +396,13 @@ void WsSession::assign_room(std::shared_ptr<RoomActor> room) {
 
 // --- writing ----------------------------------------------------------------------------------
 
-void WsSession::send(Outgoing message) {
+void WsSession::send(room::Outgoing message) {
     asio::post(ws_.get_executor(), [self = shared_from_this(), m = std::move(message)]() mutable {
         self->send_now(std::move(m));
     });
 }
 
-void WsSession::send_now(Outgoing message) {
+void WsSession::send_now(room::Outgoing message) {
     if (ended_ || close_started_ || !accepted_) {
         return;
     }
@@ -426,7 +428,7 @@ void WsSession::send_now(Outgoing message) {
 void WsSession::send_error(std::string_view code, std::string message) {
     core_.metrics.errors_sent_total.fetch_add(1, std::memory_order_relaxed);
     send_now({std::make_shared<const std::string>(proto::encode_error(code, message)),
-              MessageKind::Normal});
+              room::MessageKind::Normal});
 }
 
 void WsSession::fail(std::string_view code, std::string message, int close_code) {
@@ -550,7 +552,7 @@ void WsSession::end() {
         core_.registry.cancel_quick_match(player_id_);
     }
     if (room_) {
-        room_->post([self = shared_from_this()](Room& room) { room.disconnected(*self); });
+        room_->post([self = shared_from_this()](room::Room& room) { room.disconnected(*self); });
         room_.reset();
     } else if (!token_.empty()) {
         core_.registry.forget_player(token_);

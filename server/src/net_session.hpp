@@ -7,7 +7,7 @@
 #include "net_common.hpp"
 
 #include "carrom/proto/client_messages.hpp"
-#include "carrom/server/peer.hpp"
+#include "carrom/room/peer.hpp"
 #include "carrom/server/rate_limiter.hpp"
 #include "carrom/server/write_queue.hpp"
 
@@ -20,7 +20,7 @@
 
 namespace carrom::server::net {
 
-class WsSession final : public Peer, public std::enable_shared_from_this<WsSession> {
+class WsSession final : public room::Peer, public std::enable_shared_from_this<WsSession> {
 public:
     WsSession(Core& core, beast::tcp_stream stream);
     ~WsSession() override;
@@ -30,7 +30,7 @@ public:
     // Peer
     std::int64_t player_id() const override { return player_id_; }
     const std::string& name() const override { return name_; }
-    void send(Outgoing message) override;
+    void send(room::Outgoing message) override;
     bool take_keyframe_request() override { return keyframe_request_.exchange(false); }
     void close(int close_code, std::string reason) override;
 
@@ -56,7 +56,7 @@ private:
     void enter_bot_room(proto::RuleSet rule_set, const proto::RoomOptions& options,
                         proto::BotLevel level);
     void enter_room(const std::shared_ptr<RoomActor>& room, proto::Role role);
-    void send_now(Outgoing message);
+    void send_now(room::Outgoing message);
     void send_error(std::string_view code, std::string message);
     void fail(std::string_view code, std::string message, int close_code);
     void begin_close(int close_code, std::string reason);

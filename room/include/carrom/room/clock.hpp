@@ -1,11 +1,12 @@
 #pragma once
-// The one clock the server logic reads: milliseconds on a monotonic scale. Clients only ever see
-// differences (deadline - server_time), so the origin does not matter. Tests use ManualClock.
+// The one clock a room reads: milliseconds on a monotonic scale. Clients only ever see
+// differences (deadline - server_time), so the origin does not matter. carrom-server uses
+// SteadyClock; tests use ManualClock; the client's offline demo its own frame clock.
 
 #include <atomic>
 #include <cstdint>
 
-namespace carrom::server {
+namespace carrom::room {
 
 class Clock {
 public:
@@ -31,4 +32,4 @@ private:
     std::atomic<std::int64_t> now_;
 };
 
-} // namespace carrom::server
+} // namespace carrom::room

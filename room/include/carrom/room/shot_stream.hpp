@@ -13,7 +13,7 @@
 #include <span>
 #include <vector>
 
-namespace carrom::server {
+namespace carrom::room {
 
 // A keyframe of `bodies`: every unpocketed body in "bodies", every pocketed id in "pocketed".
 proto::Snapshot make_keyframe(std::span<const Body> bodies, std::int64_t seq, int turn, double t_s);
@@ -50,4 +50,4 @@ private:
     std::vector<Body> last_sent_; // quantised
 };
 
-} // namespace carrom::server
+} // namespace carrom::room

@@ -1,10 +1,10 @@
-#include "carrom/server/shot_stream.hpp"
+#include "carrom/room/shot_stream.hpp"
 
 #include "carrom/proto/codec.hpp"
 
 #include <algorithm>
 
-namespace carrom::server {
+namespace carrom::room {
 
 namespace {
 
@@ -93,4 +93,4 @@ proto::Snapshot ShotStream::keyframe(std::int64_t seq) const {
     return make_keyframe(last_sent_, seq, turn_, last_t_s_);
 }
 
-} // namespace carrom::server
+} // namespace carrom::room

@@ -1,13 +1,13 @@
-#include "carrom/server/room.hpp"
+#include "carrom/room/room.hpp"
 
 #include "carrom/proto/codec.hpp"
-#include "carrom/server/outcome_messages.hpp"
-#include "carrom/server/snapshot_writer.hpp"
+#include "carrom/room/outcome_messages.hpp"
+#include "carrom/room/snapshot_writer.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-namespace carrom::server {
+namespace carrom::room {
 
 namespace {
 
@@ -45,15 +45,15 @@ rules::RulesConfig make_rules_config(proto::RuleSet rule_set, const proto::RoomO
     return config;
 }
 
-Room::Room(std::string code, RoomConfig config, const Clock& clock, Metrics& metrics)
-    : code_(std::move(code)), config_(std::move(config)), clock_(clock), metrics_(metrics),
+Room::Room(std::string code, RoomConfig config, const Clock& clock, RoomCounters& counters)
+    : code_(std::move(code)), config_(std::move(config)), clock_(clock), counters_(counters),
       engine_(config_.physics),
       match_(rules::new_match(to_rules(config_.rule_set), config_.rules, config_.physics)),
       aim_x_px_(config_.physics.centre().x) {}
 
 Room::~Room() {
     if (game_running()) {
-        metrics_.matches.fetch_sub(1, std::memory_order_relaxed);
+        counters_.matches.fetch_sub(1, std::memory_order_relaxed);
     }
 }
 
@@ -254,7 +254,7 @@ void Room::send_to(Peer& peer, const proto::ServerMessage& message) {
 }
 
 void Room::send_error(Peer& peer, std::string_view code, std::string message) {
-    metrics_.errors_sent_total.fetch_add(1, std::memory_order_relaxed);
+    counters_.errors_sent_total.fetch_add(1, std::memory_order_relaxed);
     send_to(peer, make_error(code, std::move(message)));
 }
 
@@ -347,8 +347,8 @@ proto::RoomState Room::room_state(int you) const {
 
 void Room::start_game_if_ready() {
     started_ = true;
-    metrics_.matches.fetch_add(1, std::memory_order_relaxed);
-    metrics_.matches_started_total.fetch_add(1, std::memory_order_relaxed);
+    counters_.matches.fetch_add(1, std::memory_order_relaxed);
+    counters_.matches_started_total.fetch_add(1, std::memory_order_relaxed);
     start_turn();
 }
 
@@ -426,7 +426,7 @@ std::optional<proto::Error> Room::play(int seat, const Shot& shot) {
     if (result.error) {
         return to_proto_error(*result.error);
     }
-    metrics_.shots_total.fetch_add(1, std::memory_order_relaxed);
+    counters_.shots_total.fetch_add(1, std::memory_order_relaxed);
     const std::int64_t now = clock_.now_ms();
     SimResult& physics = result.outcome.physics;
     ShotStream stream(config_.physics, std::move(physics.trajectory), std::move(physics.events),
@@ -444,7 +444,7 @@ void Room::stream_tick(std::int64_t now_ms) {
         return;
     }
     Streaming& s = *streaming_;
-    metrics_.observe_snapshot_lag_ms(static_cast<double>(now_ms - s.next_ms));
+    counters_.observe_snapshot_lag_ms(static_cast<double>(now_ms - s.next_ms));
     const double t_s = config_.time_scale * static_cast<double>(now_ms - s.start_ms) / 1000.0;
     ShotStream::Step step = s.stream.advance(t_s, ++seq_);
     step.snapshot.due_ms = s.next_ms;
@@ -453,7 +453,7 @@ void Room::stream_tick(std::int64_t now_ms) {
         broadcast(proto::ServerMessage{std::move(event)},
                   pocket ? MessageKind::Normal : MessageKind::Cue);
     }
-    metrics_.snapshots_total.fetch_add(1, std::memory_order_relaxed);
+    counters_.snapshots_total.fetch_add(1, std::memory_order_relaxed);
     auto delta = std::make_shared<const std::string>(encode_snapshot(step.snapshot));
     std::shared_ptr<const std::string> keyframe;
     for (Peer* peer : members()) {
@@ -512,8 +512,8 @@ void Room::after_outcome(const rules::ShotOutcome& outcome, const rules::MatchSt
         broadcast(event);
     }
     if (was_running && match_.phase == rules::Phase::GameOver) {
-        metrics_.matches.fetch_sub(1, std::memory_order_relaxed);
-        metrics_.matches_finished_total.fetch_add(1, std::memory_order_relaxed);
+        counters_.matches.fetch_sub(1, std::memory_order_relaxed);
+        counters_.matches_finished_total.fetch_add(1, std::memory_order_relaxed);
     }
     start_turn();
     bot_turn_taken_ = -1;
@@ -549,8 +549,8 @@ void Room::rematch(Peer& peer) {
     config_.rules.first_breaker = (config_.rules.first_breaker + 1) % 2;
     match_ = rules::new_match(to_rules(config_.rule_set), config_.rules, config_.physics);
     match_.turn_number = next_turn;
-    metrics_.matches.fetch_add(1, std::memory_order_relaxed);
-    metrics_.matches_started_total.fetch_add(1, std::memory_order_relaxed);
+    counters_.matches.fetch_add(1, std::memory_order_relaxed);
+    counters_.matches_started_total.fetch_add(1, std::memory_order_relaxed);
     start_turn();
     bot_turn_taken_ = -1;
     broadcast_room_state();
@@ -646,4 +646,4 @@ std::optional<std::int64_t> Room::next_wake_ms() const {
     return wake;
 }
 
-} // namespace carrom::server
+} // namespace carrom::room

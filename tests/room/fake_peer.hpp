@@ -2,14 +2,14 @@
 // A Peer that records what a room sends it, decoded, for the room tests.
 
 #include "carrom/proto/codec.hpp"
-#include "carrom/server/peer.hpp"
+#include "carrom/room/peer.hpp"
 
 #include <gtest/gtest.h>
 
 #include <string>
 #include <vector>
 
-namespace carrom::server::testing {
+namespace carrom::room::testing {
 
 class FakePeer final : public Peer {
 public:
@@ -80,4 +80,4 @@ private:
     std::string name_;
 };
 
-} // namespace carrom::server::testing
+} // namespace carrom::room::testing

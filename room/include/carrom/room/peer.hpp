@@ -1,12 +1,12 @@
 #pragma once
-// What a room sees of a connected client: a thread-safe mailbox. The network session implements
-// it; tests use a recording fake.
+// What a room sees of a connected client: a thread-safe mailbox. The server's WebSocket session
+// implements it; the client's offline demo has a local one; tests use a recording fake.
 
 #include <cstdint>
 #include <memory>
 #include <string>
 
-namespace carrom::server {
+namespace carrom::room {
 
 enum class MessageKind : std::uint8_t {
     Normal,   // must be delivered (or the client is disconnected)
@@ -34,4 +34,4 @@ public:
     virtual void close(int close_code, std::string reason) = 0;
 };
 
-} // namespace carrom::server
+} // namespace carrom::room

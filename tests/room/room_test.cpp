@@ -1,7 +1,7 @@
 // The room's logic without sockets: seats, the match driver, streaming, clocks and grace.
-#include "carrom/server/room.hpp"
+#include "carrom/room/room.hpp"
 
-#include "server/fake_peer.hpp"
+#include "room/fake_peer.hpp"
 
 #include <gtest/gtest.h>
 
@@ -11,7 +11,7 @@
 #include <numbers>
 #include <set>
 
-namespace carrom::server {
+namespace carrom::room {
 namespace {
 
 using testing::FakePeer;
@@ -20,7 +20,7 @@ constexpr double kUp = -std::numbers::pi / 2.0;
 
 class RoomTest : public ::testing::Test {
 protected:
-    RoomTest() : room_("ABCDEF", config(), clock_, metrics_) {}
+    RoomTest() : room_("ABCDEF", config(), clock_, counters_) {}
 
     static RoomConfig config() {
         RoomConfig c;
@@ -52,7 +52,7 @@ protected:
     proto::Shoot break_shot(int turn) const { return {turn, 300.0, kUp, 25.0}; }
 
     ManualClock clock_;
-    Metrics metrics_;
+    RoomCounters counters_;
     Room room_;
     std::shared_ptr<FakePeer> a_ = std::make_shared<FakePeer>(1, "Asha");
     std::shared_ptr<FakePeer> b_ = std::make_shared<FakePeer>(2, "Bo");
@@ -84,7 +84,7 @@ TEST_F(RoomTest, SecondPlayerStartsTheGame) {
     EXPECT_EQ(state.seats[1].name, "Bo");
     ASSERT_EQ(a_->events<proto::TurnEvent>().size(), 1U);
     EXPECT_EQ(a_->events<proto::TurnEvent>()[0].seat, 0);
-    EXPECT_EQ(metrics_.matches.load(), 1);
+    EXPECT_EQ(counters_.matches.load(), 1);
 }
 
 TEST_F(RoomTest, ThirdPlayerFindsTheRoomFull) {
@@ -146,7 +146,7 @@ TEST_F(RoomTest, ShotStreamsSnapshotsThenTheResult) {
     EXPECT_EQ(watcher_->all<proto::Snapshot>(), snaps);
     EXPECT_EQ(room_.phase(), proto::Phase::Aiming);
     EXPECT_EQ(a_->last_room_state().turn, 1);
-    EXPECT_EQ(metrics_.shots_total.load(), 1);
+    EXPECT_EQ(counters_.shots_total.load(), 1);
 }
 
 // What the write queue may drop under back-pressure: deltas (a keyframe repairs them) and the
@@ -221,7 +221,7 @@ TEST_F(RoomTest, InputDuringMotionIsRefused) {
     room_.aim(*b_, {1, 200.0});
     EXPECT_EQ(b_->last_error(), "in_motion");
     play_out();
-    EXPECT_EQ(metrics_.shots_total.load(), 1);
+    EXPECT_EQ(counters_.shots_total.load(), 1);
 }
 
 TEST_F(RoomTest, StaleAndOutOfTurnInputChangesNothing) {
@@ -239,7 +239,7 @@ TEST_F(RoomTest, StaleAndOutOfTurnInputChangesNothing) {
     room_.shoot(shooter, break_shot(0)); // the old turn number, replayed
     EXPECT_EQ(shooter.last_error(), "stale_turn");
     EXPECT_EQ(room_.match().turn_number, turn);
-    EXPECT_EQ(metrics_.shots_total.load(), 1);
+    EXPECT_EQ(counters_.shots_total.load(), 1);
 }
 
 TEST_F(RoomTest, SpectatorsCannotPlay) {
@@ -352,7 +352,7 @@ TEST_F(RoomTest, GraceExpiryForfeits) {
     EXPECT_EQ(ends[0].reason, "forfeit");
     EXPECT_EQ(room_.phase(), proto::Phase::GameOver);
     EXPECT_FALSE(a_->last_room_state().seats[1].occupied);
-    EXPECT_EQ(metrics_.matches_finished_total.load(), 1);
+    EXPECT_EQ(counters_.matches_finished_total.load(), 1);
 }
 
 TEST_F(RoomTest, LeavingForfeitsAndAbandonsTheRoomWhenEmpty) {
@@ -370,7 +370,7 @@ TEST_F(RoomTest, LeavingForfeitsAndAbandonsTheRoomWhenEmpty) {
 TEST_F(RoomTest, ShotClockPassesTheTurn) {
     RoomConfig c = config();
     c.rules.shot_clock_s = 10.0;
-    Room room("ABCDEF", c, clock_, metrics_);
+    Room room("ABCDEF", c, clock_, counters_);
     ASSERT_FALSE(room.join(a_, proto::Role::Player));
     ASSERT_FALSE(room.join(b_, proto::Role::Player));
     const auto turn = a_->events<proto::TurnEvent>().back();
@@ -420,7 +420,7 @@ public:
 TEST_F(RoomTest, BotSeatTakesItsTurnThroughTheSeam) {
     RoomConfig c = config();
     c.rule_set = proto::RuleSet::Freestyle; // no break rule: a quiet shot passes the turn
-    Room room("ABCDEF", c, clock_, metrics_);
+    Room room("ABCDEF", c, clock_, counters_);
     ASSERT_FALSE(room.join(a_, proto::Role::Player));
     ASSERT_FALSE(room.seat_bot("Bot", std::make_shared<ScriptedBrain>()));
     EXPECT_TRUE(a_->last_room_state().seats[1].bot);
@@ -464,4 +464,4 @@ TEST(RoomOptions, MakeRulesConfig) {
 }
 
 } // namespace
-} // namespace carrom::server
+} // namespace carrom::room

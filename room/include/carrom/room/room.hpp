@@ -1,7 +1,8 @@
 #pragma once
 // One room: two seats, spectators, the match and the shot being streamed. Plain single-threaded
-// logic (the network layer calls it only on the room's strand); time comes from the injected
-// clock. The room answers its members through Peer::send: broadcasts are encoded once and shared.
+// logic (carrom-server calls it only on the room's strand; the client's offline demo on its UI
+// thread); time comes from the injected clock. The room answers its members through Peer::send:
+// broadcasts are encoded once and shared.
 //
 // Time-driven work happens in tick(): snapshots while a shot streams, the shot clock, grace
 // periods. next_wake_ms() says when tick() is next needed (nothing while the board is at rest
@@ -9,12 +10,12 @@
 
 #include "carrom/proto/client_messages.hpp"
 #include "carrom/proto/server_messages.hpp"
+#include "carrom/room/bot_seat.hpp"
+#include "carrom/room/clock.hpp"
+#include "carrom/room/peer.hpp"
+#include "carrom/room/room_counters.hpp"
+#include "carrom/room/shot_stream.hpp"
 #include "carrom/rules/match.hpp"
-#include "carrom/server/bot_seat.hpp"
-#include "carrom/server/clock.hpp"
-#include "carrom/server/metrics.hpp"
-#include "carrom/server/peer.hpp"
-#include "carrom/server/shot_stream.hpp"
 
 #include <array>
 #include <cstdint>
@@ -23,7 +24,7 @@
 #include <string>
 #include <vector>
 
-namespace carrom::server {
+namespace carrom::room {
 
 struct RoomConfig {
     proto::RuleSet rule_set = proto::RuleSet::Icf;
@@ -41,7 +42,7 @@ rules::RulesConfig make_rules_config(proto::RuleSet rule_set, const proto::RoomO
 
 class Room {
 public:
-    Room(std::string code, RoomConfig config, const Clock& clock, Metrics& metrics);
+    Room(std::string code, RoomConfig config, const Clock& clock, RoomCounters& counters);
     ~Room();
     Room(const Room&) = delete;
     Room& operator=(const Room&) = delete;
@@ -55,7 +56,7 @@ public:
     // Reclaims the seat held by peer->player_id() (dropped or still connected elsewhere: the
     // old connection is closed with "replaced"). Error bad_token if the player holds no seat.
     std::optional<proto::Error> resume(std::shared_ptr<Peer> peer);
-    // Seats a server bot in the first free seat. Error room_full.
+    // Seats a bot in the first free seat. Error room_full.
     std::optional<proto::Error> seat_bot(std::string name, std::shared_ptr<BotBrain> brain);
     // Members are identified by their connection (a replaced connection has no say any more).
     // Leaves for good: a seated player in a running game forfeits.
@@ -124,7 +125,7 @@ private:
     std::string code_;
     RoomConfig config_;
     const Clock& clock_;
-    Metrics& metrics_;
+    RoomCounters& counters_;
     ExactEngine engine_;
     rules::MatchState match_;
     std::array<SeatSlot, 2> seats_{};
@@ -147,4 +148,4 @@ private:
     int bot_turn_taken_ = -1; // turn number whose BotTurn was handed out
 };
 
-} // namespace carrom::server
+} // namespace carrom::room

@@ -1,19 +1,18 @@
 #pragma once
-// The seam for server-side bot seats (issue 7). A room can seat a BotBrain; when it is the bot's
-// turn the room hands out a BotTurn once (Room::take_bot_turn); the network layer runs
-// choose_shot on a worker thread, never on an I/O thread, and posts the result back to the room's
-// strand (Room::bot_shoot). A brain must be callable from any single thread at a time.
+// The seam for bot seats. A room can seat a BotBrain; when it is the bot's turn the room hands out
+// a BotTurn once (Room::take_bot_turn); its driver runs choose_shot and gives the shot back
+// (Room::bot_shoot). carrom-server runs brains on a worker thread, never on an I/O thread, and
+// posts the result back to the room's strand; the client's offline demo calls its opponent on
+// the UI thread. A brain must be callable from any single thread at a time.
 
-#include "carrom/proto/types.hpp"
 #include "carrom/rules/match_state.hpp"
 #include "carrom/scene.hpp"
 
 #include <chrono>
-#include <functional>
 #include <memory>
 #include <string>
 
-namespace carrom::server {
+namespace carrom::room {
 
 class BotBrain {
 public:
@@ -25,9 +24,6 @@ public:
                              std::chrono::milliseconds waited) = 0;
 };
 
-// Makes a brain for a level; an empty factory means the server has no bots ("unsupported").
-using BotFactory = std::function<std::shared_ptr<BotBrain>(proto::BotLevel level)>;
-
 struct BotTurn {
     int seat = 0;
     int turn = 0;
@@ -35,4 +31,4 @@ struct BotTurn {
     std::shared_ptr<BotBrain> brain;
 };
 
-} // namespace carrom::server
+} // namespace carrom::room

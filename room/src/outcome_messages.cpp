@@ -1,8 +1,8 @@
-#include "carrom/server/outcome_messages.hpp"
+#include "carrom/room/outcome_messages.hpp"
 
 #include "carrom/proto/limits.hpp"
 
-namespace carrom::server {
+namespace carrom::room {
 
 proto::QueenInfo to_proto(const rules::QueenState& queen) {
     switch (queen.status) {
@@ -178,4 +178,4 @@ std::vector<proto::Event> rule_events(const rules::ShotOutcome& outcome,
     return events;
 }
 
-} // namespace carrom::server
+} // namespace carrom::room

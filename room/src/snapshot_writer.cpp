@@ -1,10 +1,10 @@
-#include "carrom/server/snapshot_writer.hpp"
+#include "carrom/room/snapshot_writer.hpp"
 
 #include <charconv>
 #include <cmath>
 #include <system_error>
 
-namespace carrom::server {
+namespace carrom::room {
 
 namespace {
 
@@ -70,4 +70,4 @@ std::string encode_snapshot(const proto::Snapshot& s) {
     return out;
 }
 
-} // namespace carrom::server
+} // namespace carrom::room

@@ -8,7 +8,7 @@
 #include <string_view>
 #include <vector>
 
-namespace carrom::server {
+namespace carrom::room {
 
 proto::QueenInfo to_proto(const rules::QueenState& queen);
 proto::Colour colour_of_team(const rules::MatchState& state, int team);
@@ -28,4 +28,4 @@ std::vector<proto::Event> rule_events(const rules::ShotOutcome& outcome,
                                       const rules::MatchState& before,
                                       const rules::MatchState& after);
 
-} // namespace carrom::server
+} // namespace carrom::room
