@@ -9,7 +9,6 @@
 
 namespace carrom::bots {
 
-
 rules::MatchState match_state_from(const proto::RoomState& room, const PhysicsConfig& physics = {});
 
 } // namespace carrom::bots
