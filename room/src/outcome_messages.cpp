@@ -83,16 +83,35 @@ std::string_view game_end_reason(rules::RuleCode code) {
 }
 
 proto::Error to_proto_error(const rules::RuleError& error) {
+    using rules::RuleErrorCode;
     std::string_view code = proto::code::kIllegalShot;
-    if (error.code == "not_your_turn" || error.code == "invalid_seat") {
+    switch (error.code) {
+    case RuleErrorCode::InvalidSeat:
+    case RuleErrorCode::NotYourTurn:
         code = proto::code::kNotYourTurn;
-    } else if (error.code == "game_over" || error.code == "board_over") {
+        break;
+    case RuleErrorCode::StaleTurn:
+        code = proto::code::kStaleTurn;
+        break;
+    case RuleErrorCode::GameOver:
+    case RuleErrorCode::BoardOver:
+    case RuleErrorCode::WrongPhase:
         code = proto::code::kWrongPhase;
-    } else if (error.code == "x_not_finite" || error.code == "x_out_of_range" ||
-               error.code == "striker_overlaps") {
+        break;
+    case RuleErrorCode::XNotFinite:
+    case RuleErrorCode::XOutOfRange:
+    case RuleErrorCode::StrikerOverlaps:
         code = proto::code::kIllegalPlacement;
-    } else if (error.code == "physics_error") {
+        break;
+    case RuleErrorCode::AngleNotFinite:
+    case RuleErrorCode::PowerNotFinite:
+    case RuleErrorCode::PowerOutOfRange:
+        code = proto::code::kIllegalShot;
+        break;
+    case RuleErrorCode::PhysicsError:
+    case RuleErrorCode::InvalidConfig:
         code = proto::code::kInternal;
+        break;
     }
     std::string message = error.message;
     if (message.size() > proto::kMaxTextBytes) {

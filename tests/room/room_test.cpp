@@ -447,6 +447,26 @@ TEST_F(RoomTest, BotSeatTakesItsTurnThroughTheSeam) {
     EXPECT_TRUE(room.abandoned()); // bots alone do not keep a room open
 }
 
+TEST_F(RoomTest, BotsAndPlayersTakeSeatsTheSameWay) {
+    ASSERT_FALSE(room_.seat_bot("Bot", std::make_shared<ScriptedBrain>())); // seat 0
+    EXPECT_EQ(room_.phase(), proto::Phase::Waiting);
+    ASSERT_FALSE(room_.join(a_, proto::Role::Player)); // seat 1: the game starts
+    EXPECT_EQ(room_.seat_of(*a_), 1);
+    EXPECT_EQ(room_.phase(), proto::Phase::Aiming);
+    EXPECT_EQ(a_->last_room_state().you, 1);
+    ASSERT_EQ(a_->all<proto::Snapshot>().size(), 1U);
+    EXPECT_TRUE(a_->all<proto::Snapshot>()[0].keyframe);
+    ASSERT_EQ(a_->events<proto::TurnEvent>().size(), 1U);
+    EXPECT_EQ(a_->events<proto::TurnEvent>()[0].seat, 0);
+    EXPECT_EQ(counters_.matches_started_total.load(), 1);
+    const auto bot_error = room_.seat_bot("Another bot", std::make_shared<ScriptedBrain>());
+    const auto player_error = room_.join(b_, proto::Role::Player);
+    ASSERT_TRUE(bot_error && player_error);
+    EXPECT_EQ(*bot_error, *player_error);
+    EXPECT_EQ(bot_error->code, "room_full");
+    EXPECT_EQ(a_->events<proto::TurnEvent>().size(), 1U);
+}
+
 TEST(RoomOptions, MakeRulesConfig) {
     proto::RoomOptions options;
     options.target_points = 50;

@@ -16,7 +16,8 @@ proto::Colour colour_of_team(const rules::MatchState& state, int team);
 std::string_view rule_sentence(rules::RuleCode code);
 // "score", "boards", "cleared", "forfeit", "clock".
 std::string_view game_end_reason(rules::RuleCode code);
-// A refused stroke: check_turn / check_placement codes to protocol codes.
+// A refused input: the rules' error (check_turn, check_placement, play_shot) as the wire's code,
+// with the rules' sentence.
 proto::Error to_proto_error(const rules::RuleError& error);
 
 // Per-seat view of per-team numbers (singles: identical; doubles: partners share).

@@ -100,13 +100,20 @@ private:
     void broadcast(const proto::ServerMessage& message, MessageKind kind = MessageKind::Normal,
                    const Peer* except = nullptr);
     void broadcast_room_state();
+    // The turn event for the current turn, to everyone.
+    void broadcast_turn();
     void send_to(Peer& peer, const proto::ServerMessage& message);
     void send_error(Peer& peer, std::string_view code, std::string message);
     std::vector<Peer*> members();
 
+    // Game input from a seat for a turn: in_motion, wrong_phase before the game, then the rules'
+    // turn check (rules::check_turn) as a wire error.
     std::optional<proto::Error> check_input(int seat, int turn) const;
     std::optional<proto::Error> play(int seat, const Shot& shot);
-    void start_game_if_ready();
+    // The one way into a seat, for players (slot.peer) and bots (slot.bot): the first free seat;
+    // the game starts once both are taken. Error room_full.
+    std::optional<proto::Error> fill_seat(SeatSlot slot);
+    void start_game(); // a game starts (counted); the first turn's clock runs
     void start_turn();
     void stream_tick(std::int64_t now_ms);
     void finish_shot();
