@@ -1,15 +1,19 @@
-#include "net_session.hpp"
+#include "ws_session.hpp"
+
+#include "room_actor.hpp"
+#include "server_core.hpp"
 
 #include "carrom/proto/codec.hpp"
 #include "carrom/proto/limits.hpp"
 #include "carrom/proto/version.hpp"
 
 #include <boost/asio/post.hpp>
+#include <boost/beast/core/buffers_to_string.hpp>
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
 
-namespace carrom::server::net {
+namespace carrom::server {
 
 namespace websocket = beast::websocket;
 
@@ -25,27 +29,9 @@ constexpr std::chrono::seconds kKillAfter{3}; // a close that does not finish is
 
 } // namespace
 
-// --- Core: sessions ---------------------------------------------------------------------------
-
-void Core::add_session(const std::shared_ptr<WsSession>& session) {
-    std::lock_guard lock(sessions_mutex);
-    sessions[session.get()] = session;
-}
-
-void Core::remove_session(const WsSession* session) {
-    std::lock_guard lock(sessions_mutex);
-    sessions.erase(session);
-}
-
-void start_ws_session(Core& core, beast::tcp_stream stream,
-                      http::request<http::string_body> request) {
-    auto session = std::make_shared<WsSession>(core, std::move(stream));
-    session->run(std::move(request));
-}
-
 // --- WsSession --------------------------------------------------------------------------------
 
-WsSession::WsSession(Core& core, beast::tcp_stream stream)
+WsSession::WsSession(ServerCore& core, beast::tcp_stream stream)
     : core_(core), ws_(std::move(stream)), hello_timer_(ws_.get_executor()),
       idle_timer_(ws_.get_executor()), kill_timer_(ws_.get_executor()),
       quick_timer_(ws_.get_executor()),
@@ -559,4 +545,4 @@ void WsSession::end() {
     }
 }
 
-} // namespace carrom::server::net
+} // namespace carrom::server

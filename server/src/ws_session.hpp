@@ -1,28 +1,34 @@
 #pragma once
-// One WebSocket connection: reads and validates client messages, keeps session-level state
-// (hello, rate limit, timeouts), forwards game input to its room's strand, and writes through a
-// bounded queue (one write in flight). Every member is touched only on the session's strand,
-// except the Peer interface, which posts to it.
+// Private to server/src: one WebSocket connection. Reads and validates client messages, keeps
+// session-level state (hello, rate limit, timeouts, the quick-match wait), forwards game input to
+// its room's strand, and writes through a bounded queue (one write in flight). Every member is
+// touched only on the session's strand, except the Peer interface, which posts to it.
 
-#include "net_common.hpp"
+#include "asio_types.hpp"
 
 #include "carrom/proto/client_messages.hpp"
 #include "carrom/room/peer.hpp"
 #include "carrom/server/rate_limiter.hpp"
 #include "carrom/server/write_queue.hpp"
 
-#include <boost/beast/core/buffers_to_string.hpp>
+#include <boost/asio/steady_timer.hpp>
 #include <boost/beast/core/flat_buffer.hpp>
 #include <boost/beast/websocket.hpp>
 
+#include <atomic>
+#include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 
-namespace carrom::server::net {
+namespace carrom::server {
+
+class RoomActor;
+struct ServerCore;
 
 class WsSession final : public room::Peer, public std::enable_shared_from_this<WsSession> {
 public:
-    WsSession(Core& core, beast::tcp_stream stream);
+    WsSession(ServerCore& core, beast::tcp_stream stream);
     ~WsSession() override;
 
     void run(http::request<http::string_body> request);
@@ -66,7 +72,7 @@ private:
     void on_idle_timer();
     void end();
 
-    Core& core_;
+    ServerCore& core_;
     beast::websocket::stream<beast::tcp_stream> ws_;
     beast::flat_buffer buffer_;
     asio::steady_timer hello_timer_;
@@ -94,4 +100,4 @@ private:
     std::shared_ptr<RoomActor> room_;
 };
 
-} // namespace carrom::server::net
+} // namespace carrom::server

@@ -1,48 +1,12 @@
-// The shared core and the room actors: each room's state is touched only on its strand.
-#include "net_common.hpp"
+#include "room_actor.hpp"
 
-#include "carrom/room/outcome_messages.hpp"
+#include "server_core.hpp"
 
-#include <boost/asio/post.hpp>
 #include <spdlog/spdlog.h>
 
-#include <cmath>
+namespace carrom::server {
 
-namespace carrom::server::net {
-
-std::chrono::milliseconds to_duration(double seconds) {
-    return std::chrono::milliseconds(static_cast<std::int64_t>(std::llround(seconds * 1000.0)));
-}
-
-Core::Core(ServerSettings s, BotFactory b)
-    : settings(std::move(s)), bots(std::move(b)), ioc(std::max(1, settings.threads)),
-      registry(random, static_cast<std::size_t>(std::max(0, settings.max_rooms))) {}
-
-std::variant<std::shared_ptr<RoomActor>, proto::Error>
-Core::create_room(proto::RuleSet rule_set, const proto::RoomOptions& options) {
-    room::RoomConfig config;
-    config.rule_set = rule_set;
-    config.rules = room::make_rules_config(rule_set, options, settings.shot_clock_s);
-    config.snapshot_hz = settings.snapshot_hz;
-    config.time_scale = settings.time_scale;
-    config.grace_s = settings.grace_s;
-    auto created = registry.create_room(
-        [&](const std::string& code) { return std::make_shared<RoomActor>(*this, code, config); });
-    if (std::holds_alternative<std::shared_ptr<RoomActor>>(created)) {
-        metrics.rooms.fetch_add(1, std::memory_order_relaxed);
-        spdlog::debug("room {} created ({})", std::get<std::shared_ptr<RoomActor>>(created)->code(),
-                      proto::to_string(rule_set));
-    }
-    return created;
-}
-
-void Core::remove_room(const std::string& code) {
-    registry.remove_room(code);
-    metrics.rooms.fetch_sub(1, std::memory_order_relaxed);
-    spdlog::debug("room {} closed", code);
-}
-
-RoomActor::RoomActor(Core& core, std::string code, room::RoomConfig config)
+RoomActor::RoomActor(ServerCore& core, std::string code, room::RoomConfig config)
     : core_(core), code_(code), strand_(asio::make_strand(core.ioc)), timer_(strand_),
       room_(std::move(code), std::move(config), core.clock, core.metrics) {}
 
@@ -114,4 +78,4 @@ void RoomActor::on_timer() {
     after();
 }
 
-} // namespace carrom::server::net
+} // namespace carrom::server
