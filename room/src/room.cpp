@@ -40,9 +40,10 @@ rules::RulesConfig make_rules_config(proto::RuleSet rule_set, const proto::RoomO
     return config;
 }
 
-Room::Room(std::string code, RoomConfig config, const Clock& clock, RoomCounters& counters)
+Room::Room(std::string code, RoomConfig config, const Clock& clock, RoomCounters& counters,
+           RoomObserver* observer)
     : code_(std::move(code)), config_(std::move(config)), clock_(clock), counters_(counters),
-      engine_(config_.physics),
+      observer_(observer), engine_(config_.physics),
       match_(rules::new_match(to_rules(config_.rule_set), config_.rules, config_.physics)),
       aim_x_px_(config_.physics.centre().x) {}
 
@@ -94,6 +95,7 @@ std::optional<proto::Error> Room::join(std::shared_ptr<Peer> peer, proto::Role r
     spectators_.push_back(peer);
     broadcast_room_state();
     send_to(*peer, current_keyframe());
+    notify(MembershipChange::Joined, -1, peer->name());
     return std::nullopt;
 }
 
@@ -117,6 +119,7 @@ std::optional<proto::Error> Room::resume(std::shared_ptr<Peer> peer) {
     }
     broadcast_room_state();
     send_to(*peer, current_keyframe());
+    notify(MembershipChange::Returned, seat);
     return std::nullopt;
 }
 
@@ -136,6 +139,7 @@ std::optional<proto::Error> Room::fill_seat(SeatSlot slot) {
     }
     *free = std::move(slot);
     free->occupied = true;
+    const int seat = static_cast<int>(free - seats_.begin());
     const bool started_now = !started_ && std::all_of(seats_.begin(), seats_.end(),
                                                       [](const SeatSlot& s) { return s.occupied; });
     if (started_now) {
@@ -148,6 +152,7 @@ std::optional<proto::Error> Room::fill_seat(SeatSlot slot) {
     if (started_now) {
         broadcast_turn();
     }
+    notify(MembershipChange::Joined, seat);
     return std::nullopt;
 }
 
@@ -158,9 +163,11 @@ void Room::leave(const Peer& peer) {
         std::erase_if(spectators_, [&](const auto& s) { return s.get() == &peer; });
         if (spectators_.size() != before) {
             broadcast_room_state();
+            notify(MembershipChange::Left, -1, peer.name());
         }
         return;
     }
+    notify(MembershipChange::Left, seat);
     if (streaming_) {
         finish_shot();
     }
@@ -186,6 +193,20 @@ void Room::disconnected(const Peer& peer) {
     slot.grace_deadline_ms = now + seconds_to_ms(config_.grace_s);
     broadcast(proto::Event{proto::PlayerDroppedEvent{seat, *slot.grace_deadline_ms, now}});
     broadcast_room_state();
+    notify(MembershipChange::Dropped, seat);
+}
+
+void Room::notify(MembershipChange change, int seat, const std::string& name) {
+    if (observer_ == nullptr) {
+        return;
+    }
+    MemberNotice notice{change, name, seat, false};
+    if (seat >= 0) {
+        const SeatSlot& slot = seats_[static_cast<std::size_t>(seat)];
+        notice.name = slot.name;
+        notice.bot = slot.bot != nullptr;
+    }
+    observer_->member(notice);
 }
 
 void Room::free_seat(int seat) {

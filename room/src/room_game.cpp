@@ -163,15 +163,22 @@ void Room::after_outcome(const rules::ShotOutcome& outcome, const rules::MatchSt
         match_ = rules::start_next_board(match_);
     }
     broadcast(to_shot_result(outcome, match_));
+    const proto::GameEndEvent* game_end = nullptr;
     for (auto& event : events) {
-        if (auto* end = std::get_if<proto::GameEndEvent>(&event); end && !reason_override.empty()) {
-            end->reason = std::string(reason_override);
+        if (auto* end = std::get_if<proto::GameEndEvent>(&event)) {
+            if (!reason_override.empty()) {
+                end->reason = std::string(reason_override);
+            }
+            game_end = end;
         }
         broadcast(event);
     }
     if (was_running && match_.phase == rules::Phase::GameOver) {
         counters_.matches.fetch_sub(1, std::memory_order_relaxed);
         counters_.matches_finished_total.fetch_add(1, std::memory_order_relaxed);
+        if (observer_ != nullptr && game_end != nullptr) {
+            observer_->game_over(*game_end);
+        }
     }
     start_turn();
     bot_turn_taken_ = -1;
@@ -246,6 +253,7 @@ void Room::check_grace(std::int64_t now_ms) {
         if (!slot.occupied || !slot.grace_deadline_ms || now_ms < *slot.grace_deadline_ms) {
             continue;
         }
+        notify(MembershipChange::Left, static_cast<int>(i)); // the grace period is over
         if (game_running()) {
             const rules::PlayResult r = rules::forfeit(match_, static_cast<int>(i));
             if (!r.error) {

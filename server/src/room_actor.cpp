@@ -8,7 +8,8 @@ namespace carrom::server {
 
 RoomActor::RoomActor(ServerCore& core, std::string code, room::RoomConfig config)
     : core_(core), code_(code), strand_(asio::make_strand(core.ioc)), timer_(strand_),
-      room_(std::move(code), std::move(config), core.clock, core.metrics) {}
+      logger_(code), room_(std::move(code), std::move(config), core.clock, core.metrics, &logger_) {
+}
 
 RoomActor::~RoomActor() = default;
 

@@ -3,6 +3,7 @@
 // hand-off of bot turns to the bot worker. The room's state is touched only on the strand.
 
 #include "asio_types.hpp"
+#include "room_logger.hpp"
 
 #include "carrom/room/room.hpp"
 
@@ -43,6 +44,7 @@ private:
     std::string code_;
     asio::strand<asio::io_context::executor_type> strand_;
     asio::steady_timer timer_;
+    RoomLogger logger_; // before room_, which reports to it
     room::Room room_;
     std::int64_t scheduled_ms_ = -1;
     bool removed_ = false;

@@ -34,7 +34,7 @@ ServerCore::create_room(proto::RuleSet rule_set, const proto::RoomOptions& optio
         [&](const std::string& code) { return std::make_shared<RoomActor>(*this, code, config); });
     if (const auto* room = std::get_if<std::shared_ptr<RoomActor>>(&created)) {
         metrics.rooms.fetch_add(1, std::memory_order_relaxed);
-        spdlog::debug("room {} created ({})", (*room)->code(), proto::to_string(rule_set));
+        spdlog::info("room {} created ({})", (*room)->code(), proto::to_string(rule_set));
     }
     return created;
 }
@@ -42,7 +42,7 @@ ServerCore::create_room(proto::RuleSet rule_set, const proto::RoomOptions& optio
 void ServerCore::remove_room(const std::string& code) {
     registry.remove_room(code);
     metrics.rooms.fetch_sub(1, std::memory_order_relaxed);
-    spdlog::debug("room {} closed", code);
+    spdlog::info("room {} closed", code);
 }
 
 } // namespace carrom::server

@@ -14,6 +14,7 @@
 #include "carrom/room/clock.hpp"
 #include "carrom/room/peer.hpp"
 #include "carrom/room/room_counters.hpp"
+#include "carrom/room/room_observer.hpp"
 #include "carrom/room/shot_stream.hpp"
 #include "carrom/rules/match.hpp"
 
@@ -42,7 +43,9 @@ rules::RulesConfig make_rules_config(proto::RuleSet rule_set, const proto::RoomO
 
 class Room {
 public:
-    Room(std::string code, RoomConfig config, const Clock& clock, RoomCounters& counters);
+    // observer: told about members and game ends (may be null).
+    Room(std::string code, RoomConfig config, const Clock& clock, RoomCounters& counters,
+         RoomObserver* observer = nullptr);
     ~Room();
     Room(const Room&) = delete;
     Room& operator=(const Room&) = delete;
@@ -122,6 +125,7 @@ private:
                        std::string_view reason_override = {});
     bool check_member_input(Peer& peer, int& seat);
     void free_seat(int seat);
+    void notify(MembershipChange change, int seat, const std::string& name = {});
     void check_grace(std::int64_t now_ms);
     void check_shot_clock(std::int64_t now_ms);
     std::optional<std::int64_t> shot_clock_deadline_ms() const;
@@ -133,6 +137,7 @@ private:
     RoomConfig config_;
     const Clock& clock_;
     RoomCounters& counters_;
+    RoomObserver* observer_;
     ExactEngine engine_;
     rules::MatchState match_;
     std::array<SeatSlot, 2> seats_{};
