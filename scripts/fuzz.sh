@@ -30,9 +30,9 @@ out="$root/build/fuzz"
 
 # The project's own CMake build, configured with clang and CARROM_FUZZ=ON (every library
 # instrumented for coverage and ASan + UBSan; tests/fuzz/fuzz.cmake adds the fuzzers).
-# Incremental after the first run. The client and the benchmarks are not needed.
+# Incremental after the first run. Only the fuzzers are built; the benchmarks are not configured.
 cmake -S "$root" -B "$out" -G Ninja -DCMAKE_CXX_COMPILER="$cxx" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-    -DCARROM_FUZZ=ON -DCARROM_BUILD_CLIENT=OFF -DCARROM_BUILD_BENCH=OFF >/dev/null
+    -DCARROM_FUZZ=ON -DCARROM_BUILD_BENCH=OFF >/dev/null
 fuzzers=()
 for t in "${targets[@]}"; do fuzzers+=("carrom_${t}_fuzzer"); done
 cmake --build "$out" --target "${fuzzers[@]}" >/dev/null

@@ -15,9 +15,7 @@
 #include "carrom/exact_engine.hpp"
 #include "carrom/result_hash.hpp"
 
-#if defined(CARROM_ENGINE_RUNS_GREEDY)
 #include "benchmark_bots.hpp"
-#endif
 
 #include <CLI/CLI.hpp>
 
@@ -65,7 +63,6 @@ int run_shots(const PhysicsConfig& config, const char* name,
     return 0;
 }
 
-#if defined(CARROM_ENGINE_RUNS_GREEDY)
 // The decisions of bench/bots_bench.cpp's BotsGreedyStandardLayout.
 int run_greedy(int decisions) {
     const rules::MatchState state = bench::standard_match();
@@ -82,7 +79,6 @@ int run_greedy(int decisions) {
                 candidates, candidates > 0 ? us / static_cast<double>(candidates) : 0.0);
     return 0;
 }
-#endif
 
 } // namespace
 
@@ -90,10 +86,8 @@ int main(int argc, char** argv) {
     CLI::App app{"carrom-engine-runs: the benchmarks' shots, for instruction counts and result "
                  "hashes (docs/physics.md)"};
     enum class Scene { Break, Random, Greedy };
-    std::map<std::string, Scene> scenes{{"break", Scene::Break}, {"random", Scene::Random}};
-#if defined(CARROM_ENGINE_RUNS_GREEDY)
-    scenes.emplace("greedy", Scene::Greedy);
-#endif
+    std::map<std::string, Scene> scenes{
+        {"break", Scene::Break}, {"random", Scene::Random}, {"greedy", Scene::Greedy}};
     Scene scene = Scene::Break;
     int runs = 1;
     app.add_option("--scene", scene,
@@ -123,11 +117,7 @@ int main(int argc, char** argv) {
         return run_shots(config, "random", shots, runs);
     }
     case Scene::Greedy:
-#if defined(CARROM_ENGINE_RUNS_GREEDY)
         return run_greedy(runs);
-#else
-        break;
-#endif
     }
     return 2;
 }

@@ -1,6 +1,5 @@
 #pragma once
-// The factory for real network links (WebSocket, from net/). Builds without net/ get links that
-// close at once and say so.
+// The factory for real network links (WebSocket, net::Connection from net/).
 
 #include "carrom/client/connection.hpp"
 

@@ -1,12 +1,11 @@
 #include "carrom/client/demo_link.hpp"
 
 #include "carrom/proto/codec.hpp"
-#include "carrom/scene.hpp"
-#include "carrom/trajectory.hpp"
+#include "carrom/proto/types.hpp"
+#include "carrom/proto/version.hpp"
 
-#include <algorithm>
 #include <cmath>
-#include <numbers>
+#include <string>
 
 namespace carrom::client {
 namespace {
@@ -14,384 +13,203 @@ namespace {
 template <class... F> struct Overloaded : F... { using F::operator()...; };
 template <class... F> Overloaded(F...) -> Overloaded<F...>;
 
-proto::QueenInfo queen_info(const rules::QueenState& q) {
-    switch (q.status) {
-    case rules::QueenStatus::PendingCover:
-        return {proto::QueenState::Pending, q.seat};
-    case rules::QueenStatus::Covered:
-        return {proto::QueenState::Covered, q.seat};
-    case rules::QueenStatus::OutOfPlay:
-        return {proto::QueenState::None, -1};
-    case rules::QueenStatus::OnBoard:
-        break;
-    }
-    return {proto::QueenState::OnBoard, -1};
-}
-
-proto::Phase phase_of(const rules::MatchState& m, bool moving) {
-    if (moving) {
-        return proto::Phase::Moving;
-    }
-    switch (m.phase) {
-    case rules::Phase::AwaitingShot:
-        return proto::Phase::Aiming;
-    case rules::Phase::BoardOver:
-        return proto::Phase::BoardOver;
-    case rules::Phase::GameOver:
-        return proto::Phase::GameOver;
-    }
-    return proto::Phase::Aiming;
-}
-
-std::string sentence_for(rules::RuleCode code) {
-    std::string text(rules::to_string(code));
-    std::replace(text.begin(), text.end(), '_', ' ');
-    if (!text.empty()) {
-        text[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(text[0])));
-    }
-    return text;
-}
-
-Baseline baseline_of(int seat) {
-    return seat == 0 ? Baseline::Bottom : Baseline::Top;
-}
+constexpr std::int64_t kPlayerId = 1;
+constexpr const char* kToken = "0123456789abcdef0123456789abcdef";
+constexpr const char* kRoomCode = "DEMXYZ"; // a valid room code (no 0, O, 1, I, L)
 
 } // namespace
 
+// The room's clock: the local clock in ms, shifted by the configured offset.
+class DemoLink::LocalClock final : public room::Clock {
+public:
+    LocalClock(std::function<double()> seconds, std::int64_t offset_ms)
+        : seconds_(std::move(seconds)), offset_ms_(offset_ms) {}
+    std::int64_t now_ms() const override { return to_ms(seconds_()); }
+    std::int64_t to_ms(double s) const {
+        return static_cast<std::int64_t>(std::llround(s * 1000.0)) + offset_ms_;
+    }
+    double seconds() const { return seconds_(); }
+
+private:
+    std::function<double()> seconds_;
+    std::int64_t offset_ms_;
+};
+
+// The player's end of the room: every message it receives is decoded as a client decodes a
+// frame from the network, and waits in the inbox until the next poll.
+class DemoLink::LocalPeer final : public room::Peer {
+public:
+    explicit LocalPeer(std::string name) : name_(std::move(name)) {}
+
+    std::int64_t player_id() const override { return kPlayerId; }
+    const std::string& name() const override { return name_; }
+    void send(room::Outgoing message) override {
+        auto decoded = proto::decode_server(*message.text);
+        if (decoded.ok()) {
+            inbox.push_back(std::move(*decoded.message));
+        } else {
+            ++unreadable;
+        }
+    }
+    bool take_keyframe_request() override { return false; } // nothing is ever dropped
+    void close(int, std::string) override { closed = true; }
+
+    void rename(std::string name) { name_ = std::move(name); }
+
+    std::vector<proto::ServerMessage> inbox;
+    int unreadable = 0; // messages that did not decode (a bug in the room or the codec)
+    bool closed = false;
+
+private:
+    std::string name_;
+};
+
 DemoLink::DemoLink(const PhysicsConfig& physics, std::function<double()> clock,
                    const DemoConfig& config)
-    : physics_(physics), clock_(std::move(clock)), config_(config), engine_(physics) {}
+    : physics_(physics), config_(config),
+      clock_(std::make_unique<LocalClock>(std::move(clock), config.server_clock_offset_ms)),
+      peer_(std::make_shared<LocalPeer>("Player")) {}
 
-std::int64_t DemoLink::server_ms(double now_s) const {
-    return static_cast<std::int64_t>(std::llround(now_s * 1000.0)) + config_.server_clock_offset_ms;
-}
+DemoLink::~DemoLink() = default;
 
 LinkStatus DemoLink::status() const {
-    return open_ ? LinkStatus{LinkState::Open, "Offline demo"}
-                 : LinkStatus{LinkState::Closed, "The demo ended"};
+    LinkStatus status = open_ && !peer_->closed ? LinkStatus{LinkState::Open, "Offline demo"}
+                                                : LinkStatus{LinkState::Closed, "The demo ended"};
+    if (peer_->unreadable > 0) {
+        status.detail += "; " + std::to_string(peer_->unreadable) +
+                         " messages could not be read and were ignored.";
+    }
+    return status;
 }
 
 void DemoLink::close() {
     open_ = false;
 }
 
+void DemoLink::answer(const proto::ServerMessage& message) {
+    peer_->send(
+        {std::make_shared<const std::string>(proto::encode(message)), room::MessageKind::Normal});
+}
+
 void DemoLink::send(const proto::ClientMessage& message) {
     if (!open_) {
         return;
     }
-    const double now = clock_();
+    const double now = clock_->seconds();
+    auto enter = [&](proto::RuleSet rule_set, const proto::RoomOptions& options) {
+        if (room_) {
+            answer(
+                proto::Error{std::string(proto::code::kAlreadyInRoom), "Leave this room first."});
+        } else {
+            open_room(rule_set, options, now);
+        }
+    };
     std::visit(Overloaded{
                    [&](const proto::Hello& h) {
-                       player_name_ = h.name;
-                       outbox_.push_back(proto::Welcome{proto::kProtocolVersion, 1,
-                                                        "0123456789abcdef0123456789abcdef",
-                                                        server_ms(now)});
+                       if (proto::is_player_name(h.name)) {
+                           peer_->rename(h.name);
+                       }
+                       answer(proto::Welcome{proto::kProtocolVersion, kPlayerId, kToken,
+                                             clock_->to_ms(now)});
                    },
-                   [&](const proto::CreateRoom&) { open_room(now); },
-                   [&](const proto::JoinRoom&) { open_room(now); },
-                   [&](const proto::QuickMatch&) { open_room(now); },
-                   [&](const proto::Aim&) {},
+                   [&](const proto::CreateRoom& c) { enter(c.rule_set, c.options); },
+                   [&](const proto::JoinRoom&) { enter(proto::RuleSet::Icf, {}); },
+                   [&](const proto::QuickMatch& q) { enter(q.rule_set, {}); },
+                   [&](const proto::Aim& a) {
+                       if (room_) {
+                           room_->aim(*peer_, a);
+                       }
+                   },
                    [&](const proto::Shoot& s) {
-                       if (!in_room_ || streaming_ || match_.phase != rules::Phase::AwaitingShot) {
-                           outbox_.push_back(proto::Error{std::string(proto::code::kInMotion),
-                                                          "Wait until the pieces stop."});
-                       } else if (match_.turn_seat != 0) {
-                           outbox_.push_back(proto::Error{std::string(proto::code::kNotYourTurn),
-                                                          "It is not your turn."});
-                       } else if (s.turn != match_.turn_number) {
-                           outbox_.push_back(proto::Error{std::string(proto::code::kStaleTurn),
-                                                          "That shot was for another turn."});
-                       } else {
-                           start_shot(0, Shot{s.x_px, s.angle_rad, s.power}, now);
+                       if (room_) {
+                           room_->shoot(*peer_, s);
                        }
                    },
                    [&](const proto::Rematch&) {
-                       if (match_.phase == rules::Phase::GameOver) {
-                           open_room(now);
+                       if (room_) {
+                           room_->rematch(*peer_);
                        }
                    },
-                   [&](const proto::Leave&) { open_ = false; },
+                   [&](const proto::Leave&) {
+                       if (room_) {
+                           room_->leave(*peer_);
+                           room_.reset();
+                       }
+                       open_ = false;
+                   },
                    [&](const proto::Ping& p) {
-                       outbox_.push_back(proto::Pong{p.nonce, server_ms(now)});
+                       answer(proto::Pong{p.nonce, clock_->to_ms(now)});
                    },
                },
                message);
+    note_turn(now);
 }
 
 std::vector<proto::ServerMessage> DemoLink::poll() {
     if (open_) {
-        advance(clock_());
+        advance(clock_->seconds());
     }
-    std::vector<proto::ServerMessage> out(outbox_.begin(), outbox_.end());
-    outbox_.clear();
+    std::vector<proto::ServerMessage> out = std::move(peer_->inbox);
+    peer_->inbox.clear();
     return out;
 }
 
-void DemoLink::open_room(double now_s) {
-    rules::RulesConfig rules;
-    rules.first_breaker = 1;
-    rules.shot_clock_s = config_.shot_clock_s;
-    match_ = rules::new_match(rules::RuleSet::Icf, rules, physics_);
-    in_room_ = true;
-    streaming_.reset();
-    turn_started_s_ = now_s;
-    outbox_.push_back(room_state(now_s));
-    outbox_.push_back(proto::Event{turn_event(now_s)});
+void DemoLink::open_room(proto::RuleSet rule_set, const proto::RoomOptions& options, double now_s) {
+    room::RoomConfig config;
+    config.rule_set = rule_set;
+    config.rules = room::make_rules_config(rule_set, options, config_.shot_clock_s);
+    config.rules.first_breaker = 1; // the opponent breaks
+    config.physics = physics_;
+    config.snapshot_hz = config_.snapshot_hz;
+    room_ = std::make_unique<room::Room>(kRoomCode, config, *clock_, counters_);
+    // Both seats fill here, so neither call can fail: the player takes seat 0, the opponent 1.
+    (void)room_->join(peer_, proto::Role::Player);
+    (void)room_->seat_bot("Demo bot", opponent_);
+    first_break_ = true;
+    turn_seen_ = -1;
+    bot_turn_.reset();
+    note_turn(now_s);
 }
 
-proto::RoomState DemoLink::room_state(double now_s) const {
-    proto::RoomState r;
-    r.code = "DEMXYZ"; // a valid room code (no 0, O, 1, I, L)
-    r.you = 0;
-    r.rule_set = proto::RuleSet::Icf;
-    r.options = {match_.config.target_points, match_.config.max_boards, config_.shot_clock_s};
-    for (int seat = 0; seat < 2; ++seat) {
-        proto::SeatInfo s;
-        s.occupied = true;
-        s.name = seat == 0 ? player_name_ : "Demo bot";
-        s.connected = true;
-        s.bot = seat == 1;
-        const auto colour = rules::team_colour(match_, seat);
-        s.colour = !colour                      ? proto::Colour::None
-                   : *colour == BodyKind::White ? proto::Colour::White
-                                                : proto::Colour::Black;
-        s.baseline = baseline_of(seat);
-        r.seats.push_back(s);
+void DemoLink::note_turn(double now_s) {
+    if (room_ && room_->phase() == proto::Phase::Aiming &&
+        room_->match().turn_number != turn_seen_) {
+        turn_seen_ = room_->match().turn_number;
+        turn_seen_at_s_ = now_s;
     }
-    r.scores = match_.scores;
-    r.dues = match_.dues_owed;
-    r.board_number = match_.board;
-    r.turn = match_.turn_number;
-    r.to_play = match_.turn_seat;
-    if (config_.shot_clock_s > 0.0) {
-        r.shot_clock_deadline_ms = server_ms(turn_started_s_ + config_.shot_clock_s);
-    }
-    r.server_time_ms = server_ms(now_s);
-    r.phase = phase_of(match_, streaming_.has_value());
-    r.queen = queen_info(match_.queen);
-    r.winner = match_.result && match_.result->winner_team ? *match_.result->winner_team : -1;
-    for (const Body& b : match_.bodies) {
-        r.bodies.push_back(proto::to_board_body(b));
-    }
-    return r;
-}
-
-proto::TurnEvent DemoLink::turn_event(double now_s) const {
-    proto::TurnEvent e;
-    e.turn = match_.turn_number;
-    e.seat = match_.turn_seat;
-    if (config_.shot_clock_s > 0.0) {
-        e.deadline_ms = server_ms(turn_started_s_ + config_.shot_clock_s);
-    }
-    e.server_time_ms = server_ms(now_s);
-    return e;
-}
-
-Shot DemoLink::demo_shot(int seat) const {
-    const Baseline side = baseline_of(seat);
-    const double by = baseline_y(physics_, side);
-    if (match_.strokes_this_board == 0) {
-        const double down = side == Baseline::Top ? 1.0 : -1.0;
-        return {physics_.centre().x, down * std::numbers::pi / 2.0, physics_.max_power};
-    }
-    // Aim straight at the first coin on the board, from a free spot on the baseline.
-    const auto colour = rules::team_colour(match_, seat);
-    Vec2 target = physics_.centre();
-    for (const Body& b : match_.bodies) {
-        if (!b.pocketed && (!colour || b.kind == *colour)) {
-            target = b.pos_px;
-            break;
-        }
-    }
-    const double lo = baseline_x_min(physics_);
-    const double hi = baseline_x_max(physics_);
-    double x = std::clamp(target.x, lo, hi);
-    for (int step = 0; step < 20; ++step) {
-        const Vec2 s{x, by};
-        const bool free =
-            std::none_of(match_.bodies.begin(), match_.bodies.end(), [&](const Body& b) {
-                const double d = physics_.striker_radius_px + physics_.coin_radius_px;
-                return !b.pocketed && length_squared(b.pos_px - s) < d * d;
-            });
-        if (free) {
-            break;
-        }
-        x = x + 40.0 > hi ? lo + std::fmod(x + 40.0 - lo, hi - lo) : x + 40.0;
-    }
-    return {x, std::atan2(target.y - by, target.x - x), 0.6 * physics_.max_power};
 }
 
 void DemoLink::advance(double now_s) {
-    if (!in_room_) {
+    if (!room_) {
         return;
     }
-    if (streaming_) {
-        stream(now_s);
+    room_->tick();
+    note_turn(now_s);
+    if (!bot_turn_) {
+        bot_turn_ = room_->take_bot_turn();
+    }
+    const rules::MatchState& match = room_->match();
+    const double waited = now_s - turn_seen_at_s_;
+    if (bot_turn_) {
+        if (bot_turn_->turn != match.turn_number) {
+            bot_turn_.reset(); // the shot clock passed that turn on
+        } else if (waited >= (first_break_ ? config_.first_shot_at_s : config_.opponent_think_s)) {
+            const room::BotTurn turn = std::move(*bot_turn_);
+            bot_turn_.reset();
+            first_break_ = false;
+            const Shot shot = turn.brain->choose_shot(turn.state, turn.seat, {});
+            // Refused only when no spot on the baseline is free: the shot clock passes the turn.
+            (void)room_->bot_shoot(turn.seat, turn.turn, shot);
+        }
         return;
     }
-    if (match_.phase == rules::Phase::BoardOver) {
-        match_ = rules::start_next_board(match_);
-        turn_started_s_ = now_s;
-        outbox_.push_back(room_state(now_s));
-        outbox_.push_back(proto::Event{turn_event(now_s)});
-        return;
+    const int seat = room_->seat_of(*peer_);
+    if (config_.autoplay_after_s >= 0.0 && room_->phase() == proto::Phase::Aiming &&
+        match.turn_seat == seat && waited >= config_.autoplay_after_s) {
+        const Shot shot = DemoOpponent::shot_for(match, seat);
+        room_->shoot(*peer_,
+                     proto::Shoot{match.turn_number, shot.x_px, shot.angle_rad, shot.power});
     }
-    if (match_.phase != rules::Phase::AwaitingShot) {
-        return;
-    }
-    const double waited = now_s - turn_started_s_;
-    if (match_.turn_seat != 0) {
-        const double wait =
-            match_.turn_number == 0 ? config_.first_shot_at_s : config_.opponent_think_s;
-        if (waited >= wait) {
-            start_shot(match_.turn_seat, demo_shot(match_.turn_seat), now_s);
-        }
-    } else if (config_.autoplay_after_s >= 0.0 && waited >= config_.autoplay_after_s) {
-        start_shot(0, demo_shot(0), now_s);
-    }
-}
-
-void DemoLink::start_shot(int seat, const Shot& shot, double now_s) {
-    rules::PlayOptions options;
-    options.record_trajectory = true;
-    rules::PlayResult play = rules::play_shot(match_, seat, shot, engine_, options);
-    if (play.error) {
-        outbox_.push_back(
-            proto::Error{std::string(proto::code::kIllegalPlacement), play.error->message});
-        return;
-    }
-    Streaming s;
-    s.start_s = now_s;
-    s.turn = match_.turn_number;
-    s.last_sent = play.outcome.physics.trajectory.initial;
-    s.play = std::move(play);
-    streaming_ = std::move(s);
-    stream(now_s);
-}
-
-void DemoLink::stream(double now_s) {
-    Streaming& s = *streaming_;
-    const SimResult& sim = s.play.outcome.physics;
-    const double elapsed = now_s - s.start_s;
-    for (;;) {
-        const double t = static_cast<double>(s.next_frame) / config_.snapshot_hz;
-        if (t > elapsed || t >= sim.end_time_s) {
-            break;
-        }
-        for (; s.next_event < sim.events.size() && sim.events[s.next_event].t_s <= t;
-             ++s.next_event) {
-            const Event& e = sim.events[s.next_event];
-            if (e.kind == EventKind::Collision) {
-                outbox_.push_back(
-                    proto::Event{proto::CollisionEvent{s.turn, e.t_s, e.a, e.b, e.impulse}});
-            } else if (e.kind == EventKind::Cushion) {
-                outbox_.push_back(
-                    proto::Event{proto::CushionEvent{s.turn, e.t_s, e.a, e.b, e.impulse}});
-            } else if (e.kind == EventKind::Pocket) {
-                outbox_.push_back(proto::Event{proto::PocketEvent{s.turn, e.t_s, e.a, e.b}});
-            }
-        }
-        const std::vector<Body> now = state_at(physics_, sim.trajectory, t);
-        proto::Snapshot snap;
-        snap.seq = ++seq_;
-        snap.turn = s.turn;
-        snap.t_s = t;
-        for (std::size_t i = 0; i < now.size(); ++i) {
-            const Body& b = now[i];
-            const Body& before = s.last_sent[i];
-            if (b.pocketed && !before.pocketed) {
-                snap.pocketed.push_back(b.id);
-            } else if (!b.pocketed && (b.pos_px != before.pos_px || b.vel_px_s != before.vel_px_s ||
-                                       s.next_frame == 0)) {
-                snap.bodies.push_back(
-                    {b.id,
-                     {proto::quantise(b.pos_px.x), proto::quantise(b.pos_px.y)},
-                     {proto::quantise(b.vel_px_s.x), proto::quantise(b.vel_px_s.y)}});
-            }
-        }
-        s.last_sent = now;
-        outbox_.push_back(std::move(snap));
-        ++s.next_frame;
-    }
-    if (elapsed >= sim.end_time_s) {
-        finish_shot(now_s);
-    }
-}
-
-void DemoLink::finish_shot(double now_s) {
-    Streaming s = std::move(*streaming_);
-    streaming_.reset();
-    const SimResult& sim = s.play.outcome.physics;
-    proto::Snapshot key;
-    key.seq = ++seq_;
-    key.turn = s.turn;
-    key.t_s = sim.end_time_s;
-    key.keyframe = true;
-    for (const Body& b : sim.bodies) {
-        if (b.pocketed) {
-            key.pocketed.push_back(b.id);
-        } else {
-            key.bodies.push_back({b.id, b.pos_px, {}});
-        }
-    }
-    outbox_.push_back(std::move(key));
-    const rules::ShotOutcome& o = s.play.outcome;
-    const rules::QueenState queen_before = match_.queen;
-    const std::vector<int> dues_before = match_.dues_owed;
-    match_ = s.play.state;
-    for (const rules::Foul& f : o.fouls) {
-        outbox_.push_back(proto::Event{
-            proto::FoulEvent{f.seat, std::string(rules::to_string(f.code)), sentence_for(f.code)}});
-    }
-    if (queen_info(queen_before) != queen_info(match_.queen)) {
-        outbox_.push_back(proto::Event{proto::QueenEvent{queen_info(match_.queen)}});
-    }
-    for (std::size_t team = 0; team < match_.dues_owed.size(); ++team) {
-        if (team >= dues_before.size() || dues_before[team] != match_.dues_owed[team]) {
-            outbox_.push_back(
-                proto::Event{proto::DueEvent{static_cast<int>(team), match_.dues_owed[team]}});
-        }
-    }
-    proto::ShotResult r;
-    r.turn = o.turn_number;
-    r.seat = o.seat;
-    r.x_px = o.shot.x_px;
-    r.angle_rad = o.shot.angle_rad;
-    r.power = o.shot.power;
-    r.pocketed = o.pocketed;
-    if (o.striker_pocketed) {
-        r.pocketed.push_back(kStrikerId);
-    }
-    for (const rules::ReturnedPiece& p : o.returned) {
-        r.returned.push_back(p.id);
-    }
-    for (const rules::Foul& f : o.fouls) {
-        r.fouls.push_back({std::string(rules::to_string(f.code)), sentence_for(f.code)});
-    }
-    r.points = o.score_changes;
-    r.scores = match_.scores;
-    r.dues = match_.dues_owed;
-    r.queen = queen_info(match_.queen);
-    r.extra_turn = o.extra_stroke;
-    r.next_turn = match_.turn_number;
-    r.next_seat = match_.turn_seat;
-    r.board_over = o.board_end.has_value();
-    r.game_over = o.game_end.has_value();
-    r.winner = o.game_end && o.game_end->winner_team ? *o.game_end->winner_team : -1;
-    outbox_.push_back(r);
-    turn_started_s_ = now_s;
-    if (o.board_end) {
-        outbox_.push_back(proto::Event{proto::BoardEndEvent{o.board_end->board,
-                                                            o.board_end->winner_team.value_or(-1),
-                                                            o.board_end->points, match_.scores}});
-    }
-    if (o.game_end) {
-        outbox_.push_back(proto::Event{
-            proto::GameEndEvent{o.game_end->winner_team.value_or(-1), "score", match_.scores}});
-    } else if (match_.phase == rules::Phase::AwaitingShot) {
-        outbox_.push_back(proto::Event{turn_event(now_s)});
-    }
-    outbox_.push_back(room_state(now_s));
 }
 
 } // namespace carrom::client

@@ -31,7 +31,7 @@ std::optional<bots::SkillLevel> skill_of(proto::BotLevel level) {
 constexpr std::chrono::milliseconds kLeastThink{10};
 
 // A strategy behind a mutex: the server may call a brain from any worker thread, one at a time.
-class StrategyBrain final : public BotBrain {
+class StrategyBrain final : public room::BotBrain {
 public:
     StrategyBrain(std::unique_ptr<bots::Strategy> strategy, std::chrono::milliseconds think)
         : strategy_(std::move(strategy)), budget_{think, bots::DecisionBudget{}.max_candidates} {}
@@ -65,7 +65,7 @@ private:
 
 BotFactory make_strategy_bot_factory(std::uint64_t seed, std::chrono::milliseconds think) {
     auto next_seed = std::make_shared<std::atomic<std::uint64_t>>(seed);
-    return [next_seed, think](proto::BotLevel level) -> std::shared_ptr<BotBrain> {
+    return [next_seed, think](proto::BotLevel level) -> std::shared_ptr<room::BotBrain> {
         const std::uint64_t bot_seed = next_seed->fetch_add(1);
         std::unique_ptr<bots::Strategy> strategy;
         if (const auto skill = skill_of(level)) {

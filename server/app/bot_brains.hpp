@@ -1,10 +1,10 @@
 #pragma once
 // Server-side bot seats for carrom-server: a BotFactory whose brains are the strategies of
-// bots/ (carrom_bots_lib). Level "random" plays random legal shots; "easy", "medium" and "hard"
+// bots/ (carrom_bots). Level "random" plays random legal shots; "easy", "medium" and "hard"
 // are the greedy search strategy with that level's execution noise (docs/bots.md), each
 // decision within think_ms of wall time.
 
-#include "carrom/server/bot_seat.hpp"
+#include "carrom/server/bot_factory.hpp"
 
 #include <chrono>
 #include <cstdint>

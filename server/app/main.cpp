@@ -21,7 +21,7 @@ int main(int argc, char** argv) {
     app.option_defaults()->always_capture_default();
     app.add_option("--host", s.host, "Address to listen on (0.0.0.0 serves other machines)")
         ->envname("CARROM_HOST");
-    app.add_option("--port", s.port, "Port (0 = ephemeral; the bound port is printed)")
+    app.add_option("--port", s.port, "Port (0 = ephemeral; the bound port is printed either way)")
         ->envname("CARROM_PORT");
     app.add_option("--threads", s.threads, "I/O threads")
         ->envname("CARROM_THREADS")

@@ -5,32 +5,32 @@ namespace carrom::server {
 WriteQueue::WriteQueue(std::size_t max_bytes, std::size_t snapshot_backlog, std::size_t cue_backlog)
     : max_bytes_(max_bytes), snapshot_backlog_(snapshot_backlog), cue_backlog_(cue_backlog) {}
 
-std::size_t WriteQueue::in_flight(MessageKind kind) const {
+std::size_t WriteQueue::in_flight(room::MessageKind kind) const {
     return writing_ && !queue_.empty() && queue_.front().kind == kind ? 1U : 0U;
 }
 
-void WriteQueue::count(MessageKind kind, bool added) {
-    if (kind == MessageKind::Normal) {
+void WriteQueue::count(room::MessageKind kind, bool added) {
+    if (kind == room::MessageKind::Normal) {
         return;
     }
-    std::size_t& counter = kind == MessageKind::Snapshot ? snapshots_ : cues_;
+    std::size_t& counter = kind == room::MessageKind::Snapshot ? snapshots_ : cues_;
     counter = added ? counter + 1 : counter - 1;
 }
 
 std::size_t WriteQueue::waiting_snapshots() const {
-    return snapshots_ - in_flight(MessageKind::Snapshot);
+    return snapshots_ - in_flight(room::MessageKind::Snapshot);
 }
 
 std::size_t WriteQueue::waiting_cues() const {
-    return cues_ - in_flight(MessageKind::Cue);
+    return cues_ - in_flight(room::MessageKind::Cue);
 }
 
-WriteQueue::Push WriteQueue::push(Outgoing message) {
+WriteQueue::Push WriteQueue::push(room::Outgoing message) {
     const bool behind = waiting_snapshots() >= snapshot_backlog_;
-    if (message.kind == MessageKind::Snapshot && behind) {
+    if (message.kind == room::MessageKind::Snapshot && behind) {
         return Push::DroppedSnapshot;
     }
-    if (message.kind == MessageKind::Cue && (behind || waiting_cues() >= cue_backlog_)) {
+    if (message.kind == room::MessageKind::Cue && (behind || waiting_cues() >= cue_backlog_)) {
         return Push::DroppedCue;
     }
     const std::size_t size = message.text ? message.text->size() : 0;
@@ -43,7 +43,7 @@ WriteQueue::Push WriteQueue::push(Outgoing message) {
     return Push::Queued;
 }
 
-std::optional<Outgoing> WriteQueue::start_write() {
+std::optional<room::Outgoing> WriteQueue::start_write() {
     if (writing_ || queue_.empty()) {
         return std::nullopt;
     }

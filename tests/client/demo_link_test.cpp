@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <optional>
 
 namespace carrom::client {
 namespace {
@@ -25,12 +26,23 @@ TEST(DemoLink, SpeaksTheProtocol) {
     EXPECT_EQ(h.link.status().state, LinkState::Open);
     h.link.send(proto::Hello{proto::kProtocolVersion, "Ana", std::nullopt});
     h.link.send(proto::CreateRoom{});
+    // As from a server: welcome; the room with the player alone and the board; the room with
+    // both seats taken; the first turn, the opponent's break.
     auto first = h.link.poll();
-    ASSERT_EQ(first.size(), 3u);
+    ASSERT_EQ(first.size(), 5u);
     EXPECT_TRUE(std::holds_alternative<proto::Welcome>(first[0]));
     ASSERT_TRUE(std::holds_alternative<proto::RoomState>(first[1]));
-    EXPECT_EQ(std::get<proto::RoomState>(first[1]).seats[0].name, "Ana");
-    EXPECT_EQ(std::get<proto::RoomState>(first[1]).to_play, 1); // the demo opponent breaks
+    EXPECT_EQ(std::get<proto::RoomState>(first[1]).phase, proto::Phase::Waiting);
+    ASSERT_TRUE(std::holds_alternative<proto::Snapshot>(first[2]));
+    EXPECT_TRUE(std::get<proto::Snapshot>(first[2]).keyframe);
+    ASSERT_TRUE(std::holds_alternative<proto::RoomState>(first[3]));
+    const auto& room = std::get<proto::RoomState>(first[3]);
+    EXPECT_EQ(room.you, 0);
+    EXPECT_EQ(room.seats[0].name, "Ana");
+    EXPECT_TRUE(room.seats[1].bot);
+    EXPECT_EQ(room.to_play, 1); // the demo opponent breaks
+    ASSERT_TRUE(std::holds_alternative<proto::Event>(first[4]));
+    EXPECT_EQ(std::get<proto::TurnEvent>(std::get<proto::Event>(first[4])).seat, 1);
     // Every message the demo sends survives the real codec, so it is valid protocol.
     int snapshots = 0;
     int results = 0;
@@ -85,6 +97,49 @@ TEST(DemoLink, FeedsTheMatchModelToTheEndOfTheBreak) {
     }
     EXPECT_TRUE(saw_moving);
     EXPECT_GE(model.view().turn, 1);
+}
+
+// The demo plays the server's own room: snapshot values are quantised to 0.01 as on the wire,
+// shot results carry one score per seat, and a player who lets the shot clock run out three
+// times loses with the reason "clock".
+TEST(DemoLink, PlaysTheServersRoom) {
+    DemoHarness h;
+    h.config.first_shot_at_s = 0.1;
+    h.config.opponent_think_s = 0.1;
+    h.config.shot_clock_s = 1.0;
+    h.config.autoplay_after_s = -1.0; // the player never shoots
+    DemoLink link{PhysicsConfig{}, [&h] { return h.now; }, h.config};
+    link.send(proto::Hello{proto::kProtocolVersion, "Ana", std::nullopt});
+    link.send(proto::CreateRoom{});
+    std::optional<proto::GameEndEvent> end;
+    int results = 0;
+    int deltas = 0;
+    for (int frame = 0; frame < 60 * 600 && !end; ++frame) {
+        h.now = frame / 60.0;
+        for (const proto::ServerMessage& m : link.poll()) {
+            if (const auto* s = std::get_if<proto::Snapshot>(&m)) {
+                for (const proto::SnapshotBody& b : s->bodies) {
+                    for (const double v : {b.pos_px.x, b.pos_px.y, b.vel_px_s.x, b.vel_px_s.y}) {
+                        ASSERT_EQ(v, proto::quantise(v));
+                    }
+                }
+                deltas += s->keyframe ? 0 : 1;
+            } else if (const auto* r = std::get_if<proto::ShotResult>(&m)) {
+                EXPECT_EQ(r->scores.size(), 2u);
+                EXPECT_EQ(r->points.size(), 2u);
+                ++results;
+            } else if (const auto* e = std::get_if<proto::Event>(&m)) {
+                if (const auto* g = std::get_if<proto::GameEndEvent>(e)) {
+                    end = *g;
+                }
+            }
+        }
+    }
+    ASSERT_TRUE(end.has_value());
+    EXPECT_EQ(end->reason, "clock");
+    EXPECT_EQ(end->winner, 1);
+    EXPECT_GE(results, 4); // the opponent's strokes and the player's three expiries
+    EXPECT_GT(deltas, 0);
 }
 
 TEST(DemoLink, LeaveClosesTheLink) {

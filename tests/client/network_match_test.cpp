@@ -6,8 +6,6 @@
 // against the report (frame and surface colours, every piece's colour at its place). Every wait
 // has a deadline; the children are ended with their process groups.
 
-#if defined(CARROM_CLIENT_PATH) && defined(CARROM_SERVER_PATH) && defined(CARROM_BOT_PATH)
-
 #include "carrom/client/screen_mapping.hpp"
 #include "carrom/config.hpp"
 #include "carrom/net/connection.hpp"
@@ -301,5 +299,3 @@ TEST(NetworkMatch, ClientShowsTheBoardTheServerReportsAfterABotShot) {
 
 } // namespace
 } // namespace carrom::client
-
-#endif

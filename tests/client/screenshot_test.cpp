@@ -2,8 +2,6 @@
 // the playing surface, a pocket and pieces of the starting layout at their places. Under CI the
 // whole ctest runs inside xvfb-run; without a DISPLAY the test starts its own xvfb-run.
 
-#ifdef CARROM_CLIENT_PATH
-
 #include "carrom/client/screen_mapping.hpp"
 
 #include <SFML/Graphics/Image.hpp>
@@ -77,5 +75,3 @@ TEST(Screenshot, DemoShowsTheBoardAndTheStartingLayout) {
 
 } // namespace
 } // namespace carrom::client
-
-#endif

@@ -114,7 +114,7 @@ void check_pieces(const MatchState& m) {
 }
 
 void check_after(const MatchState& before, const PlayResult& r, Ledger& ledger) {
-    ASSERT_FALSE(r.error.has_value()) << r.error->code << ": " << r.error->message;
+    ASSERT_FALSE(r.error.has_value()) << to_string(r.error->code) << ": " << r.error->message;
     const MatchState& m = r.state;
     ASSERT_EQ(m.turn_number, before.turn_number + 1);
     const int team = team_of(before, r.outcome.seat);

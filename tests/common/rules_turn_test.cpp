@@ -69,7 +69,7 @@ TEST(RulesConfigCheck, EachBadFieldIsNamed) {
     EXPECT_EQ(validate_rules_config(c)->field, "shot_clock_s");
     c = {};
     c.target_points = 0;
-    EXPECT_EQ(validate_rules_config(c)->code, "invalid_config");
+    EXPECT_EQ(validate_rules_config(c)->code, RuleErrorCode::InvalidConfig);
     EXPECT_EQ(validate_rules_config(c)->field, "target_points");
     c = {};
     c.freestyle.black = -1;
@@ -132,14 +132,38 @@ TEST(RulesSeats, DoublesStrikerSitsOnTheSideBaselines) {
 TEST(RulesTurn, TurnChecksExplainThemselves) {
     const MatchState m = test::match(RuleSet::Icf);
     EXPECT_FALSE(check_turn(m, 0).has_value());
-    EXPECT_EQ(check_turn(m, 1)->code, "not_your_turn");
-    EXPECT_EQ(check_turn(m, 2)->code, "invalid_seat");
-    EXPECT_EQ(check_turn(m, -1)->code, "invalid_seat");
+    EXPECT_EQ(check_turn(m, 1)->code, RuleErrorCode::NotYourTurn);
+    EXPECT_EQ(check_turn(m, 2)->code, RuleErrorCode::InvalidSeat);
+    EXPECT_EQ(check_turn(m, -1)->code, RuleErrorCode::InvalidSeat);
     MatchState over = m;
     over.phase = Phase::BoardOver;
-    EXPECT_EQ(check_turn(over, 0)->code, "board_over");
+    EXPECT_EQ(check_turn(over, 0)->code, RuleErrorCode::BoardOver);
     over.phase = Phase::GameOver;
-    EXPECT_EQ(check_turn(over, 0)->code, "game_over");
+    EXPECT_EQ(check_turn(over, 0)->code, RuleErrorCode::GameOver);
+}
+
+TEST(RulesTurn, AnInputForAnotherTurnIsStale) {
+    MatchState m = test::match(RuleSet::Icf);
+    m.turn_number = 4;
+    EXPECT_FALSE(check_turn(m, 0, 4).has_value());
+    const auto stale = check_turn(m, 0, 3);
+    ASSERT_TRUE(stale.has_value());
+    EXPECT_EQ(stale->code, RuleErrorCode::StaleTurn);
+    EXPECT_EQ(stale->message, "That input was for turn 3; the turn is 4.");
+    // Whose turn it is comes first: the other seat is told so, whatever turn it names.
+    EXPECT_EQ(check_turn(m, 1, 3)->code, RuleErrorCode::NotYourTurn);
+    EXPECT_EQ(check_turn(m, 1, 3)->message, "It is seat 0's turn.");
+}
+
+TEST(RulesTurn, RuleErrorCodesHaveStableNames) {
+    EXPECT_EQ(to_string(RuleErrorCode::InvalidSeat), "invalid_seat");
+    EXPECT_EQ(to_string(RuleErrorCode::NotYourTurn), "not_your_turn");
+    EXPECT_EQ(to_string(RuleErrorCode::StaleTurn), "stale_turn");
+    EXPECT_EQ(to_string(RuleErrorCode::StrikerOverlaps), "striker_overlaps");
+    EXPECT_EQ(to_string(RuleErrorCode::PowerOutOfRange), "power_out_of_range");
+    EXPECT_EQ(to_string(RuleErrorCode::PhysicsError), "physics_error");
+    EXPECT_EQ(to_string(RuleErrorCode::InvalidConfig), "invalid_config");
+    EXPECT_EQ(to_string(RuleErrorCode::WrongPhase), "wrong_phase");
 }
 
 TEST(RulesPlacement, LegalShotPasses) {
@@ -153,18 +177,18 @@ TEST(RulesPlacement, IllegalPlacementsAreRejectedWithAReason) {
     MatchState m = test::match(RuleSet::Icf);
     const double nan = std::numeric_limits<double>::quiet_NaN();
     const double inf = std::numeric_limits<double>::infinity();
-    EXPECT_EQ(check_placement(m, 0, Shot{nan, 0.0, 1.0})->code, "x_not_finite");
-    EXPECT_EQ(check_placement(m, 0, Shot{112.9, 0.0, 1.0})->code, "x_out_of_range");
-    EXPECT_EQ(check_placement(m, 0, Shot{487.1, 0.0, 1.0})->code, "x_out_of_range");
-    EXPECT_EQ(check_placement(m, 0, Shot{300.0, inf, 1.0})->code, "angle_not_finite");
-    EXPECT_EQ(check_placement(m, 0, Shot{300.0, 0.0, nan})->code, "power_not_finite");
-    EXPECT_EQ(check_placement(m, 0, Shot{300.0, 0.0, -0.1})->code, "power_out_of_range");
-    EXPECT_EQ(check_placement(m, 0, Shot{300.0, 0.0, 25.1})->code, "power_out_of_range");
-    EXPECT_EQ(check_placement(m, 5, Shot{300.0, 0.0, 1.0})->code, "invalid_seat");
+    EXPECT_EQ(check_placement(m, 0, Shot{nan, 0.0, 1.0})->code, RuleErrorCode::XNotFinite);
+    EXPECT_EQ(check_placement(m, 0, Shot{112.9, 0.0, 1.0})->code, RuleErrorCode::XOutOfRange);
+    EXPECT_EQ(check_placement(m, 0, Shot{487.1, 0.0, 1.0})->code, RuleErrorCode::XOutOfRange);
+    EXPECT_EQ(check_placement(m, 0, Shot{300.0, inf, 1.0})->code, RuleErrorCode::AngleNotFinite);
+    EXPECT_EQ(check_placement(m, 0, Shot{300.0, 0.0, nan})->code, RuleErrorCode::PowerNotFinite);
+    EXPECT_EQ(check_placement(m, 0, Shot{300.0, 0.0, -0.1})->code, RuleErrorCode::PowerOutOfRange);
+    EXPECT_EQ(check_placement(m, 0, Shot{300.0, 0.0, 25.1})->code, RuleErrorCode::PowerOutOfRange);
+    EXPECT_EQ(check_placement(m, 5, Shot{300.0, 0.0, 1.0})->code, RuleErrorCode::InvalidSeat);
     test::put(m, 3, {250.0, 510.0});
     const auto overlap = check_placement(m, 0, Shot{270.0, 0.0, 1.0});
     ASSERT_TRUE(overlap.has_value());
-    EXPECT_EQ(overlap->code, "striker_overlaps");
+    EXPECT_EQ(overlap->code, RuleErrorCode::StrikerOverlaps);
     EXPECT_EQ(overlap->field, "shot.x");
     EXPECT_NE(overlap->message.find("piece 3"), std::string::npos);
     // Touching is allowed: 32 px apart along x, at the same y.
@@ -181,11 +205,11 @@ TEST(RulesPlacement, PlayShotRejectsWithoutChangingAnything) {
     ExactEngine engine(m.physics);
     const PlayResult r = play_shot(m, 0, Shot{260.0, -1.0, 5.0}, engine);
     ASSERT_TRUE(r.error.has_value());
-    EXPECT_EQ(r.error->code, "striker_overlaps");
+    EXPECT_EQ(r.error->code, RuleErrorCode::StrikerOverlaps);
     EXPECT_EQ(r.state.turn_number, m.turn_number);
     EXPECT_EQ(r.state.bodies[3].pos_px, (Vec2{250.0, 520.0}));
     const PlayResult wrong_seat = play_shot(m, 1, Shot{300.0, 1.0, 5.0}, engine);
-    EXPECT_EQ(wrong_seat.error->code, "not_your_turn");
+    EXPECT_EQ(wrong_seat.error->code, RuleErrorCode::NotYourTurn);
 }
 
 TEST(RulesClock, RanOutOnlyPastTheClockPlusGrace) {
@@ -207,7 +231,7 @@ TEST(RulesClock, ExpiryPassesTheTurn) {
     EXPECT_FALSE(r.outcome.shot_taken);
     ASSERT_EQ(r.outcome.fouls.size(), 1u);
     EXPECT_EQ(r.outcome.fouls[0].code, RuleCode::ShotClockExpired);
-    EXPECT_EQ(shot_clock_expired(m, 1).error->code, "not_your_turn");
+    EXPECT_EQ(shot_clock_expired(m, 1).error->code, RuleErrorCode::NotYourTurn);
 }
 
 TEST(RulesClock, ThreeMissedTurnsInARowLoseTheGame) {
@@ -222,7 +246,7 @@ TEST(RulesClock, ThreeMissedTurnsInARowLoseTheGame) {
         ASSERT_TRUE(r.outcome.game_end.has_value());
         EXPECT_EQ(r.outcome.game_end->winner_team, 1);
         EXPECT_EQ(r.outcome.game_end->reason, RuleCode::MissedTurns);
-        EXPECT_EQ(shot_clock_expired(r.state, 1).error->code, "game_over");
+        EXPECT_EQ(shot_clock_expired(r.state, 1).error->code, RuleErrorCode::GameOver);
     }
 }
 
@@ -260,8 +284,8 @@ TEST(RulesForfeit, TheForfeitingTeamLoses) {
     EXPECT_EQ(r.state.result->winner_team, 0);
     EXPECT_EQ(r.state.result->reason, RuleCode::Forfeit);
     EXPECT_EQ(r.state.turn_number, 1);
-    EXPECT_EQ(forfeit(r.state, 0).error->code, "game_over");
-    EXPECT_EQ(forfeit(m, 7).error->code, "invalid_seat");
+    EXPECT_EQ(forfeit(r.state, 0).error->code, RuleErrorCode::GameOver);
+    EXPECT_EQ(forfeit(m, 7).error->code, RuleErrorCode::InvalidSeat);
 }
 
 } // namespace

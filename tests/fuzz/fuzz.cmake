@@ -26,6 +26,4 @@ endfunction()
 
 carrom_add_fuzz_target(codec carrom_proto ${carrom_fuzz_dir}/codec_target.cpp
                        ${carrom_fuzz_dir}/codec_fuzz.cpp ${carrom_fuzz_dir}/scene_fuzz.cpp)
-if(TARGET carrom_server_lib)
-    carrom_add_fuzz_target(room carrom_server_lib ${carrom_fuzz_dir}/room_fuzz.cpp)
-endif()
+carrom_add_fuzz_target(room carrom_room ${carrom_fuzz_dir}/room_fuzz.cpp)

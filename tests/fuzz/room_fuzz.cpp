@@ -11,7 +11,7 @@
 // aim and shoot read their values from the following bytes. Missing bytes read as zero.
 #include "carrom/proto/codec.hpp"
 #include "carrom/proto/limits.hpp"
-#include "carrom/server/room.hpp"
+#include "carrom/room/room.hpp"
 #include "fuzz.hpp"
 
 #include <algorithm>
@@ -24,7 +24,7 @@
 namespace carrom::fuzz {
 namespace {
 
-using server::Peer;
+using room::Peer;
 
 // A player's connection: checks that every message the room sends it decodes.
 class CheckingPeer final : public Peer {
@@ -32,7 +32,7 @@ public:
     CheckingPeer(std::int64_t id, std::string name) : id_(id), name_(std::move(name)) {}
     std::int64_t player_id() const override { return id_; }
     const std::string& name() const override { return name_; }
-    void send(server::Outgoing message) override {
+    void send(room::Outgoing message) override {
         const auto decoded = proto::decode_server(*message.text);
         if (!decoded.ok()) {
             fail("room: sent a message decode_server rejects (" + decoded.error.code + ": " +
@@ -69,7 +69,7 @@ private:
 constexpr int kMaxPlayOutTicks = 200000;
 
 // Moves the clock to the room's next wake-up (never back) and ticks; false if none is set.
-bool tick_at_next_wake(server::Room& room, server::ManualClock& clock) {
+bool tick_at_next_wake(room::Room& room, room::ManualClock& clock) {
     const auto wake = room.next_wake_ms();
     if (!wake) {
         return false;
@@ -79,7 +79,7 @@ bool tick_at_next_wake(server::Room& room, server::ManualClock& clock) {
     return true;
 }
 
-void play_out(server::Room& room, server::ManualClock& clock) {
+void play_out(room::Room& room, room::ManualClock& clock) {
     int ticks = 0;
     while (room.phase() == proto::Phase::Moving) {
         if (!tick_at_next_wake(room, clock)) {
@@ -98,9 +98,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     using namespace carrom;
     using fuzz::CheckingPeer;
     fuzz::Bytes in(data, size);
-    server::ManualClock clock;
-    server::Metrics metrics;
-    server::RoomConfig config;
+    room::ManualClock clock;
+    room::RoomCounters counters;
+    room::RoomConfig config;
     config.rule_set = static_cast<proto::RuleSet>(in.u8() % 4);
     proto::RoomOptions options;
     const std::uint8_t flags = in.u8();
@@ -113,10 +113,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (flags & 4) {
         options.shot_clock_s = (flags & 8) ? 0.0 : 0.5 + in.unit() * 30.0;
     }
-    config.rules = server::make_rules_config(config.rule_set, options, 30.0);
+    config.rules = room::make_rules_config(config.rule_set, options, 30.0);
     config.grace_s = 1.0 + in.u8();
     config.time_scale = (flags & 16) ? 50.0 : 1.0;
-    server::Room room("ABCDEF", config, clock, metrics);
+    room::Room room("ABCDEF", config, clock, counters);
 
     std::array<std::shared_ptr<CheckingPeer>, 4> peers;
     for (std::size_t k = 0; k < peers.size(); ++k) {

@@ -106,7 +106,7 @@ TEST(BadInput, EachGetsItsCodeAndTheMatchGoesOn) {
     const std::string copy_error = table.a.next_error();
     EXPECT_TRUE(copy_error == "in_motion" || copy_error == "stale_turn") << copy_error;
     for (auto* client : {&table.a, &table.b, &table.s}) {
-        const auto result = client->next<proto::ShotResult>(server_has_time_scale() ? 20s : 60s);
+        const auto result = client->next<proto::ShotResult>(20s);
         ASSERT_TRUE(result);
         EXPECT_EQ(result->turn, t);
         EXPECT_EQ(result->seat, 0);

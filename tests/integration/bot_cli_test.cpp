@@ -9,8 +9,6 @@
 #include <fstream>
 #include <thread>
 
-#ifdef CARROM_BOT_PATH
-
 namespace carrom::integration {
 namespace {
 
@@ -24,7 +22,7 @@ TEST(BotCli, TwoBotProcessesPlayAMatch) {
     TestServer server;
     const std::string bot = CARROM_BOT_PATH;
     const std::string creator_err = temp_path("creator.err");
-    const std::string timeout = server_has_time_scale() ? "60" : "300";
+    const std::string timeout = "60";
     CommandRun creator;
     std::thread creator_thread([&] {
         creator = run_command(bot + " --url " + server.url() + " --create --rule-set freestyle" +
@@ -90,5 +88,3 @@ TEST(BotCli, BadScriptIsRefusedWithTheLine) {
 
 } // namespace
 } // namespace carrom::integration
-
-#endif // CARROM_BOT_PATH

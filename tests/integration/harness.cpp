@@ -12,18 +12,6 @@ namespace {
 
 using namespace std::chrono_literals;
 
-// Whether settings type S has time_scale (detected at compile time, so these tests build
-// against a server with or without it).
-template <class S> constexpr bool kHasTimeScale = requires(S s) {
-    s.time_scale = 1.0;
-};
-
-template <class S> void set_time_scale(S& settings, double scale) {
-    if constexpr (kHasTimeScale<S>) {
-        settings.time_scale = scale;
-    }
-}
-
 std::unique_ptr<bots::Strategy> strategy_for(const MatchSpec& spec, std::uint64_t salt) {
     bots::StrategyOptions options;
     options.name = spec.strategy;
@@ -133,12 +121,8 @@ server::ServerSettings test_settings() {
     settings.grace_s = 30.0;
     settings.handshake_timeout_s = 10.0;
     settings.shutdown_grace_s = 1.0;
-    set_time_scale(settings, kTestTimeScale);
+    settings.time_scale = kTestTimeScale;
     return settings;
-}
-
-bool server_has_time_scale() {
-    return kHasTimeScale<server::ServerSettings>;
 }
 
 TestServer::TestServer(server::ServerSettings settings)

@@ -16,15 +16,11 @@
 
 namespace carrom::integration {
 
-// Shot playback speed-up for tests when the server offers one (ServerSettings::time_scale):
-// a whole match then takes seconds. Without it shots stream in real time.
+// Shot playback speed-up for tests (ServerSettings::time_scale): a whole match takes seconds.
 inline constexpr double kTestTimeScale = 25.0;
 
 // Settings for tests: 127.0.0.1, ephemeral port, 2 I/O threads, no shot clock, fast playback.
 server::ServerSettings test_settings();
-
-// Whether this server build can play shots faster than real time.
-bool server_has_time_scale();
 
 // A command line run through the shell: its standard output and exit status (-1 when it did not
 // exit normally or could not be started).

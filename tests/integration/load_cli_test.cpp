@@ -9,8 +9,6 @@
 
 #include <string>
 
-#if defined(CARROM_LOAD_PATH) && defined(CARROM_SERVER_PATH)
-
 namespace carrom::integration {
 namespace {
 
@@ -66,5 +64,3 @@ TEST(LoadCli, RejectsASpreadLargerThanThePause) {
 
 } // namespace
 } // namespace carrom::integration
-
-#endif

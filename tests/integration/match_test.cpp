@@ -56,7 +56,7 @@ TEST_P(FullMatch, TwoBotsPlayToTheEnd) {
     MatchSpec spec;
     spec.create = short_game(GetParam());
     spec.seed = 11 + static_cast<std::uint64_t>(GetParam());
-    spec.timeout = server_has_time_scale() ? 60s : 600s;
+    spec.timeout = 60s;
     const MatchRun run = play_match(server.url(), spec);
     expect_complete(run, {"score", "boards", "cleared"});
     const auto& metrics = server.server().metrics();
@@ -77,7 +77,7 @@ TEST(Matches, RematchPlaysASecondGame) {
     spec.create = short_game(proto::RuleSet::Freestyle);
     spec.create.options.target_points = 10;
     spec.games = 2;
-    spec.timeout = server_has_time_scale() ? 60s : 600s;
+    spec.timeout = 60s;
     const MatchRun run = play_match(server.url(), spec);
     EXPECT_TRUE(run.creator.failure.empty()) << run.creator.failure;
     EXPECT_TRUE(run.joiner.failure.empty()) << run.joiner.failure;
@@ -95,7 +95,7 @@ TEST(Matches, FiftyMatchesAtOnceFinishCorrectly) {
         specs[i].create.options.target_points = 10; // the first coin wins
         specs[i].seed = 100 + i;
         specs[i].strategy = "sampling";
-        specs[i].timeout = server_has_time_scale() ? 90s : 600s;
+        specs[i].timeout = 90s;
     }
     const auto runs = play_matches(server.url(), specs);
     std::set<std::string> codes;

@@ -2,10 +2,8 @@
 // thread (one connection each), a TCP listener that never answers, a plain HTTP responder and
 // a closed port. Everything listens on 127.0.0.1 with an ephemeral port.
 
-// Asio and Beast are compiled once in carrom_beast (linked through carrom_net); this file must
-// see them the same way.
-#define BOOST_ASIO_SEPARATE_COMPILATION
-#define BOOST_BEAST_SEPARATE_COMPILATION
+// Asio and Beast are compiled once in carrom_beast, which this test links (tests/CMakeLists.txt)
+// for the same separate-compilation definitions.
 
 #include "carrom/net/connection.hpp"
 #include "carrom/proto/codec.hpp"

@@ -284,7 +284,7 @@ TEST_F(SocketTest, QuickMatchPairsTwoWaitingPlayers) {
 }
 
 // A server bot that always plays a soft shot along its baseline, and counts the brains made.
-class SoftShotBrain final : public BotBrain {
+class SoftShotBrain final : public room::BotBrain {
 public:
     Shot choose_shot(const rules::MatchState&, int, std::chrono::milliseconds) override {
         return {300.0, 0.0, 2.0};

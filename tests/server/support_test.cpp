@@ -1,11 +1,9 @@
 // The small pieces: write queue, rate limiter, tokens and codes, registry, metrics.
-#include "carrom/proto/codec.hpp"
 #include "carrom/proto/types.hpp"
 #include "carrom/server/metrics.hpp"
 #include "carrom/server/random.hpp"
 #include "carrom/server/rate_limiter.hpp"
 #include "carrom/server/registry.hpp"
-#include "carrom/server/snapshot_writer.hpp"
 #include "carrom/server/write_queue.hpp"
 
 #include <gtest/gtest.h>
@@ -16,7 +14,7 @@
 namespace carrom::server {
 namespace {
 
-Outgoing text(std::string s, MessageKind kind = MessageKind::Normal) {
+room::Outgoing text(std::string s, room::MessageKind kind = room::MessageKind::Normal) {
     return {std::make_shared<const std::string>(std::move(s)), kind};
 }
 
@@ -39,12 +37,12 @@ TEST(WriteQueue, OneWriteInFlight) {
 
 TEST(WriteQueue, SnapshotsAreDroppedUnderBackPressure) {
     WriteQueue q(1000, 2);
-    EXPECT_EQ(q.push(text("s0", MessageKind::Snapshot)), WriteQueue::Push::Queued);
+    EXPECT_EQ(q.push(text("s0", room::MessageKind::Snapshot)), WriteQueue::Push::Queued);
     ASSERT_TRUE(q.start_write()); // in flight does not count as waiting
-    EXPECT_EQ(q.push(text("s1", MessageKind::Snapshot)), WriteQueue::Push::Queued);
-    EXPECT_EQ(q.push(text("s2", MessageKind::Snapshot)), WriteQueue::Push::Queued);
+    EXPECT_EQ(q.push(text("s1", room::MessageKind::Snapshot)), WriteQueue::Push::Queued);
+    EXPECT_EQ(q.push(text("s2", room::MessageKind::Snapshot)), WriteQueue::Push::Queued);
     EXPECT_EQ(q.waiting_snapshots(), 2U);
-    EXPECT_EQ(q.push(text("s3", MessageKind::Snapshot)), WriteQueue::Push::DroppedSnapshot);
+    EXPECT_EQ(q.push(text("s3", room::MessageKind::Snapshot)), WriteQueue::Push::DroppedSnapshot);
     EXPECT_EQ(q.push(text("3")), WriteQueue::Push::Queued); // normal messages still queue
     EXPECT_EQ(q.queued_messages(), 4U);
     // The in-flight snapshot finishes and the next starts: one snapshot waits, so a new one
@@ -52,21 +50,21 @@ TEST(WriteQueue, SnapshotsAreDroppedUnderBackPressure) {
     q.finish_write();
     ASSERT_TRUE(q.start_write());
     EXPECT_EQ(q.waiting_snapshots(), 1U);
-    EXPECT_EQ(q.push(text("s4", MessageKind::Snapshot)), WriteQueue::Push::Queued);
+    EXPECT_EQ(q.push(text("s4", room::MessageKind::Snapshot)), WriteQueue::Push::Queued);
 }
 
 TEST(WriteQueue, CollisionCuesDoNotCountTowardTheSnapshotBacklog) {
     WriteQueue q(100000, 2);
-    ASSERT_EQ(q.push(text("e0", MessageKind::Cue)), WriteQueue::Push::Queued);
+    ASSERT_EQ(q.push(text("e0", room::MessageKind::Cue)), WriteQueue::Push::Queued);
     ASSERT_TRUE(q.start_write());
     for (int i = 0; i < 50; ++i) { // a break's burst of collision events, as the room sends them
-        ASSERT_EQ(q.push(text("e", MessageKind::Cue)), WriteQueue::Push::Queued);
+        ASSERT_EQ(q.push(text("e", room::MessageKind::Cue)), WriteQueue::Push::Queued);
     }
     EXPECT_EQ(q.waiting_snapshots(), 0U);
     EXPECT_EQ(q.waiting_cues(), 50U);
-    EXPECT_EQ(q.push(text("s1", MessageKind::Snapshot)), WriteQueue::Push::Queued);
-    EXPECT_EQ(q.push(text("s2", MessageKind::Snapshot)), WriteQueue::Push::Queued);
-    EXPECT_EQ(q.push(text("s3", MessageKind::Snapshot)), WriteQueue::Push::DroppedSnapshot);
+    EXPECT_EQ(q.push(text("s1", room::MessageKind::Snapshot)), WriteQueue::Push::Queued);
+    EXPECT_EQ(q.push(text("s2", room::MessageKind::Snapshot)), WriteQueue::Push::Queued);
+    EXPECT_EQ(q.push(text("s3", room::MessageKind::Snapshot)), WriteQueue::Push::DroppedSnapshot);
     // Drain everything: the counts return to zero.
     q.finish_write();
     while (q.start_write()) {
@@ -85,36 +83,36 @@ TEST(WriteQueue, NormalMessagesDoNotCountTowardTheSnapshotBacklog) {
     for (int i = 0; i < 20; ++i) {
         ASSERT_EQ(q.push(text("n")), WriteQueue::Push::Queued);
     }
-    EXPECT_EQ(q.push(text("s1", MessageKind::Snapshot)), WriteQueue::Push::Queued);
-    EXPECT_EQ(q.push(text("s2", MessageKind::Snapshot)), WriteQueue::Push::DroppedSnapshot);
+    EXPECT_EQ(q.push(text("s1", room::MessageKind::Snapshot)), WriteQueue::Push::Queued);
+    EXPECT_EQ(q.push(text("s2", room::MessageKind::Snapshot)), WriteQueue::Push::DroppedSnapshot);
 }
 
 TEST(WriteQueue, CuesAreDroppedWhileTheClientIsBehindOnSnapshots) {
     WriteQueue q(100000, 2);
-    ASSERT_EQ(q.push(text("s0", MessageKind::Snapshot)), WriteQueue::Push::Queued);
+    ASSERT_EQ(q.push(text("s0", room::MessageKind::Snapshot)), WriteQueue::Push::Queued);
     ASSERT_TRUE(q.start_write());
-    ASSERT_EQ(q.push(text("s1", MessageKind::Snapshot)), WriteQueue::Push::Queued);
-    EXPECT_EQ(q.push(text("c1", MessageKind::Cue)),
+    ASSERT_EQ(q.push(text("s1", room::MessageKind::Snapshot)), WriteQueue::Push::Queued);
+    EXPECT_EQ(q.push(text("c1", room::MessageKind::Cue)),
               WriteQueue::Push::Queued); // 1 waits: not behind
-    ASSERT_EQ(q.push(text("s2", MessageKind::Snapshot)), WriteQueue::Push::Queued);
-    EXPECT_EQ(q.push(text("c2", MessageKind::Cue)), WriteQueue::Push::DroppedCue); // 2 wait
+    ASSERT_EQ(q.push(text("s2", room::MessageKind::Snapshot)), WriteQueue::Push::Queued);
+    EXPECT_EQ(q.push(text("c2", room::MessageKind::Cue)), WriteQueue::Push::DroppedCue); // 2 wait
     EXPECT_EQ(q.push(text("n")), WriteQueue::Push::Queued); // a normal message still queues
     EXPECT_EQ(q.waiting_cues(), 1U);
     // Once the client catches up (one snapshot written), cues queue again.
     q.finish_write();
     ASSERT_TRUE(q.start_write()); // s1 in flight, s2 waits
-    EXPECT_EQ(q.push(text("c3", MessageKind::Cue)), WriteQueue::Push::Queued);
+    EXPECT_EQ(q.push(text("c3", room::MessageKind::Cue)), WriteQueue::Push::Queued);
 }
 
 TEST(WriteQueue, CuesHaveTheirOwnBacklog) {
     WriteQueue q(100000, 8, 3);
-    ASSERT_EQ(q.push(text("c0", MessageKind::Cue)), WriteQueue::Push::Queued);
+    ASSERT_EQ(q.push(text("c0", room::MessageKind::Cue)), WriteQueue::Push::Queued);
     ASSERT_TRUE(q.start_write()); // the cue in flight does not count as waiting
     for (int i = 0; i < 3; ++i) {
-        ASSERT_EQ(q.push(text("c", MessageKind::Cue)), WriteQueue::Push::Queued);
+        ASSERT_EQ(q.push(text("c", room::MessageKind::Cue)), WriteQueue::Push::Queued);
     }
-    EXPECT_EQ(q.push(text("c4", MessageKind::Cue)), WriteQueue::Push::DroppedCue);
-    EXPECT_EQ(q.push(text("s", MessageKind::Snapshot)), WriteQueue::Push::Queued);
+    EXPECT_EQ(q.push(text("c4", room::MessageKind::Cue)), WriteQueue::Push::DroppedCue);
+    EXPECT_EQ(q.push(text("s", room::MessageKind::Snapshot)), WriteQueue::Push::Queued);
     EXPECT_EQ(q.queued_messages(), 5U); // c0 in flight, 3 cues, the snapshot
 }
 
@@ -250,35 +248,6 @@ TEST(Registry, QuickMatchPairsWithinARuleSet) {
     EXPECT_EQ(registry.waiting_count(), 0U);
     EXPECT_FALSE(registry.cancel_quick_match(2)); // no longer
     EXPECT_FALSE(registry.cancel_quick_match(1)); // paired: taken out by the partner
-}
-
-TEST(SnapshotWriter, DecodesToTheSameSnapshot) {
-    proto::Snapshot snap;
-    snap.seq = 12345;
-    snap.turn = 7;
-    snap.t_s = 0.016;
-    snap.bodies = {proto::SnapshotBody{19, {300.12, 401.5}, {-12.5, -600.0}},
-                   proto::SnapshotBody{0, {250.0, 0.01}, {0.0, -0.0}},
-                   proto::SnapshotBody{3, {599.99, 1e-2}, {12345.67, 4500.0}}};
-    snap.pocketed = {4, 18};
-    auto check = [](const proto::Snapshot& s) {
-        const std::string text = encode_snapshot(s);
-        const auto decoded = proto::decode_server(text);
-        ASSERT_TRUE(decoded.ok()) << decoded.error.message << ": " << text;
-        EXPECT_EQ(*decoded.message, proto::ServerMessage{s}) << text;
-    };
-    check(snap);
-    snap.due_ms = 1700000000123;
-    check(snap);
-    EXPECT_NE(encode_snapshot(snap).find(R"("due_ms":1700000000123})"), std::string::npos);
-    snap.keyframe = true;
-    snap.bodies.clear();
-    snap.pocketed.clear();
-    snap.due_ms.reset();
-    check(snap);
-    EXPECT_EQ(encode_snapshot(snap),
-              R"({"type":"snapshot","seq":12345,"turn":7,"t":0.016,"keyframe":true,)"
-              R"("bodies":[],"pocketed":[]})");
 }
 
 TEST(Metrics, PrometheusText) {

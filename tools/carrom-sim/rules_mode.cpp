@@ -107,7 +107,7 @@ rules::PlayResult run(const Request& r) {
     if (r.action == "next_board") {
         rules::PlayResult out;
         if (r.state.phase != rules::Phase::BoardOver) {
-            out.error = rules::RuleError{"wrong_phase", "action",
+            out.error = rules::RuleError{rules::RuleErrorCode::WrongPhase, "action",
                                          "next_board needs a state whose phase is board_over."};
         }
         out.state = rules::start_next_board(r.state);
@@ -139,8 +139,8 @@ int run_rules_mode(std::istream& in, std::ostream& out, std::ostream& err) {
     }
     const rules::PlayResult result = run(request);
     if (result.error) {
-        err << proto::error_to_json(
-                   bad(result.error->code, result.error->field, result.error->message))
+        err << proto::error_to_json(bad(rules::to_string(result.error->code), result.error->field,
+                                        result.error->message))
                    .dump()
             << '\n';
         return 2;

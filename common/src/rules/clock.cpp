@@ -53,10 +53,10 @@ PlayResult shot_clock_expired(const MatchState& state, int seat) {
 PlayResult forfeit(const MatchState& state, int seat) {
     PlayResult out;
     if (seat < 0 || seat >= static_cast<int>(state.seats.size())) {
-        out.error =
-            RuleError{"invalid_seat", "seat", "There is no seat " + std::to_string(seat) + "."};
+        out.error = RuleError{RuleErrorCode::InvalidSeat, "seat",
+                              "There is no seat " + std::to_string(seat) + "."};
     } else if (state.phase == Phase::GameOver) {
-        out.error = RuleError{"game_over", "", "The game is over."};
+        out.error = RuleError{RuleErrorCode::GameOver, "", "The game is over."};
     }
     if (out.error) {
         out.state = state;

@@ -64,20 +64,27 @@ MatchState start_next_board(const MatchState& state) {
     return st;
 }
 
-std::optional<RuleError> check_turn(const MatchState& state, int seat) {
+std::optional<RuleError> check_turn(const MatchState& state, int seat,
+                                    std::optional<int> turn_number) {
     if (seat < 0 || seat >= static_cast<int>(state.seats.size())) {
-        return RuleError{"invalid_seat", "seat", "There is no seat " + std::to_string(seat) + "."};
+        return RuleError{RuleErrorCode::InvalidSeat, "seat",
+                         "There is no seat " + std::to_string(seat) + "."};
     }
     if (state.phase == Phase::GameOver) {
-        return RuleError{"game_over", "", "The game is over."};
+        return RuleError{RuleErrorCode::GameOver, "", "The game is over."};
     }
     if (state.phase == Phase::BoardOver) {
-        return RuleError{"board_over", "", "The board is over; the next one has not started."};
+        return RuleError{RuleErrorCode::BoardOver, "",
+                         "The board is over; the next one has not started."};
     }
     if (seat != state.turn_seat) {
-        return RuleError{"not_your_turn", "seat",
-                         "It is seat " + std::to_string(state.turn_seat) + "'s turn, not seat " +
-                             std::to_string(seat) + "'s."};
+        return RuleError{RuleErrorCode::NotYourTurn, "seat",
+                         "It is seat " + std::to_string(state.turn_seat) + "'s turn."};
+    }
+    if (turn_number && *turn_number != state.turn_number) {
+        return RuleError{RuleErrorCode::StaleTurn, "turn",
+                         "That input was for turn " + std::to_string(*turn_number) +
+                             "; the turn is " + std::to_string(state.turn_number) + "."};
     }
     return std::nullopt;
 }
@@ -139,7 +146,7 @@ PlayResult play_shot(const MatchState& state, int seat, const Shot& shot, ExactE
     sim.record_trajectory = options.record_trajectory;
     const ExactEngine::Outcome run = engine.run(bodies, sim);
     if (run.error || run.result == nullptr) {
-        out.error = RuleError{"physics_error", run.error ? run.error->field : "",
+        out.error = RuleError{RuleErrorCode::PhysicsError, run.error ? run.error->field : "",
                               run.error ? run.error->message : "The simulation failed."};
         out.state = state;
         return out;

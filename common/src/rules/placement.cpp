@@ -97,15 +97,17 @@ Body striker_for(const PhysicsConfig& physics, Side side, const Shot& shot) {
 std::optional<RuleError> check_placement(const MatchState& state, int seat, const Shot& shot) {
     const PhysicsConfig& physics = state.physics;
     if (seat < 0 || seat >= static_cast<int>(state.seats.size())) {
-        return RuleError{"invalid_seat", "seat", "There is no seat " + std::to_string(seat) + "."};
+        return RuleError{RuleErrorCode::InvalidSeat, "seat",
+                         "There is no seat " + std::to_string(seat) + "."};
     }
     if (!std::isfinite(shot.x_px)) {
-        return RuleError{"x_not_finite", "shot.x", "The striker position is not a finite number."};
+        return RuleError{RuleErrorCode::XNotFinite, "shot.x",
+                         "The striker position is not a finite number."};
     }
     const double lo = baseline_x_min(physics);
     const double hi = baseline_x_max(physics);
     if (shot.x_px < lo || shot.x_px > hi) {
-        return RuleError{"x_out_of_range", "shot.x",
+        return RuleError{RuleErrorCode::XOutOfRange, "shot.x",
                          "The striker must be placed on the baseline between " +
                              std::to_string(lo) + " and " + std::to_string(hi) + " px."};
     }
@@ -117,19 +119,21 @@ std::optional<RuleError> check_placement(const MatchState& state, int seat, cons
         }
         const double reach = physics.striker_radius_px + physics.radius(body.kind);
         if (length_squared(body.pos_px - striker.pos_px) < reach * reach) {
-            return RuleError{"striker_overlaps", "shot.x",
+            return RuleError{RuleErrorCode::StrikerOverlaps, "shot.x",
                              "The striker would overlap piece " + std::to_string(body.id) +
                                  "; place it where it touches no piece."};
         }
     }
     if (!std::isfinite(shot.angle_rad)) {
-        return RuleError{"angle_not_finite", "shot.angle", "The angle is not a finite number."};
+        return RuleError{RuleErrorCode::AngleNotFinite, "shot.angle",
+                         "The angle is not a finite number."};
     }
     if (!std::isfinite(shot.power)) {
-        return RuleError{"power_not_finite", "shot.power", "The power is not a finite number."};
+        return RuleError{RuleErrorCode::PowerNotFinite, "shot.power",
+                         "The power is not a finite number."};
     }
     if (shot.power < 0.0 || shot.power > physics.max_power) {
-        return RuleError{"power_out_of_range", "shot.power",
+        return RuleError{RuleErrorCode::PowerOutOfRange, "shot.power",
                          "The power must be in [0, " + std::to_string(physics.max_power) + "]."};
     }
     return std::nullopt;

@@ -7,7 +7,7 @@ namespace carrom::rules {
 namespace {
 
 RuleError invalid(std::string field, std::string message) {
-    return RuleError{"invalid_config", std::move(field), std::move(message)};
+    return RuleError{RuleErrorCode::InvalidConfig, std::move(field), std::move(message)};
 }
 
 std::optional<RuleError> check_int(const char* field, int value, int lo, int hi) {

@@ -21,7 +21,7 @@ enum class LinkState {
 
 struct LinkStatus {
     LinkState state = LinkState::Connecting;
-    std::string detail; // e.g. "Could not reach 10.0.0.5:8080: connection refused."
+    std::string detail; // e.g. "Could not reach 10.0.0.5:7777: connection refused."
 };
 
 class MessageLink {

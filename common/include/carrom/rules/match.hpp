@@ -34,8 +34,12 @@ MatchState new_match(RuleSet rule_set, const RulesConfig& rules, const PhysicsCo
 // Returns the state unchanged unless phase == BoardOver.
 MatchState start_next_board(const MatchState& state);
 
-// "invalid_seat", "game_over", "board_over" or "not_your_turn", else nothing.
-std::optional<RuleError> check_turn(const MatchState& state, int seat);
+// Whether seat may play now: InvalidSeat, GameOver, BoardOver or NotYourTurn, else nothing.
+// turn_number: the turn an input names, when the caller has one (a client's aim or shoot); another
+// than state.turn_number is StaleTurn (checked last). The one turn check: play_shot and
+// shot_clock_expired use it, and the server's room maps its codes to wire errors.
+std::optional<RuleError> check_turn(const MatchState& state, int seat,
+                                    std::optional<int> turn_number = std::nullopt);
 
 struct StrokeResult {
     MatchState state;    // the state after the stroke

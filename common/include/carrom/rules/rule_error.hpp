@@ -1,12 +1,35 @@
 #pragma once
-// Why the rules refused something (a shot, a placement, a config). Plain data.
+// Why the rules refused something (a stroke, a placement, a config, an action). Plain data: a
+// code to act on, the offending field and one plain sentence for people.
 
+#include <cstdint>
 #include <string>
+#include <string_view>
 
 namespace carrom::rules {
 
+enum class RuleErrorCode : std::uint8_t {
+    InvalidSeat,     // no such seat
+    GameOver,        // the game has ended
+    BoardOver,       // the board has ended and the next one has not started
+    NotYourTurn,     // another seat is to play
+    StaleTurn,       // the input names a turn number other than the current one
+    XNotFinite,      // striker position
+    XOutOfRange,     //   off the baseline
+    StrikerOverlaps, //   on a piece
+    AngleNotFinite,  // stroke
+    PowerNotFinite,  //
+    PowerOutOfRange, //
+    PhysicsError,    // the engine refused the scene
+    InvalidConfig,   // a RulesConfig value out of range
+    WrongPhase,      // an action the current phase does not allow
+};
+
+// snake_case names, stable (printed by carrom-sim --rules): "invalid_seat", "game_over", ...
+std::string_view to_string(RuleErrorCode code);
+
 struct RuleError {
-    std::string code;    // stable machine-readable code, e.g. "striker_overlaps"
+    RuleErrorCode code = RuleErrorCode::InvalidSeat;
     std::string field;   // the offending field ("shot.x", "seat", ...), empty if none
     std::string message; // one plain sentence
 };

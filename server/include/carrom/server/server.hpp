@@ -2,7 +2,7 @@
 // The network server: a WebSocket endpoint and plain HTTP (GET /healthz, GET /metrics) on one
 // port, several I/O threads, one strand per room and per connection. No Boost in this header.
 
-#include "carrom/server/bot_seat.hpp"
+#include "carrom/server/bot_factory.hpp"
 #include "carrom/server/metrics.hpp"
 #include "carrom/server/settings.hpp"
 

@@ -11,7 +11,7 @@ namespace carrom::server {
 
 struct ServerSettings {
     std::string host = "127.0.0.1";
-    std::uint16_t port = 0;               // 0 = ephemeral
+    std::uint16_t port = 7777;            // 0 = ephemeral (the bound port is printed)
     int threads = 2;                      // I/O threads
     double snapshot_hz = 60.0;            // snapshots per second while pieces move
     double time_scale = 1.0;              // match seconds per wall second (tests speed play up)

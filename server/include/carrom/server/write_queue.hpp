@@ -2,7 +2,7 @@
 // One session's outgoing messages: at most one write in flight, a bound on queued bytes, and
 // snapshot dropping under back-pressure. Not thread-safe (lives on the session's strand).
 
-#include "carrom/server/peer.hpp"
+#include "carrom/room/peer.hpp"
 
 #include <cstddef>
 #include <deque>
@@ -22,10 +22,10 @@ public:
     WriteQueue(std::size_t max_bytes, std::size_t snapshot_backlog, std::size_t cue_backlog = 64);
 
     enum class Push { Queued, DroppedSnapshot, DroppedCue, Overflow };
-    Push push(Outgoing message);
+    Push push(room::Outgoing message);
 
     // The next message to write, if none is in flight; marks it in flight.
-    std::optional<Outgoing> start_write();
+    std::optional<room::Outgoing> start_write();
     // The in-flight write finished.
     void finish_write();
 
@@ -39,14 +39,14 @@ public:
 
 private:
     // 1 when the message in flight is of this kind, else 0.
-    std::size_t in_flight(MessageKind kind) const;
+    std::size_t in_flight(room::MessageKind kind) const;
     // Counts a queued (added) or finished (removed) message in snapshots_ or cues_.
-    void count(MessageKind kind, bool added);
+    void count(room::MessageKind kind, bool added);
 
     std::size_t max_bytes_;
     std::size_t snapshot_backlog_;
     std::size_t cue_backlog_;
-    std::deque<Outgoing> queue_; // front is in flight while writing_
+    std::deque<room::Outgoing> queue_; // front is in flight while writing_
     std::size_t bytes_ = 0;
     std::size_t snapshots_ = 0; // snapshots in queue_, the one in flight included
     std::size_t cues_ = 0;      // cues in queue_, the one in flight included

@@ -1,0 +1,34 @@
+#pragma once
+// The seam for bot seats. A room can seat a BotBrain; when it is the bot's turn the room hands out
+// a BotTurn once (Room::take_bot_turn); its driver runs choose_shot and gives the shot back
+// (Room::bot_shoot). carrom-server runs brains on a worker thread, never on an I/O thread, and
+// posts the result back to the room's strand; the client's offline demo calls its opponent on
+// the UI thread. A brain must be callable from any single thread at a time.
+
+#include "carrom/rules/match_state.hpp"
+#include "carrom/scene.hpp"
+
+#include <chrono>
+#include <memory>
+#include <string>
+
+namespace carrom::room {
+
+class BotBrain {
+public:
+    virtual ~BotBrain() = default;
+    // May take a while (a time budget); must not touch the room. waited: how long the turn
+    // waited for a free bot worker before this call, to be taken off the brain's budget so
+    // that the answer comes within the budget of the turn being handed out.
+    virtual Shot choose_shot(const rules::MatchState& state, int seat,
+                             std::chrono::milliseconds waited) = 0;
+};
+
+struct BotTurn {
+    int seat = 0;
+    int turn = 0;
+    rules::MatchState state;
+    std::shared_ptr<BotBrain> brain;
+};
+
+} // namespace carrom::room

@@ -1,0 +1,163 @@
+#pragma once
+// One room: two seats, spectators, the match and the shot being streamed. Plain single-threaded
+// logic (carrom-server calls it only on the room's strand; the client's offline demo on its UI
+// thread); time comes from the injected clock. The room answers its members through Peer::send:
+// broadcasts are encoded once and shared.
+//
+// Time-driven work happens in tick(): snapshots while a shot streams, the shot clock, grace
+// periods. next_wake_ms() says when tick() is next needed (nothing while the board is at rest
+// and no deadline is pending).
+
+#include "carrom/proto/client_messages.hpp"
+#include "carrom/proto/server_messages.hpp"
+#include "carrom/room/bot_seat.hpp"
+#include "carrom/room/clock.hpp"
+#include "carrom/room/peer.hpp"
+#include "carrom/room/room_counters.hpp"
+#include "carrom/room/room_observer.hpp"
+#include "carrom/room/shot_stream.hpp"
+#include "carrom/rules/match.hpp"
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace carrom::room {
+
+struct RoomConfig {
+    proto::RuleSet rule_set = proto::RuleSet::Icf;
+    rules::RulesConfig rules{};
+    PhysicsConfig physics{};
+    double snapshot_hz = 60.0;
+    double grace_s = 60.0;
+    double time_scale = 1.0; // match seconds per wall second while a shot plays
+};
+
+// Rules config for a create_room request: the rule set's defaults, the server's shot clock,
+// then the request's options.
+rules::RulesConfig make_rules_config(proto::RuleSet rule_set, const proto::RoomOptions& options,
+                                     double default_shot_clock_s);
+
+class Room {
+public:
+    // observer: told about members and game ends (may be null).
+    Room(std::string code, RoomConfig config, const Clock& clock, RoomCounters& counters,
+         RoomObserver* observer = nullptr);
+    ~Room();
+    Room(const Room&) = delete;
+    Room& operator=(const Room&) = delete;
+
+    const std::string& code() const { return code_; }
+    proto::RuleSet rule_set() const { return config_.rule_set; }
+
+    // Membership. On success the peer gets room_state and a keyframe; everyone else a
+    // room_state. Errors: room_full, already_in_room.
+    std::optional<proto::Error> join(std::shared_ptr<Peer> peer, proto::Role role);
+    // Reclaims the seat held by peer->player_id() (dropped or still connected elsewhere: the
+    // old connection is closed with "replaced"). Error bad_token if the player holds no seat.
+    std::optional<proto::Error> resume(std::shared_ptr<Peer> peer);
+    // Seats a bot in the first free seat. Error room_full.
+    std::optional<proto::Error> seat_bot(std::string name, std::shared_ptr<BotBrain> brain);
+    // Members are identified by their connection (a replaced connection has no say any more).
+    // Leaves for good: a seated player in a running game forfeits.
+    void leave(const Peer& peer);
+    // The connection dropped: a seat is kept for the grace period, a spectator is removed.
+    void disconnected(const Peer& peer);
+
+    // Game input (errors go to the sender).
+    void aim(Peer& peer, const proto::Aim& aim);
+    void shoot(Peer& peer, const proto::Shoot& shoot);
+    void rematch(Peer& peer);
+
+    // Bots: the bot's turn, once per turn; then its shot.
+    std::optional<BotTurn> take_bot_turn();
+    std::optional<proto::Error> bot_shoot(int seat, int turn, const Shot& shot);
+
+    void tick();
+    std::optional<std::int64_t> next_wake_ms() const;
+
+    // No human holds a seat (connected or within grace) and no spectator watches.
+    bool abandoned() const;
+    bool is_member(const Peer& peer) const;
+    int seat_of(const Peer& peer) const;              // -1 if none (a spectator or not a member)
+    int seat_of_player(std::int64_t player_id) const; // -1 if none
+    proto::Phase phase() const;
+    const rules::MatchState& match() const { return match_; }
+    std::int64_t seq() const { return seq_; }
+    proto::RoomState room_state(int you) const;
+
+private:
+    struct SeatSlot {
+        bool occupied = false;
+        std::int64_t player_id = -1;
+        std::string name;
+        std::shared_ptr<Peer> peer; // null while dropped or for a bot
+        std::shared_ptr<BotBrain> bot;
+        std::optional<std::int64_t> grace_deadline_ms;
+        bool wants_rematch = false;
+    };
+
+    void broadcast(const proto::ServerMessage& message, MessageKind kind = MessageKind::Normal,
+                   const Peer* except = nullptr);
+    void broadcast_room_state();
+    // The turn event for the current turn, to everyone.
+    void broadcast_turn();
+    void send_to(Peer& peer, const proto::ServerMessage& message);
+    void send_error(Peer& peer, std::string_view code, std::string message);
+    std::vector<Peer*> members();
+
+    // Game input from a seat for a turn: in_motion, wrong_phase before the game, then the rules'
+    // turn check (rules::check_turn) as a wire error.
+    std::optional<proto::Error> check_input(int seat, int turn) const;
+    std::optional<proto::Error> play(int seat, const Shot& shot);
+    // The one way into a seat, for players (slot.peer) and bots (slot.bot): the first free seat;
+    // the game starts once both are taken. Error room_full.
+    std::optional<proto::Error> fill_seat(SeatSlot slot);
+    void start_game(); // a game starts (counted); the first turn's clock runs
+    void start_turn();
+    void stream_tick(std::int64_t now_ms);
+    void finish_shot();
+    void apply_non_stroke(const rules::PlayResult& result, std::string_view reason);
+    void after_outcome(const rules::ShotOutcome& outcome, const rules::MatchState& before,
+                       std::string_view reason_override = {});
+    bool check_member_input(Peer& peer, int& seat);
+    void free_seat(int seat);
+    void notify(MembershipChange change, int seat, const std::string& name = {});
+    void check_grace(std::int64_t now_ms);
+    void check_shot_clock(std::int64_t now_ms);
+    std::optional<std::int64_t> shot_clock_deadline_ms() const;
+    std::vector<Body> board_with_striker() const;
+    proto::Snapshot current_keyframe() const;
+    bool game_running() const;
+
+    std::string code_;
+    RoomConfig config_;
+    const Clock& clock_;
+    RoomCounters& counters_;
+    RoomObserver* observer_;
+    ExactEngine engine_;
+    rules::MatchState match_;
+    std::array<SeatSlot, 2> seats_{};
+    std::vector<std::shared_ptr<Peer>> spectators_;
+    bool started_ = false; // a game has started (both seats were filled)
+    std::int64_t turn_started_ms_ = 0;
+    double aim_x_px_;      // the shooter's last aim position
+    std::int64_t seq_ = 0; // last snapshot sequence number broadcast
+
+    // The shot being streamed.
+    struct Streaming {
+        ShotStream stream;
+        rules::PlayResult result;
+        rules::MatchState before;
+        std::int64_t start_ms = 0;
+        std::int64_t next_ms = 0; // next snapshot due
+        int index = 0;            // snapshots sent
+    };
+    std::unique_ptr<Streaming> streaming_;
+    int bot_turn_taken_ = -1; // turn number whose BotTurn was handed out
+};
+
+} // namespace carrom::room

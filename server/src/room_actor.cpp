@@ -1,0 +1,82 @@
+#include "room_actor.hpp"
+
+#include "server_core.hpp"
+
+#include <spdlog/spdlog.h>
+
+namespace carrom::server {
+
+RoomActor::RoomActor(ServerCore& core, std::string code, room::RoomConfig config)
+    : core_(core), code_(code), strand_(asio::make_strand(core.ioc)), timer_(strand_),
+      logger_(code), room_(std::move(code), std::move(config), core.clock, core.metrics, &logger_) {
+}
+
+RoomActor::~RoomActor() = default;
+
+void RoomActor::stop() {
+    asio::post(strand_, [self = shared_from_this()] {
+        self->removed_ = true;
+        self->timer_.cancel();
+    });
+}
+
+void RoomActor::after() {
+    if (removed_) {
+        return;
+    }
+    if (room_.abandoned()) {
+        removed_ = true;
+        timer_.cancel();
+        core_.remove_room(code_);
+        return;
+    }
+    if (auto turn = room_.take_bot_turn()) {
+        // Bots think on bot_pool (one thread: at most one core for bots, the rest stays with the
+        // I/O threads); a turn that queued behind other bots gets that much less time.
+        const auto queued_at = std::chrono::steady_clock::now();
+        asio::post(core_.bot_pool,
+                   [self = shared_from_this(), t = std::move(*turn), queued_at]() mutable {
+                       const auto waited = std::chrono::duration_cast<std::chrono::milliseconds>(
+                           std::chrono::steady_clock::now() - queued_at);
+                       const Shot shot = t.brain->choose_shot(t.state, t.seat, waited);
+                       asio::post(self->strand_, [self, seat = t.seat, turn_number = t.turn, shot] {
+                           if (auto error = self->room_.bot_shoot(seat, turn_number, shot)) {
+                               spdlog::warn("room {}: bot shot refused: {} ({})", self->code_,
+                                            error->code, error->message);
+                           }
+                           self->after();
+                       });
+                   });
+    }
+    const auto wake = room_.next_wake_ms();
+    if (!wake) {
+        if (scheduled_ms_ >= 0) {
+            scheduled_ms_ = -1;
+            timer_.cancel();
+        }
+        return;
+    }
+    if (*wake != scheduled_ms_) {
+        schedule(*wake);
+    }
+}
+
+void RoomActor::schedule(std::int64_t wake_ms) {
+    scheduled_ms_ = wake_ms;
+    // SteadyClock counts whole milliseconds of steady_clock, so this fires when now_ms() >= wake.
+    timer_.expires_at(std::chrono::steady_clock::time_point(std::chrono::milliseconds(wake_ms)));
+    timer_.async_wait([self = shared_from_this(), wake_ms](boost::system::error_code ec) {
+        if (ec || self->removed_ || self->scheduled_ms_ != wake_ms) {
+            return;
+        }
+        self->scheduled_ms_ = -1;
+        self->on_timer();
+    });
+}
+
+void RoomActor::on_timer() {
+    room_.tick();
+    after();
+}
+
+} // namespace carrom::server

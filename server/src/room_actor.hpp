@@ -1,0 +1,53 @@
+#pragma once
+// Private to server/src: a room on its own strand, with the timer that drives Room::tick and the
+// hand-off of bot turns to the bot worker. The room's state is touched only on the strand.
+
+#include "asio_types.hpp"
+#include "room_logger.hpp"
+
+#include "carrom/room/room.hpp"
+
+#include <boost/asio/post.hpp>
+#include <boost/asio/steady_timer.hpp>
+#include <boost/asio/strand.hpp>
+
+#include <cstdint>
+#include <memory>
+#include <string>
+
+namespace carrom::server {
+
+struct ServerCore;
+
+class RoomActor : public std::enable_shared_from_this<RoomActor> {
+public:
+    RoomActor(ServerCore& core, std::string code, room::RoomConfig config);
+    ~RoomActor();
+
+    const std::string& code() const { return code_; }
+    // Runs f(room) on the room's strand, then reschedules the timer and handles bots and an
+    // abandoned room.
+    template <class F> void post(F&& f) {
+        asio::post(strand_, [self = shared_from_this(), f = std::forward<F>(f)]() mutable {
+            f(self->room_);
+            self->after();
+        });
+    }
+    void stop(); // cancel the timer (shutdown)
+
+private:
+    void after();
+    void schedule(std::int64_t wake_ms);
+    void on_timer();
+
+    ServerCore& core_;
+    std::string code_;
+    asio::strand<asio::io_context::executor_type> strand_;
+    asio::steady_timer timer_;
+    RoomLogger logger_; // before room_, which reports to it
+    room::Room room_;
+    std::int64_t scheduled_ms_ = -1;
+    bool removed_ = false;
+};
+
+} // namespace carrom::server

@@ -1,0 +1,117 @@
+// Server: the listener, the I/O threads, signals and shutdown around the shared ServerCore.
+#include "carrom/server/server.hpp"
+
+#include "listener.hpp"
+#include "room_actor.hpp"
+#include "server_core.hpp"
+#include "ws_session.hpp"
+
+#include <boost/asio/executor_work_guard.hpp>
+#include <boost/asio/signal_set.hpp>
+#include <spdlog/spdlog.h>
+
+#include <algorithm>
+#include <chrono>
+#include <optional>
+#include <stdexcept>
+#include <thread>
+#include <vector>
+
+namespace carrom::server {
+
+struct Server::Impl {
+    Impl(ServerSettings settings, BotFactory bots) : core(std::move(settings), std::move(bots)) {}
+
+    ServerCore core;
+    std::shared_ptr<Listener> listener;
+    std::vector<std::thread> threads;
+    std::optional<asio::executor_work_guard<asio::io_context::executor_type>> work;
+    bool stopped = false;
+};
+
+Server::Server(ServerSettings settings, BotFactory bots)
+    : impl_(std::make_unique<Impl>(std::move(settings), std::move(bots))) {}
+
+Server::~Server() {
+    shutdown();
+}
+
+std::uint16_t Server::listen() {
+    auto& core = impl_->core;
+    try {
+        const auto address = asio::ip::make_address(core.settings.host);
+        impl_->listener =
+            std::make_shared<Listener>(core, tcp::endpoint(address, core.settings.port));
+    } catch (const std::exception& e) {
+        throw std::runtime_error("cannot listen on " + core.settings.host + ":" +
+                                 std::to_string(core.settings.port) + ": " + e.what());
+    }
+    impl_->listener->run();
+    return impl_->listener->port();
+}
+
+void Server::start() {
+    impl_->work.emplace(impl_->core.ioc.get_executor());
+    const int count = std::max(1, impl_->core.settings.threads);
+    for (int i = 0; i < count; ++i) {
+        impl_->threads.emplace_back([this] { impl_->core.ioc.run(); });
+    }
+}
+
+void Server::shutdown() {
+    if (impl_->stopped) {
+        return;
+    }
+    impl_->stopped = true;
+    auto& core = impl_->core;
+    core.stopping = true;
+    if (impl_->listener) {
+        impl_->listener->stop();
+    }
+    std::vector<std::shared_ptr<WsSession>> sessions;
+    {
+        std::lock_guard lock(core.sessions_mutex);
+        for (auto& [ptr, weak] : core.sessions) {
+            if (auto s = weak.lock()) {
+                sessions.push_back(std::move(s));
+            }
+        }
+    }
+    for (auto& s : sessions) {
+        s->shutdown();
+    }
+    sessions.clear();
+    const auto deadline =
+        std::chrono::steady_clock::now() + to_duration(core.settings.shutdown_grace_s);
+    while (!impl_->threads.empty() && core.metrics.connections.load() > 0 &&
+           std::chrono::steady_clock::now() < deadline) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+    core.registry.for_each_room([](const std::shared_ptr<RoomActor>& room) { room->stop(); });
+    impl_->work.reset();
+    core.ioc.stop();
+    for (auto& t : impl_->threads) {
+        t.join();
+    }
+    impl_->threads.clear();
+    core.bot_pool.join();
+}
+
+void Server::run_until_signal() {
+    asio::io_context signal_ioc;
+    asio::signal_set signals(signal_ioc, SIGINT, SIGTERM);
+    signals.async_wait([](const boost::system::error_code&, int signal) {
+        spdlog::info("signal {}: shutting down", signal);
+    });
+    signal_ioc.run();
+    shutdown();
+}
+
+const Metrics& Server::metrics() const {
+    return impl_->core.metrics;
+}
+const ServerSettings& Server::settings() const {
+    return impl_->core.settings;
+}
+
+} // namespace carrom::server

@@ -1,0 +1,48 @@
+#include "server_core.hpp"
+
+#include "room_actor.hpp"
+
+#include <spdlog/spdlog.h>
+
+#include <algorithm>
+
+namespace carrom::server {
+
+ServerCore::ServerCore(ServerSettings s, BotFactory b)
+    : settings(std::move(s)), bots(std::move(b)), ioc(std::max(1, settings.threads)),
+      registry(random, static_cast<std::size_t>(std::max(0, settings.max_rooms))) {}
+
+void ServerCore::add_session(const std::shared_ptr<WsSession>& session) {
+    std::lock_guard lock(sessions_mutex);
+    sessions[session.get()] = session;
+}
+
+void ServerCore::remove_session(const WsSession* session) {
+    std::lock_guard lock(sessions_mutex);
+    sessions.erase(session);
+}
+
+std::variant<std::shared_ptr<RoomActor>, proto::Error>
+ServerCore::create_room(proto::RuleSet rule_set, const proto::RoomOptions& options) {
+    room::RoomConfig config;
+    config.rule_set = rule_set;
+    config.rules = room::make_rules_config(rule_set, options, settings.shot_clock_s);
+    config.snapshot_hz = settings.snapshot_hz;
+    config.time_scale = settings.time_scale;
+    config.grace_s = settings.grace_s;
+    auto created = registry.create_room(
+        [&](const std::string& code) { return std::make_shared<RoomActor>(*this, code, config); });
+    if (const auto* room = std::get_if<std::shared_ptr<RoomActor>>(&created)) {
+        metrics.rooms.fetch_add(1, std::memory_order_relaxed);
+        spdlog::info("room {} created ({})", (*room)->code(), proto::to_string(rule_set));
+    }
+    return created;
+}
+
+void ServerCore::remove_room(const std::string& code) {
+    registry.remove_room(code);
+    metrics.rooms.fetch_sub(1, std::memory_order_relaxed);
+    spdlog::info("room {} closed", code);
+}
+
+} // namespace carrom::server

@@ -1,0 +1,58 @@
+#pragma once
+// Private to server/src: what the listener, the sessions and the room actors share. Lives as long
+// as the Server.
+
+#include "asio_types.hpp"
+
+#include "carrom/proto/client_messages.hpp"
+#include "carrom/room/clock.hpp"
+#include "carrom/server/bot_factory.hpp"
+#include "carrom/server/metrics.hpp"
+#include "carrom/server/random.hpp"
+#include "carrom/server/registry.hpp"
+#include "carrom/server/settings.hpp"
+
+#include <boost/asio/thread_pool.hpp>
+
+#include <atomic>
+#include <memory>
+#include <mutex>
+#include <unordered_map>
+#include <variant>
+
+namespace carrom::server {
+
+class RoomActor;
+class WsSession;
+
+using SessionRegistry = Registry<RoomActor, std::weak_ptr<WsSession>>;
+
+struct ServerCore {
+    ServerCore(ServerSettings s, BotFactory b);
+
+    // Declaration order matters for destruction: objects owned by pending handlers die with
+    // ioc and may still touch clock, random and metrics; rooms in the registry own timers that
+    // need ioc.
+    ServerSettings settings;
+    BotFactory bots;
+    room::SteadyClock clock;
+    SystemRandom random;
+    Metrics metrics;
+    asio::io_context ioc;
+    SessionRegistry registry;
+    asio::thread_pool bot_pool{1}; // bot thinking, never on an I/O thread
+    std::atomic<bool> stopping{false};
+
+    // Live WebSocket sessions (for shutdown).
+    std::mutex sessions_mutex;
+    std::unordered_map<const WsSession*, std::weak_ptr<WsSession>> sessions;
+    void add_session(const std::shared_ptr<WsSession>& session);
+    void remove_session(const WsSession* session);
+
+    // A new room (counted in metrics, logged), or an error.
+    std::variant<std::shared_ptr<RoomActor>, proto::Error>
+    create_room(proto::RuleSet rule_set, const proto::RoomOptions& options);
+    void remove_room(const std::string& code);
+};
+
+} // namespace carrom::server

@@ -1,0 +1,548 @@
+#include "ws_session.hpp"
+
+#include "room_actor.hpp"
+#include "server_core.hpp"
+
+#include "carrom/proto/codec.hpp"
+#include "carrom/proto/limits.hpp"
+#include "carrom/proto/version.hpp"
+
+#include <boost/asio/post.hpp>
+#include <boost/beast/core/buffers_to_string.hpp>
+#include <spdlog/spdlog.h>
+
+#include <algorithm>
+
+namespace carrom::server {
+
+namespace websocket = beast::websocket;
+
+namespace {
+
+// Frames above this are refused by Beast itself (close 1009 without an error message); frames
+// between max_message_bytes and this get a "too_large" error first.
+std::size_t hard_frame_limit(std::size_t max_message_bytes) {
+    return std::max<std::size_t>(max_message_bytes * 4, 65536);
+}
+
+constexpr std::chrono::seconds kKillAfter{3}; // a close that does not finish is cut off
+
+} // namespace
+
+// --- WsSession --------------------------------------------------------------------------------
+
+WsSession::WsSession(ServerCore& core, beast::tcp_stream stream)
+    : core_(core), ws_(std::move(stream)), hello_timer_(ws_.get_executor()),
+      idle_timer_(ws_.get_executor()), kill_timer_(ws_.get_executor()),
+      quick_timer_(ws_.get_executor()),
+      queue_(core.settings.max_queue_bytes, core.settings.snapshot_backlog),
+      limiter_(core.settings.max_rate, core.settings.rate_burst, core.clock.now_ms()) {}
+
+WsSession::~WsSession() = default;
+
+void WsSession::run(http::request<http::string_body> request) {
+    beast::get_lowest_layer(ws_).expires_never();
+    websocket::stream_base::timeout timeout{};
+    timeout.handshake_timeout = to_duration(core_.settings.handshake_timeout_s);
+    timeout.idle_timeout = websocket::stream_base::none();
+    timeout.keep_alive_pings = false;
+    ws_.set_option(timeout);
+    ws_.read_message_max(hard_frame_limit(core_.settings.max_message_bytes));
+    ws_.set_option(websocket::stream_base::decorator(
+        [](websocket::response_type& res) { res.set(http::field::server, "carrom-server"); }));
+    ws_.async_accept(request, beast::bind_front_handler(&WsSession::on_accept, shared_from_this()));
+}
+
+void WsSession::on_accept(beast::error_code ec) {
+    if (ec) {
+        spdlog::debug("websocket accept failed: {}", ec.message());
+        return;
+    }
+    accepted_ = true;
+    core_.metrics.connections_total.fetch_add(1, std::memory_order_relaxed);
+    const auto open = core_.metrics.connections.fetch_add(1, std::memory_order_relaxed) + 1;
+    core_.add_session(shared_from_this());
+    last_activity_ms_ = core_.clock.now_ms();
+    ws_.control_callback([this](websocket::frame_type kind, beast::string_view) {
+        if (kind == websocket::frame_type::pong) {
+            ping_in_flight_ = false;
+        }
+        last_activity_ms_ = core_.clock.now_ms();
+    });
+    if (open > core_.settings.max_connections || core_.stopping) {
+        core_.metrics.rejected_connections_total.fetch_add(1, std::memory_order_relaxed);
+        if (core_.stopping) {
+            fail(proto::code::kShuttingDown, "The server is shutting down.",
+                 proto::kCloseGoingAway);
+        } else {
+            fail(proto::code::kServerFull, "The server is full; try again later.",
+                 proto::kCloseTryAgainLater);
+        }
+        do_read();
+        return;
+    }
+    hello_timer_.expires_after(to_duration(core_.settings.handshake_timeout_s));
+    hello_timer_.async_wait([self = shared_from_this()](beast::error_code timer_ec) {
+        if (!timer_ec && !self->hello_done_ && !self->close_code_) {
+            self->fail(proto::code::kHandshakeTimeout, "No hello arrived in time.",
+                       proto::kClosePolicy);
+        }
+    });
+    arm_idle_timer();
+    do_read();
+}
+
+void WsSession::do_read() {
+    ws_.async_read(buffer_, beast::bind_front_handler(&WsSession::on_read, shared_from_this()));
+}
+
+void WsSession::on_read(beast::error_code ec, std::size_t bytes) {
+    if (ec) {
+        if (ec == websocket::error::message_too_big) {
+            core_.metrics.errors_sent_total.fetch_add(1, std::memory_order_relaxed);
+        }
+        end();
+        return;
+    }
+    last_activity_ms_ = core_.clock.now_ms();
+    core_.metrics.messages_in_total.fetch_add(1, std::memory_order_relaxed);
+    core_.metrics.bytes_in_total.fetch_add(static_cast<std::int64_t>(bytes),
+                                           std::memory_order_relaxed);
+    const bool binary = ws_.got_binary();
+    const std::string text = beast::buffers_to_string(buffer_.data());
+    buffer_.consume(buffer_.size());
+    if (!close_code_) {
+        if (binary) {
+            fail(proto::code::kBinaryFrame, "Only text frames are accepted.",
+                 proto::kCloseUnsupportedData);
+        } else if (text.size() > core_.settings.max_message_bytes) {
+            fail(proto::code::kTooLarge,
+                 "The message is " + std::to_string(text.size()) + " bytes; the limit is " +
+                     std::to_string(core_.settings.max_message_bytes) + ".",
+                 proto::kCloseTooBig);
+        } else {
+            switch (limiter_.on_message(core_.clock.now_ms())) {
+            case RateLimiter::Verdict::Accept:
+                handle_text(text);
+                break;
+            case RateLimiter::Verdict::Reject:
+                send_error(proto::code::kRateLimited, "Too many messages; this one was ignored.");
+                break;
+            case RateLimiter::Verdict::Disconnect:
+                fail(proto::code::kRateLimited, "Too many messages.", proto::kClosePolicy);
+                break;
+            }
+        }
+    }
+    do_read();
+}
+
+void WsSession::handle_text(std::string_view text) {
+    const auto decoded = proto::decode_client(text, core_.settings.max_message_bytes);
+    if (!decoded.ok()) {
+        send_error(decoded.error.code, decoded.error.message);
+        return;
+    }
+    handle(*decoded.message);
+}
+
+void WsSession::handle(const proto::ClientMessage& message) {
+    if (const auto* hello = std::get_if<proto::Hello>(&message)) {
+        handle_hello(*hello);
+        return;
+    }
+    if (!hello_done_) {
+        send_error(proto::code::kHelloRequired, "Send hello first.");
+        return;
+    }
+    if (const auto* ping = std::get_if<proto::Ping>(&message)) {
+        send_now({std::make_shared<const std::string>(
+                      proto::encode(proto::Pong{ping->nonce, core_.clock.now_ms()})),
+                  room::MessageKind::Normal});
+    } else if (const auto* create = std::get_if<proto::CreateRoom>(&message)) {
+        handle_create(*create);
+    } else if (const auto* join = std::get_if<proto::JoinRoom>(&message)) {
+        handle_join(*join);
+    } else if (const auto* quick = std::get_if<proto::QuickMatch>(&message)) {
+        handle_quick_match(*quick);
+    } else if (std::holds_alternative<proto::Leave>(message)) {
+        stop_quick_match();
+        if (room_) {
+            room_->post([self = shared_from_this()](room::Room& room) { room.leave(*self); });
+            room_.reset();
+        }
+    } else if (!room_) {
+        send_error(proto::code::kNotInRoom, "Join a room first.");
+    } else if (const auto* aim = std::get_if<proto::Aim>(&message)) {
+        room_->post(
+            [self = shared_from_this(), a = *aim](room::Room& room) { room.aim(*self, a); });
+    } else if (const auto* shoot = std::get_if<proto::Shoot>(&message)) {
+        room_->post(
+            [self = shared_from_this(), s = *shoot](room::Room& room) { room.shoot(*self, s); });
+    } else if (std::holds_alternative<proto::Rematch>(message)) {
+        room_->post([self = shared_from_this()](room::Room& room) { room.rematch(*self); });
+    }
+}
+
+void WsSession::handle_hello(const proto::Hello& hello) {
+    if (hello_done_) {
+        send_error(proto::code::kAlreadyHello, "This connection already said hello.");
+        return;
+    }
+    if (hello.version != proto::kProtocolVersion) {
+        fail(proto::code::kVersionMismatch,
+             "The server speaks protocol version " + std::to_string(proto::kProtocolVersion) +
+                 "; the client sent " + std::to_string(hello.version) + ".",
+             proto::kCloseVersionMismatch);
+        return;
+    }
+    hello_done_ = true;
+    hello_timer_.cancel();
+    name_ = hello.name;
+    std::optional<PlayerRecord> record;
+    if (hello.resume_token) {
+        record = core_.registry.find_player(*hello.resume_token);
+        if (!record) {
+            send_error(proto::code::kBadToken,
+                       "That resume token is unknown or expired; you join as a new player.");
+        }
+    }
+    if (!record) {
+        record = core_.registry.new_player();
+    }
+    player_id_ = record->player_id;
+    token_ = record->token;
+    send_now({std::make_shared<const std::string>(proto::encode(proto::Welcome{
+                  proto::kProtocolVersion, player_id_, token_, core_.clock.now_ms()})),
+              room::MessageKind::Normal});
+    if (!hello.resume_token || record->room_code.empty()) {
+        return;
+    }
+    auto room = core_.registry.find_room(record->room_code);
+    if (!room) {
+        send_error(proto::code::kBadToken, "That room has closed.");
+        return;
+    }
+    room_ = room;
+    room->post([self = shared_from_this(), room](room::Room& r) {
+        if (auto error = r.resume(self)) {
+            self->send({std::make_shared<const std::string>(proto::encode(*error)),
+                        room::MessageKind::Normal});
+            asio::post(self->ws_.get_executor(), [self, room] {
+                if (self->room_ == room) {
+                    self->room_.reset();
+                }
+            });
+        }
+    });
+}
+
+void WsSession::handle_create(const proto::CreateRoom& create) {
+    if (room_) {
+        send_error(proto::code::kAlreadyInRoom, "Leave this room first.");
+        return;
+    }
+    if (create.bot) {
+        if (!core_.bots) {
+            send_error(proto::code::kUnsupported, "This server has no bots.");
+            return;
+        }
+        enter_bot_room(create.rule_set, create.options, create.bot->level);
+        return;
+    }
+    auto created = core_.create_room(create.rule_set, create.options);
+    if (auto* error = std::get_if<proto::Error>(&created)) {
+        send_error(error->code, error->message);
+        return;
+    }
+    enter_room(std::get<std::shared_ptr<RoomActor>>(created), proto::Role::Player);
+}
+
+void WsSession::enter_bot_room(proto::RuleSet rule_set, const proto::RoomOptions& options,
+                               proto::BotLevel level) {
+    std::shared_ptr<room::BotBrain> brain = core_.bots(level);
+    auto created = core_.create_room(rule_set, options);
+    if (auto* error = std::get_if<proto::Error>(&created)) {
+        send_error(error->code, error->message);
+        return;
+    }
+    auto room = std::get<std::shared_ptr<RoomActor>>(created);
+    enter_room(room, proto::Role::Player);
+    const std::string bot_name = "Bot (" + std::string(proto::to_string(level)) + ")";
+    room->post([brain, bot_name](room::Room& r) { (void)r.seat_bot(bot_name, brain); });
+}
+
+void WsSession::handle_join(const proto::JoinRoom& join) {
+    if (room_) {
+        send_error(proto::code::kAlreadyInRoom, "Leave this room first.");
+        return;
+    }
+    auto room = core_.registry.find_room(join.code);
+    if (!room) {
+        send_error(proto::code::kRoomNotFound, "No room has the code " + join.code + ".");
+        return;
+    }
+    enter_room(room, join.as);
+}
+
+void WsSession::enter_room(const std::shared_ptr<RoomActor>& room, proto::Role role) {
+    stop_quick_match();
+    room_ = room;
+    if (role == proto::Role::Player) {
+        core_.registry.set_player_room(token_, room->code());
+    }
+    room->post([self = shared_from_this(), room, role](room::Room& r) {
+        if (auto error = r.join(self, role)) {
+            self->send({std::make_shared<const std::string>(proto::encode(*error)),
+                        room::MessageKind::Normal});
+            asio::post(self->ws_.get_executor(), [self, room] {
+                if (self->room_ == room) {
+                    self->room_.reset();
+                }
+            });
+        }
+    });
+}
+
+void WsSession::handle_quick_match(const proto::QuickMatch& quick) {
+    if (room_) {
+        send_error(proto::code::kAlreadyInRoom, "Leave this room first.");
+        return;
+    }
+    for (;;) {
+        auto partner_ref = core_.registry.quick_match(quick.rule_set, player_id_, weak_from_this());
+        if (!partner_ref) {
+            // Queued (or already queued): paired when the next player asks, or given a bot once
+            // the wait is over. A repeated quick_match keeps the first wait.
+            const double wait_s = core_.settings.quick_match_bot_s;
+            if (!quick_waiting_ && wait_s > 0.0 && core_.bots) {
+                quick_waiting_ = true;
+                const auto generation = ++quick_generation_;
+                quick_timer_.expires_after(to_duration(wait_s));
+                quick_timer_.async_wait([self = shared_from_this(), generation,
+                                         rule_set = quick.rule_set](beast::error_code ec) {
+                    if (!ec) {
+                        self->on_quick_match_wait(generation, rule_set);
+                    }
+                });
+            }
+            return;
+        }
+        auto partner = partner_ref->lock();
+        if (!partner) {
+            continue; // that player left; try the next one
+        }
+        auto created = core_.create_room(quick.rule_set, proto::RoomOptions{});
+        if (auto* error = std::get_if<proto::Error>(&created)) {
+            send_error(error->code, error->message);
+            return;
+        }
+        auto room = std::get<std::shared_ptr<RoomActor>>(created);
+        partner->assign_room(room);
+        enter_room(room, proto::Role::Player);
+        return;
+    }
+}
+
+void WsSession::stop_quick_match() {
+    if (player_id_ >= 0) {
+        (void)core_.registry.cancel_quick_match(player_id_);
+    }
+    if (quick_waiting_) {
+        quick_waiting_ = false;
+        ++quick_generation_;
+        quick_timer_.cancel();
+    }
+}
+
+void WsSession::on_quick_match_wait(std::uint64_t generation, proto::RuleSet rule_set) {
+    if (generation != quick_generation_ || !quick_waiting_) {
+        return; // cancelled, or a newer wait
+    }
+    quick_waiting_ = false;
+    if (ended_ || close_code_ || room_) {
+        return;
+    }
+    // Only a player still in the queue gets a bot: if a partner took it out first, that
+    // partner's room is on its way (assign_room).
+    if (!core_.registry.cancel_quick_match(player_id_)) {
+        return;
+    }
+    spdlog::debug("player {}: no quick-match partner, seating a bot", player_id_);
+    enter_bot_room(rule_set, proto::RoomOptions{}, core_.settings.quick_match_bot_level);
+}
+
+void WsSession::assign_room(std::shared_ptr<RoomActor> room) {
+    asio::post(ws_.get_executor(), [self = shared_from_this(), room] {
+        if (!self->room_ && !self->ended_ && !self->close_code_) {
+            self->enter_room(room, proto::Role::Player);
+        }
+    });
+}
+
+// --- writing ----------------------------------------------------------------------------------
+
+void WsSession::send(room::Outgoing message) {
+    asio::post(ws_.get_executor(), [self = shared_from_this(), m = std::move(message)]() mutable {
+        self->send_now(std::move(m));
+    });
+}
+
+void WsSession::send_now(room::Outgoing message) {
+    if (ended_ || close_started_ || !accepted_) {
+        return;
+    }
+    switch (queue_.push(std::move(message))) {
+    case WriteQueue::Push::Queued:
+        break;
+    case WriteQueue::Push::DroppedSnapshot:
+        core_.metrics.snapshots_dropped_total.fetch_add(1, std::memory_order_relaxed);
+        keyframe_request_ = true;
+        break;
+    case WriteQueue::Push::DroppedCue:
+        core_.metrics.cues_dropped_total.fetch_add(1, std::memory_order_relaxed);
+        break;
+    case WriteQueue::Push::Overflow:
+        core_.metrics.slow_client_disconnects_total.fetch_add(1, std::memory_order_relaxed);
+        spdlog::info("player {}: write queue full, disconnecting", player_id_);
+        beast::get_lowest_layer(ws_).socket().close();
+        return;
+    }
+    do_write();
+}
+
+void WsSession::send_error(std::string_view code, std::string message) {
+    core_.metrics.errors_sent_total.fetch_add(1, std::memory_order_relaxed);
+    send_now({std::make_shared<const std::string>(proto::encode_error(code, message)),
+              room::MessageKind::Normal});
+}
+
+void WsSession::fail(std::string_view code, std::string message, int close_code) {
+    send_error(code, message);
+    begin_close(close_code, std::string(code));
+}
+
+void WsSession::close(int close_code, std::string reason) {
+    asio::post(ws_.get_executor(), [self = shared_from_this(), close_code, reason] {
+        self->begin_close(close_code, reason);
+    });
+}
+
+void WsSession::shutdown() {
+    asio::post(ws_.get_executor(), [self = shared_from_this()] {
+        self->fail(proto::code::kShuttingDown, "The server is shutting down.",
+                   proto::kCloseGoingAway);
+    });
+}
+
+void WsSession::begin_close(int close_code, std::string reason) {
+    if (close_code_ || ended_) {
+        return;
+    }
+    close_code_ = close_code;
+    close_reason_ = std::move(reason);
+    kill_timer_.expires_after(kKillAfter);
+    kill_timer_.async_wait([self = shared_from_this()](beast::error_code ec) {
+        if (!ec && !self->ended_) {
+            beast::error_code ignored;
+            beast::get_lowest_layer(self->ws_).socket().close(ignored);
+        }
+    });
+    do_write();
+}
+
+void WsSession::do_write() {
+    if (close_started_ || ended_) {
+        return;
+    }
+    if (auto next = queue_.start_write()) {
+        ws_.text(true);
+        ws_.async_write(asio::buffer(*next->text), [self = shared_from_this(), text = next->text](
+                                                       beast::error_code ec, std::size_t bytes) {
+            self->on_write(ec, bytes);
+        });
+        return;
+    }
+    if (close_code_ && !queue_.writing()) {
+        close_started_ = true;
+        websocket::close_reason reason(static_cast<std::uint16_t>(*close_code_));
+        reason.reason = close_reason_;
+        ws_.async_close(reason, [self = shared_from_this()](beast::error_code) {
+            beast::error_code ignored;
+            beast::get_lowest_layer(self->ws_).socket().close(ignored);
+        });
+    }
+}
+
+void WsSession::on_write(beast::error_code ec, std::size_t bytes) {
+    queue_.finish_write();
+    if (ec) {
+        beast::error_code ignored;
+        beast::get_lowest_layer(ws_).socket().close(ignored);
+        return;
+    }
+    core_.metrics.messages_out_total.fetch_add(1, std::memory_order_relaxed);
+    core_.metrics.bytes_out_total.fetch_add(static_cast<std::int64_t>(bytes),
+                                            std::memory_order_relaxed);
+    do_write();
+}
+
+// --- keep-alive -------------------------------------------------------------------------------
+
+void WsSession::arm_idle_timer() {
+    const auto period =
+        std::max(to_duration(core_.settings.idle_timeout_s / 4.0), std::chrono::milliseconds(20));
+    idle_timer_.expires_after(period);
+    idle_timer_.async_wait([self = shared_from_this()](beast::error_code ec) {
+        if (!ec) {
+            self->on_idle_timer();
+        }
+    });
+}
+
+void WsSession::on_idle_timer() {
+    if (ended_ || close_code_) {
+        return;
+    }
+    const auto idle_ms = core_.clock.now_ms() - last_activity_ms_;
+    const auto limit_ms = to_duration(core_.settings.idle_timeout_s).count();
+    if (idle_ms >= limit_ms) {
+        fail(proto::code::kIdleTimeout, "Nothing arrived for too long.", proto::kClosePolicy);
+        return;
+    }
+    if (idle_ms >= limit_ms / 2 && !ping_in_flight_) {
+        ping_in_flight_ = true;
+        ws_.async_ping({}, [self = shared_from_this()](beast::error_code) {});
+    }
+    arm_idle_timer();
+}
+
+// --- end --------------------------------------------------------------------------------------
+
+void WsSession::end() {
+    if (ended_) {
+        return;
+    }
+    ended_ = true;
+    hello_timer_.cancel();
+    idle_timer_.cancel();
+    kill_timer_.cancel();
+    quick_timer_.cancel();
+    quick_waiting_ = false;
+    if (!accepted_) {
+        return;
+    }
+    core_.metrics.connections.fetch_sub(1, std::memory_order_relaxed);
+    core_.remove_session(this);
+    if (player_id_ >= 0) {
+        core_.registry.cancel_quick_match(player_id_);
+    }
+    if (room_) {
+        room_->post([self = shared_from_this()](room::Room& room) { room.disconnected(*self); });
+        room_.reset();
+    } else if (!token_.empty()) {
+        core_.registry.forget_player(token_);
+    }
+}
+
+} // namespace carrom::server

@@ -1,0 +1,103 @@
+#pragma once
+// Private to server/src: one WebSocket connection. Reads and validates client messages, keeps
+// session-level state (hello, rate limit, timeouts, the quick-match wait), forwards game input to
+// its room's strand, and writes through a bounded queue (one write in flight). Every member is
+// touched only on the session's strand, except the Peer interface, which posts to it.
+
+#include "asio_types.hpp"
+
+#include "carrom/proto/client_messages.hpp"
+#include "carrom/room/peer.hpp"
+#include "carrom/server/rate_limiter.hpp"
+#include "carrom/server/write_queue.hpp"
+
+#include <boost/asio/steady_timer.hpp>
+#include <boost/beast/core/flat_buffer.hpp>
+#include <boost/beast/websocket.hpp>
+
+#include <atomic>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+
+namespace carrom::server {
+
+class RoomActor;
+struct ServerCore;
+
+class WsSession final : public room::Peer, public std::enable_shared_from_this<WsSession> {
+public:
+    WsSession(ServerCore& core, beast::tcp_stream stream);
+    ~WsSession() override;
+
+    void run(http::request<http::string_body> request);
+
+    // Peer
+    std::int64_t player_id() const override { return player_id_; }
+    const std::string& name() const override { return name_; }
+    void send(room::Outgoing message) override;
+    bool take_keyframe_request() override { return keyframe_request_.exchange(false); }
+    void close(int close_code, std::string reason) override;
+
+    // Quick match paired this session into a room (any thread).
+    void assign_room(std::shared_ptr<RoomActor> room);
+    // Server shutdown (any thread).
+    void shutdown();
+
+private:
+    void on_accept(beast::error_code ec);
+    void do_read();
+    void on_read(beast::error_code ec, std::size_t bytes);
+    void handle_text(std::string_view text);
+    void handle(const proto::ClientMessage& message);
+    void handle_hello(const proto::Hello& hello);
+    void handle_create(const proto::CreateRoom& create);
+    void handle_join(const proto::JoinRoom& join);
+    void handle_quick_match(const proto::QuickMatch& quick);
+    // Leaves the quick-match queue and stops the bot fallback timer.
+    void stop_quick_match();
+    void on_quick_match_wait(std::uint64_t generation, proto::RuleSet rule_set);
+    // A new room with this player in seat 0 and a server bot in seat 1 (create_room with bot).
+    void enter_bot_room(proto::RuleSet rule_set, const proto::RoomOptions& options,
+                        proto::BotLevel level);
+    void enter_room(const std::shared_ptr<RoomActor>& room, proto::Role role);
+    void send_now(room::Outgoing message);
+    void send_error(std::string_view code, std::string message);
+    void fail(std::string_view code, std::string message, int close_code);
+    void begin_close(int close_code, std::string reason);
+    void do_write();
+    void on_write(beast::error_code ec, std::size_t bytes);
+    void arm_idle_timer();
+    void on_idle_timer();
+    void end();
+
+    ServerCore& core_;
+    beast::websocket::stream<beast::tcp_stream> ws_;
+    beast::flat_buffer buffer_;
+    asio::steady_timer hello_timer_;
+    asio::steady_timer idle_timer_;
+    asio::steady_timer kill_timer_;
+    asio::steady_timer quick_timer_; // quick match: seat a bot when it fires
+    std::uint64_t quick_generation_ = 0;
+    bool quick_waiting_ = false;
+    WriteQueue queue_;
+    RateLimiter limiter_;
+    std::atomic<bool> keyframe_request_{false};
+
+    bool accepted_ = false;
+    bool hello_done_ = false;
+    bool ended_ = false;
+    bool ping_in_flight_ = false;
+    std::optional<int> close_code_; // a close was requested
+    std::string close_reason_;
+    bool close_started_ = false;
+    std::int64_t last_activity_ms_ = 0;
+
+    std::int64_t player_id_ = -1;
+    std::string name_;
+    std::string token_;
+    std::shared_ptr<RoomActor> room_;
+};
+
+} // namespace carrom::server
