@@ -4,10 +4,12 @@
 #include "carrom/client/aim_controller.hpp"
 #include "carrom/client/board_report.hpp"
 #include "carrom/client/demo_link.hpp"
+#include "carrom/client/game_over_text.hpp"
 #include "carrom/client/match_model.hpp"
 #include "carrom/client/screen_mapping.hpp"
 #include "draw_util.hpp"
 #include "font.hpp"
+#include "game_over_panel.hpp"
 #include "hud_painter.hpp"
 #include "lobby_view.hpp"
 #include "network_link.hpp"
@@ -113,6 +115,8 @@ private:
     }
     void handle_event(const sf::Event& e);
     void handle_match_input(const sf::Event& e);
+    void handle_game_over_input(const sf::Event& e);
+    void back_to_lobby();
     void update(double now);
     void sync_aim(double now);
     void draw(double now);
@@ -139,6 +143,7 @@ private:
     BoardPainter board_painter_;
     HudPainter hud_;
     LobbyView lobby_;
+    GameOverPanel game_over_;
     SoundPlayer sound_;
     ClientSession session_;
     sf::RenderWindow window_;
@@ -152,6 +157,7 @@ private:
     int shots_seen_ = 0;                    // shot results received
     std::optional<Vec2> aim_striker_drawn_; // a striker being placed, drawn this frame
     std::string announced_room_;            // the room code last printed on stdout
+    bool rematch_asked_ = false;            // sent `rematch` for the game that is over
 };
 
 void App::handle_event(const sf::Event& e) {
@@ -172,9 +178,30 @@ void App::handle_event(const sf::Event& e) {
         }
         return;
     }
-    if (model_.view().in_room) {
+    if (model_.view().in_room && model_.view().phase == proto::Phase::GameOver) {
+        handle_game_over_input(e);
+    } else if (model_.view().in_room) {
         handle_match_input(e);
     }
+}
+
+void App::handle_game_over_input(const sf::Event& e) {
+    const auto choice = game_over_.on_event(e, game_over_text(model_.view(), rematch_asked_));
+    if (choice == GameOverPanel::Choice::Rematch) {
+        rematch_asked_ = session_.send_game(proto::Rematch{});
+    } else if (choice == GameOverPanel::Choice::Lobby) {
+        back_to_lobby();
+    }
+}
+
+void App::back_to_lobby() {
+    session_.leave_room();
+    model_.reset();
+    aim_.end_turn();
+    aim_turn_ = -1;
+    shot_sent_turn_ = -1;
+    rematch_asked_ = false;
+    announced_room_.clear();
 }
 
 void App::handle_match_input(const sf::Event& e) {
@@ -206,9 +233,6 @@ void App::handle_match_input(const sf::Event& e) {
             int dir = e.key.code == sf::Keyboard::Left ? -1 : 1;
             dir = model_.flipped() ? -dir : dir;
             aim_.nudge(dir, e.key.shift, pieces);
-        } else if (e.key.code == sf::Keyboard::R && model_.view().phase == proto::Phase::GameOver) {
-            session_.send_game(proto::Rematch{});
-            model_.log().post("Rematch asked for", Tone::Info, clock_.now());
         }
         break;
     default:
@@ -259,6 +283,9 @@ void App::update(double now) {
     }
     for (const ClientSession::PongSample& p : session_.take_pongs()) {
         model_.server_clock().round_trip(p.server_ms, p.sent_s, p.received_s);
+    }
+    if (model_.view().phase != proto::Phase::GameOver) {
+        rematch_asked_ = false; // a new game started (or none is over)
     }
     // Render first: the aim starts in the very frame the board comes to rest.
     bodies_ = model_.render(now);
@@ -356,6 +383,10 @@ void App::draw(double now) {
                             phase == SessionPhase::InRoom || phase == SessionPhase::Joining,
                             session_.rtt_ms()};
         hud_.draw(window_, blitter_, layout_, model_, line, now);
+        if (model_.view().phase == proto::Phase::GameOver) {
+            game_over_.draw(window_, blitter_, hud_.texts(), layout_.board,
+                            game_over_text(model_.view(), rematch_asked_));
+        }
         if (phase == SessionPhase::Reconnecting || phase == SessionPhase::Failed ||
             phase == SessionPhase::Connecting || phase == SessionPhase::Greeting) {
             draw_status_panel(phase == SessionPhase::Failed ? "Disconnected" : "Reconnecting",

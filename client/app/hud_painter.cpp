@@ -118,7 +118,11 @@ void HudPainter::sketch_seat(Sketch& sk, const Rect& area, const MatchModel& mod
     if (seat == v.you) {
         name += " (you)";
     }
+    // The colour, and while the seat plays: what it has left to pocket.
     std::string sub = colour_word(s.colour);
+    if (const auto coins = model.coins_left(seat); coins && s.occupied) {
+        sub = coins_left_text(*coins);
+    }
     if (s.dues > 0) {
         sub +=
             (sub.empty() ? "" : ", ") + std::string("owes ") + count_words(s.dues, "due", "dues");
@@ -160,7 +164,7 @@ void HudPainter::sketch_centre(Sketch& sk, const Rect& area, const MatchModel& m
     case proto::Phase::GameOver:
         status = v.winner < 0        ? "Game drawn"
                  : v.winner == v.you ? "You won!"
-                                     : model.seat_name(v.winner) + " won";
+                                     : player_name_at_end(v, v.winner) + " won";
         colour = kGold;
         break;
     }

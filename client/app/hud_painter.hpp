@@ -1,7 +1,8 @@
 #pragma once
-// The HUD: seats with names, colours, scores and dues along the top; whose turn, the shot clock
-// and the queen in the middle; room, rule set, connection and round trip along the bottom;
-// recent messages over the board; the room code large while the room waits for a player.
+// The HUD: seats with names, scores, dues and the coins each has left to pocket along the top;
+// whose turn, the shot clock and the queen in the middle; room, rule set, connection and round trip
+// along the bottom; recent messages over the board; the room code large while the room waits for a
+// player.
 
 #include "cached_layer.hpp"
 #include "carrom/client/match_model.hpp"

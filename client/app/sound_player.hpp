@@ -1,6 +1,7 @@
 #pragma once
-// Plays the synthesised game sounds. Audio is optional: with --mute, or when the audio device
-// cannot be opened (e.g. under Xvfb on a machine without sound), play() does nothing.
+// Plays the synthesised game sounds. Audio is optional: with --mute (or for screenshots and the
+// benchmark) no device is opened; when the audio device cannot be opened (e.g. under Xvfb on a
+// machine without a sound card) the player says so once on stderr and play() does nothing.
 
 #include "carrom/client/sound_synth.hpp"
 
@@ -21,7 +22,7 @@ public:
 private:
     bool enabled_ = false;
     std::vector<sf::SoundBuffer> buffers_; // created only when audio is on (opens the device)
-    std::vector<sf::Sound> voices_;        // created only when audio is on
+    std::vector<sf::Sound> voices_;        // created only when the device opened
     std::size_t next_ = 0;
 };
 

@@ -29,6 +29,13 @@ std::string seconds_text(double s) {
     return out.str();
 }
 
+// Whether a message belongs to a room (as opposed to the connection).
+bool is_room_message(const proto::ServerMessage& m) {
+    return std::holds_alternative<proto::RoomState>(m) ||
+           std::holds_alternative<proto::Snapshot>(m) || std::holds_alternative<proto::Event>(m) ||
+           std::holds_alternative<proto::ShotResult>(m);
+}
+
 } // namespace
 
 ClientSession::ClientSession(LinkFactory factory, std::string name, const SessionConfig& config)
@@ -80,6 +87,7 @@ void ClientSession::send_request() {
         break;
     }
     request_sent_ = true;
+    left_room_ = false;
     phase_ = SessionPhase::Joining;
     status_ = r.kind == RoomRequest::Kind::Quick ? "Waiting for an opponent..." : "Joining...";
 }
@@ -90,6 +98,21 @@ bool ClientSession::send_game(const proto::ClientMessage& message) {
     }
     link_->send(message);
     return true;
+}
+
+void ClientSession::leave_room() {
+    if (link_ && link_->status().state == LinkState::Open &&
+        (phase_ == SessionPhase::InRoom || phase_ == SessionPhase::Joining)) {
+        link_->send(proto::Leave{});
+    }
+    request_.reset();
+    request_sent_ = false;
+    left_room_ = true;
+    resuming_ = false; // a reconnect says hello as a new player, without the old seat
+    if (phase_ == SessionPhase::InRoom || phase_ == SessionPhase::Joining) {
+        phase_ = SessionPhase::Lobby;
+        status_ = "Connected";
+    }
 }
 
 void ClientSession::on_link_lost(double local_s, const std::string& why) {
@@ -166,6 +189,9 @@ std::vector<proto::ServerMessage> ClientSession::update(double local_s) {
 }
 
 bool ClientSession::handle(const proto::ServerMessage& m, double local_s) {
+    if (left_room_ && is_room_message(m)) {
+        return false; // from a room we left, sent before the server had our leave
+    }
     if (const auto* welcome = std::get_if<proto::Welcome>(&m)) {
         token_ = welcome->resume_token;
         player_id_ = welcome->player_id;

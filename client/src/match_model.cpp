@@ -14,7 +14,31 @@ template <class... F> Overloaded(F...) -> Overloaded<F...>;
 
 constexpr std::size_t kTurnsKept = 8;
 
+std::vector<std::string> names_of(const std::vector<SeatView>& seats) {
+    std::vector<std::string> out;
+    for (const SeatView& s : seats) {
+        out.push_back(s.occupied ? s.name : std::string());
+    }
+    return out;
+}
+
 } // namespace
+
+std::string seat_name(const MatchView& view, int seat) {
+    if (seat >= 0 && static_cast<std::size_t>(seat) < view.seats.size() &&
+        !view.seats[static_cast<std::size_t>(seat)].name.empty()) {
+        return view.seats[static_cast<std::size_t>(seat)].name;
+    }
+    return "Seat " + std::to_string(seat + 1);
+}
+
+std::string player_name_at_end(const MatchView& view, int seat) {
+    if (view.result && seat >= 0 && static_cast<std::size_t>(seat) < view.result->names.size() &&
+        !view.result->names[static_cast<std::size_t>(seat)].empty()) {
+        return view.result->names[static_cast<std::size_t>(seat)];
+    }
+    return seat_name(view, seat);
+}
 
 MatchModel::MatchModel(const PhysicsConfig& physics, const PlayoutConfig& playout,
                        const InterpolationConfig& interpolation)
@@ -30,6 +54,7 @@ void MatchModel::reset() {
     view_ = {};
     playout_ = PlayoutClock(playout_config_);
     buffer_ = InterpolationBuffer(make_board_geometry(physics_), interpolation_config_);
+    coins_ = {};
     cues_.clear();
     due_.clear();
     turn_offsets_.clear();
@@ -68,11 +93,14 @@ std::optional<double> MatchModel::shot_clock_left_s(double local_s) const {
 }
 
 std::string MatchModel::seat_name(int seat) const {
-    if (seat >= 0 && static_cast<std::size_t>(seat) < view_.seats.size() &&
-        !view_.seats[static_cast<std::size_t>(seat)].name.empty()) {
-        return view_.seats[static_cast<std::size_t>(seat)].name;
+    return client::seat_name(view_, seat);
+}
+
+std::optional<SeatCoins> MatchModel::coins_left(int seat) const {
+    if (seat < 0 || static_cast<std::size_t>(seat) >= view_.seats.size()) {
+        return std::nullopt;
     }
-    return "Seat " + std::to_string(seat + 1);
+    return seat_coins(coins_, view_.rule_set, view_.seats[static_cast<std::size_t>(seat)].colour);
 }
 
 Baseline MatchModel::seat_baseline(int seat) const {
@@ -111,6 +139,10 @@ void MatchModel::on_room_state(const proto::RoomState& m, double local_s) {
     view_.queen = m.queen;
     view_.winner = m.winner;
     view_.deadline_ms = m.shot_clock_deadline_ms;
+    const bool over_on_arrival = m.phase == proto::Phase::GameOver && !view_.result;
+    if (m.phase != proto::Phase::GameOver) {
+        view_.result.reset(); // a new game (a rematch)
+    }
     view_.seats.resize(m.seats.size());
     for (std::size_t i = 0; i < m.seats.size(); ++i) {
         SeatView& s = view_.seats[i];
@@ -118,6 +150,9 @@ void MatchModel::on_room_state(const proto::RoomState& m, double local_s) {
         s = {in.occupied, in.name, in.connected, in.bot, in.colour, in.baseline, 0, 0};
         s.score = i < m.scores.size() ? m.scores[i] : 0;
         s.dues = i < m.dues.size() ? m.dues[i] : 0;
+    }
+    if (over_on_arrival) {
+        view_.result = GameResult{m.winner, "", m.scores, names_of(view_.seats)};
     }
     Snapshot keyframe;
     keyframe.seq = next_seq_++;
@@ -243,9 +278,7 @@ void MatchModel::on_event(const proto::Event& m, double local_s) {
                 }
                 view_.winner = e.winner;
                 view_.phase = proto::Phase::GameOver;
-                log_.post(game_end_sentence(e.winner, e.winner == view_.you, seat_name(e.winner),
-                                            e.reason),
-                          Tone::Good, local_s);
+                view_.result = GameResult{e.winner, e.reason, e.scores, names_of(view_.seats)};
             },
             [&](const proto::PlayerDroppedEvent& e) {
                 if (e.seat >= 0 && static_cast<std::size_t>(e.seat) < view_.seats.size()) {
@@ -303,6 +336,7 @@ std::vector<RenderedBody> MatchModel::render(double local_s) {
     const double t = playout_.render_time(local_s);
     last_render_s_ = t;
     std::vector<RenderedBody> bodies = buffer_.sample(t);
+    coins_ = count_coins(bodies);
     for (const SoundCue& c : cues_.take_due(t)) {
         due_.push_back(c);
     }

@@ -57,20 +57,24 @@ std::string queen_sentence(const proto::QueenInfo& queen, const std::string& sea
     return "The queen moved";
 }
 
-std::string game_end_sentence(int winner, bool we_won, const std::string& winner_name,
-                              std::string_view reason) {
-    std::string why;
-    if (reason == "forfeit" || reason == "left") {
-        why = " (the opponent left)";
-    } else if (reason == "clock") {
-        why = " (the opponent ran out of time)";
-    } else if (reason == "boards") {
-        why = " (all boards played)";
+std::string coins_left_text(const SeatCoins& coins) {
+    std::string what;
+    switch (coins.colour) {
+    case proto::Colour::White:
+        what = "white";
+        break;
+    case proto::Colour::Black:
+        what = "black";
+        break;
+    case proto::Colour::None:
+        what = coins.coins == 1 ? "coin" : "coins";
+        break;
     }
-    if (winner < 0) {
-        return "The game is drawn" + why;
+    const std::string queen = coins.queen ? " + queen" : "";
+    if (coins.coins == 0) {
+        return coins.queen ? "only the queen left" : "no " + what + " left";
     }
-    return (we_won ? std::string("You win the game") : winner_name + " wins the game") + why;
+    return std::to_string(coins.coins) + " " + what + queen + " left";
 }
 
 std::string error_sentence(const proto::Error& error) {

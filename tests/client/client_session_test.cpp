@@ -241,6 +241,39 @@ TEST(ClientSession, LostSeatGoesBackToTheLobby) {
     EXPECT_EQ(h.session.phase(), SessionPhase::Lobby);
 }
 
+TEST(ClientSession, LeavingTheRoomGoesBackToTheLobbyOnTheSameLink) {
+    Harness h;
+    h.session.request({RoomRequest::Kind::Create, "", proto::RuleSet::Icf, std::nullopt});
+    h.session.start(0.0);
+    h.wire().state = LinkState::Open;
+    h.session.update(0.1);
+    h.wire().inbox.push_back(proto::Welcome{1, 7, kToken, 1000});
+    h.wire().inbox.push_back(proto::RoomState{});
+    h.session.update(0.2);
+    ASSERT_EQ(h.session.phase(), SessionPhase::InRoom);
+    h.session.leave_room();
+    EXPECT_TRUE(has_sent<proto::Leave>(h.wire()));
+    EXPECT_EQ(h.session.phase(), SessionPhase::Lobby);
+    EXPECT_EQ(h.wires.size(), 1u);
+    EXPECT_FALSE(h.session.send_game(proto::Rematch{}));
+    // What the room sent before the server had our leave is dropped; errors still come through.
+    proto::RoomState late;
+    late.code = "ABC234";
+    h.wire().inbox.push_back(late);
+    h.wire().inbox.push_back(proto::Event{proto::PlayerReturnedEvent{1}});
+    h.wire().inbox.push_back(proto::Error{"rate_limited", "Slow."});
+    const auto out = h.session.update(0.3);
+    ASSERT_EQ(out.size(), 1u);
+    EXPECT_TRUE(std::holds_alternative<proto::Error>(out[0]));
+    EXPECT_EQ(h.session.phase(), SessionPhase::Lobby);
+    // The lobby's next choice is sent at once, and its room comes through.
+    h.session.request({RoomRequest::Kind::Join, "XYZ789", proto::RuleSet::Icf, std::nullopt});
+    EXPECT_EQ(sent<proto::JoinRoom>(h.wire()).code, "XYZ789");
+    h.wire().inbox.push_back(proto::RoomState{});
+    EXPECT_EQ(h.session.update(0.4).size(), 1u);
+    EXPECT_EQ(h.session.phase(), SessionPhase::InRoom);
+}
+
 TEST(ClientSession, VersionMismatchFails) {
     Harness h;
     h.session.start(0.0);

@@ -212,14 +212,93 @@ TEST(MatchModel, ErrorsAreSaidInPlainWords) {
     EXPECT_EQ(m.log().all().back().text, "A new problem.");
 }
 
-TEST(MatchModel, GameEndNamesTheWinner) {
+TEST(MatchModel, GameEndKeepsWhoWonWhyAndTheScores) {
     MatchModel m{PhysicsConfig{}};
     m.handle(room(), 0.0);
-    m.handle(proto::Event{proto::GameEndEvent{0, "score", {25, 10}}}, 1.0);
+    EXPECT_FALSE(m.view().result.has_value());
+    m.handle(proto::Event{proto::GameEndEvent{1, "clock", {0, 0}}}, 1.0);
     EXPECT_EQ(m.view().phase, proto::Phase::GameOver);
-    EXPECT_EQ(m.view().winner, 0);
-    EXPECT_EQ(m.view().seats[0].score, 25);
-    EXPECT_EQ(m.log().all().back().text, "You win the game");
+    EXPECT_EQ(m.view().winner, 1);
+    EXPECT_EQ(m.view().seats[0].score, 0);
+    ASSERT_TRUE(m.view().result.has_value());
+    EXPECT_EQ(m.view().result->winner, 1);
+    EXPECT_EQ(m.view().result->reason, "clock");
+    EXPECT_EQ(m.view().result->scores, (std::vector<int>{0, 0}));
+    EXPECT_EQ(m.view().result->names, (std::vector<std::string>{"Ana", "Ben"}));
+    // The room state that follows keeps the reason.
+    proto::RoomState over = room();
+    over.phase = proto::Phase::GameOver;
+    over.winner = 1;
+    over.scores = {0, 0};
+    m.handle(over, 1.1);
+    ASSERT_TRUE(m.view().result.has_value());
+    EXPECT_EQ(m.view().result->reason, "clock");
+    // Ben leaves: his seat empties, his name stays with the result.
+    over.seats[1] = proto::SeatInfo{};
+    m.handle(over, 1.2);
+    EXPECT_EQ(m.seat_name(1), "Seat 2");
+    EXPECT_EQ(player_name_at_end(m.view(), 1), "Ben");
+    // A rematch starts a new game: the result is gone.
+    m.handle(room(), 2.0);
+    EXPECT_FALSE(m.view().result.has_value());
+}
+
+TEST(MatchModel, ARoomThatIsAlreadyOverHasAResultWithoutAReason) {
+    MatchModel m{PhysicsConfig{}};
+    proto::RoomState over = room(-1);
+    over.phase = proto::Phase::GameOver;
+    over.winner = 0;
+    over.scores = {25, 7};
+    m.handle(over, 0.0);
+    ASSERT_TRUE(m.view().result.has_value());
+    EXPECT_EQ(m.view().result->winner, 0);
+    EXPECT_EQ(m.view().result->reason, "");
+    EXPECT_EQ(m.view().result->scores, (std::vector<int>{25, 7}));
+    EXPECT_EQ(m.view().result->names, (std::vector<std::string>{"Ana", "Ben"}));
+}
+
+TEST(MatchModel, CoinsLeftFollowTheDrawnBoard) {
+    MatchModel m{PhysicsConfig{}};
+    m.handle(room(), 0.0); // the queen and black 1 on the board, white 2 pocketed
+    m.render(0.0);
+    EXPECT_EQ(m.coins_on_board(), (CoinsOnBoard{0, 1, true}));
+    EXPECT_EQ(m.coins_left(0), (SeatCoins{proto::Colour::White, 0, true}));
+    EXPECT_EQ(m.coins_left(1), (SeatCoins{proto::Colour::Black, 1, true}));
+    EXPECT_EQ(m.coins_left(2), std::nullopt);
+    // Black 1 goes in during a shot: it counts as gone from the frame it starts falling.
+    proto::Snapshot s0;
+    s0.seq = 1;
+    s0.turn = 4;
+    s0.t_s = 0.0;
+    s0.bodies = {{19, {300, 520}, {0, -600}}, {1, {300, 265}, {0, -300}}};
+    m.handle(s0, 1.0);
+    proto::Snapshot s1 = s0;
+    s1.seq = 2;
+    s1.t_s = 0.5;
+    s1.bodies = {{19, {300, 300}, {0, 0}}};
+    s1.pocketed = {1};
+    m.handle(s1, 1.5);
+    m.render(1.0);
+    EXPECT_EQ(m.coins_left(1), (SeatCoins{proto::Colour::Black, 1, true})); // not drawn yet
+    m.render(3.0);
+    EXPECT_EQ(m.coins_left(1), (SeatCoins{proto::Colour::Black, 0, true}));
+    // A keyframe that puts it back (a foul) brings it back.
+    m.handle(room(), 4.0);
+    m.render(6.0);
+    EXPECT_EQ(m.coins_left(1), (SeatCoins{proto::Colour::Black, 1, true}));
+}
+
+TEST(MatchModel, FreestyleSeatsBothCountEveryCoin) {
+    MatchModel m{PhysicsConfig{}};
+    proto::RoomState r = room();
+    r.rule_set = proto::RuleSet::Freestyle;
+    r.seats[0].colour = proto::Colour::None;
+    r.seats[1].colour = proto::Colour::None;
+    r.bodies.push_back({3, BodyKind::White, {330, 282}, {}, false});
+    m.handle(r, 0.0);
+    m.render(0.0);
+    EXPECT_EQ(m.coins_left(0), (SeatCoins{proto::Colour::None, 2, true}));
+    EXPECT_EQ(m.coins_left(1), (SeatCoins{proto::Colour::None, 2, true}));
 }
 
 TEST(MatchModel, AnotherRoomResetsTheBoard) {

@@ -50,8 +50,11 @@ public:
     void start(double local_s);
     // Ask for a room; sent as soon as the server has welcomed us (or at once if it has).
     void request(const RoomRequest& request);
-    // Game input (aim, shoot, rematch, leave): sent only while in a room.
+    // Game input (aim, shoot, rematch): sent only while in a room.
     bool send_game(const proto::ClientMessage& message);
+    // Leaves the room (sends `leave`) and goes back to the lobby on the same link. Room messages
+    // still on their way are dropped until the next request.
+    void leave_room();
     // Polls the link, answers the handshake, pings, reconnects; returns the messages for the match.
     std::vector<proto::ServerMessage> update(double local_s);
 
@@ -83,6 +86,7 @@ private:
     std::string status_ = "Not connected";
     std::optional<RoomRequest> request_;
     bool request_sent_ = false;
+    bool left_room_ = false; // left a room, no new request sent yet: its messages are stale
     bool resuming_ = false;
     bool ever_welcomed_ = false;
     std::string token_;

@@ -8,6 +8,7 @@
 // local clock (less the base network transit) is when it arrives. Physics events for a turn
 // whose first snapshot has not arrived yet wait for it.
 
+#include "carrom/client/coins_left.hpp"
 #include "carrom/client/hud_log.hpp"
 #include "carrom/client/interpolation_buffer.hpp"
 #include "carrom/client/playout_clock.hpp"
@@ -36,6 +37,16 @@ struct SeatView {
     int dues = 0;
 };
 
+// How the game ended.
+struct GameResult {
+    int winner = -1; // seat; -1: a draw
+    // game_end's reason: "score", "boards", "cleared", "forfeit", "left" or "clock"; empty when
+    // the client came in after the end (a room state that was already over).
+    std::string reason;
+    std::vector<int> scores;        // final, per seat
+    std::vector<std::string> names; // per seat when the game ended (a seat may empty later)
+};
+
 struct MatchView {
     bool in_room = false;
     std::string code;
@@ -52,7 +63,13 @@ struct MatchView {
     int winner = -1;
     std::optional<std::int64_t> deadline_ms; // shot clock, server clock
     std::optional<double> aim_x_px;          // the shooter's live striker x (aim events)
+    std::optional<GameResult> result;        // from game over until a new game starts
 };
+
+// The seat's name, or "Seat N" for a seat without one.
+std::string seat_name(const MatchView& view, int seat);
+// After a game: the name the seat had when it ended (its player may have left since).
+std::string player_name_at_end(const MatchView& view, int seat);
 
 class MatchModel {
 public:
@@ -81,6 +98,9 @@ public:
     bool animating() const;
     // The newest board (for placement checks), empty before the first state.
     std::vector<BodyState> board_now() const;
+    // The coins on the board as last rendered, and what is left of them for one seat.
+    const CoinsOnBoard& coins_on_board() const { return coins_; }
+    std::optional<SeatCoins> coins_left(int seat) const;
 
     ServerClock& server_clock() { return server_clock_; }
     const ServerClock& server_clock() const { return server_clock_; }
@@ -120,6 +140,7 @@ private:
     std::optional<std::int64_t> last_proto_seq_;
     std::uint64_t next_seq_ = 1;
     double last_render_s_ = 0.0;
+    CoinsOnBoard coins_;
 };
 
 } // namespace carrom::client
