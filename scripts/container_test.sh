@@ -147,9 +147,11 @@ rm /slimify.sh
 EOF
     for name in "$base" "$slim"; do
         have_image "$name" && continue
-        ctr=$(timeout 60 buildah from --name "carrom-test-$id-base" scratch)
+        ctr=$(timeout 60 buildah from --name "carrom-test-$id-base" scratch) ||
+            fail "buildah could not make an empty container"
         containers+=("$ctr")
-        timeout 300 buildah add "$ctr" "$work/base.tar" / > /dev/null
+        timeout 300 buildah add "$ctr" "$work/base.tar" / > /dev/null ||
+            fail "buildah could not import the root file system made by mmdebstrap"
         if [[ $name == "$slim" ]]; then
             timeout 60 buildah add "$ctr" "$work/slimify.sh" /slimify.sh > /dev/null
             timeout 300 buildah run --isolation=chroot "$ctr" -- sh /slimify.sh ||
@@ -157,7 +159,8 @@ EOF
         fi
         timeout 60 buildah config --cmd '["bash"]' "$ctr"
         # --squash: one layer, so files the slim image deletes take no space at all.
-        timeout 300 buildah commit -q --squash "$ctr" "$name" > /dev/null
+        timeout 300 buildah commit -q --squash "$ctr" "$name" > /dev/null ||
+            fail "buildah could not commit $name"
         made_images+=("$name")
         timeout 60 buildah rm "$ctr" > /dev/null
         containers=("${containers[@]/$ctr/}")
@@ -182,7 +185,7 @@ have_image "$image" || fail "no image $image"
 
 # ---------------------------------------------------------------------------------------------
 # 4. Its configuration, and the compose file against it
-timeout 60 buildah inspect --type image "$image" > "$work/image.json"
+timeout 60 buildah inspect --type image "$image" > "$work/image.json" || fail "cannot inspect $image"
 config() { # config FIELD: one field of the image's Docker config, as JSON
     "$python" -c 'import json,sys; print(json.dumps(json.load(open(sys.argv[1]))["Docker"]["config"].get(sys.argv[2])))' \
         "$work/image.json" "$1"
@@ -218,7 +221,8 @@ new_container() { # new_container NAME ENV...: a working container of the image,
     timeout 60 buildah from --pull=never --name "$name" "$image" > /dev/null ||
         fail "could not make a container of $image"
     containers+=("$name")
-    [[ ${#env[@]} -eq 0 ]] || timeout 60 buildah config "${env[@]}" "$name"
+    [[ ${#env[@]} -eq 0 ]] || timeout 60 buildah config "${env[@]}" "$name" ||
+        fail "could not set the environment of container $name"
 }
 in_container() { # in_container CONTAINER COMMAND...
     local ctr=$1
