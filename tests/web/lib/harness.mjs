@@ -44,6 +44,7 @@ async function stopChild(child) {
 export async function startChild(label, command, args, ready, timeoutMs = 15000) {
   const child = spawn(command, args, { detached: true, stdio: ['ignore', 'pipe', 'pipe'] });
   children.add(child);
+  child.exited = new Promise((res) => { child.on('exit', (code, signal) => res(code ?? signal)); });
   child.on('exit', () => children.delete(child));
   child.log = [];
   const lines = [];

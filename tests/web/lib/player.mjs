@@ -33,14 +33,15 @@ export class Player {
     return this.page.evaluate(() => window.carrom.state());
   }
 
-  // Waits until fn(state) is true in the page; returns the state.
-  async waitFor(what, fn, timeoutMs = 20000) {
+  // Waits until fn(state, arg) is true in the page (fn runs there: it sees only its
+  // arguments); returns the state.
+  async waitFor(what, fn, timeoutMs = 20000, arg = null) {
     try {
-      await this.page.waitForFunction((src) => {
+      await this.page.waitForFunction(([src, a]) => {
         // eslint-disable-next-line no-new-func
-        const f = new Function('s', `return (${src})(s);`);
-        return f(window.carrom.state());
-      }, fn.toString(), { timeout: timeoutMs, polling: 50 });
+        const f = new Function('s', 'arg', `return (${src})(s, arg);`);
+        return f(window.carrom.state(), a);
+      }, [fn.toString(), arg], { timeout: timeoutMs, polling: 50 });
     } catch (e) {
       const s = await this.state().catch(() => null);
       throw new Error(`${this.label}: ${what} did not happen within ${timeoutMs} ms (phase ${s?.phase}, session ${s?.session.phase}: ${s?.session.status})`);
