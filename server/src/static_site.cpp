@@ -5,7 +5,6 @@
 #include <cctype>
 #include <filesystem>
 #include <fstream>
-#include <iterator>
 #include <system_error>
 
 namespace carrom::server {
@@ -27,8 +26,8 @@ char lower(char c) {
 }
 
 bool iequals(std::string_view a, std::string_view b) {
-    return a.size() == b.size() &&
-           std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) { return lower(x) == lower(y); });
+    return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(),
+                                              [](char x, char y) { return lower(x) == lower(y); });
 }
 
 int hex_value(char c) {
@@ -315,8 +314,9 @@ SiteLoad StaticSite::from_directory(const std::string& root, const SiteLimits& l
             return load;
         }
         std::ifstream in(it->path(), std::ios::binary);
-        std::string content((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-        if (!in && !in.eof()) {
+        std::string content(static_cast<std::size_t>(size), '\0');
+        in.read(content.data(), static_cast<std::streamsize>(content.size()));
+        if (!in || in.gcount() != static_cast<std::streamsize>(content.size())) {
             load.error = "Cannot read " + it->path().string() + ".";
             return load;
         }

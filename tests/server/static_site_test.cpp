@@ -366,9 +366,9 @@ TEST(StaticSite, HeadOfMissingFileIs404WithoutBody) {
 }
 
 TEST(StaticSite, TraversalIs400AndServesNothing) {
-    for (const char* target : {"/../index.html", "/%2e%2e/index.html", "/js/%2e%2e/index.html",
-                               "/js%2f..%2findex.html", "/..\\index.html", "//index.html",
-                               "/index.html%00", "/js/../../../etc/passwd"}) {
+    for (const char* target :
+         {"/../index.html", "/%2e%2e/index.html", "/js/%2e%2e/index.html", "/js%2f..%2findex.html",
+          "/..\\index.html", "//index.html", "/index.html%00", "/js/../../../etc/passwd"}) {
         const StaticResponse r = get(target);
         EXPECT_EQ(r.status, 400) << target;
         EXPECT_EQ(r.body, "Bad request: that path cannot name a file of this site.\n") << target;
@@ -384,8 +384,8 @@ TEST(StaticSite, PostIs405WithAllow) {
 }
 
 TEST(StaticSite, EveryOtherMethodIs405) {
-    for (const char* method : {"PUT", "DELETE", "PATCH", "OPTIONS", "TRACE", "CONNECT", "PROPFIND",
-                               "get", "Head", ""}) {
+    for (const char* method :
+         {"PUT", "DELETE", "PATCH", "OPTIONS", "TRACE", "CONNECT", "PROPFIND", "get", "Head", ""}) {
         const StaticResponse r = get("/index.html", method);
         EXPECT_EQ(r.status, 405) << method;
         EXPECT_EQ(r.header("Allow"), "GET, HEAD") << method;
@@ -562,9 +562,9 @@ TEST(EmbeddedWebFiles, ServeThePageWithTheRightTypes) {
               "text/html; charset=utf-8");
     for (const EmbeddedFile& f : embedded_web_files()) {
         if (f.path.ends_with(".js")) {
-            EXPECT_EQ(s.respond({"HEAD", "/" + std::string(f.path), std::nullopt})
-                          .header("Content-Type"),
-                      "text/javascript; charset=utf-8")
+            EXPECT_EQ(
+                s.respond({"HEAD", "/" + std::string(f.path), std::nullopt}).header("Content-Type"),
+                "text/javascript; charset=utf-8")
                 << f.path;
         }
     }

@@ -20,7 +20,7 @@ import { SoundPlayer } from './sound.js';
 
 const AIM_SEND_INTERVAL_S = 0.05; // at most 20 aim messages a second
 const TOUCH_GRAB_CSS_PX = 30; // a finger grabs the striker within 30 CSS px (a 60 px target)
-const FRAME_LOG = 1200; // frame times kept for the debug hook
+const FRAME_LOG = 20000; // frame times kept for the debug hook (a minute at 300 frames/s)
 
 function storage(kind) {
   try {
@@ -70,6 +70,7 @@ class App {
     this.fromLink = null; // the room link the page was opened with
     this.drawKey = '';
     this.frameLog = [];
+    this.resizes = []; // stage sizes the board was laid out for
     this.drawnFrames = 0;
   }
 
@@ -161,7 +162,10 @@ class App {
 
   layout() {
     const side = Math.min(this.stage.clientWidth, this.stage.clientHeight);
-    if (this.renderer.resize(side, window.devicePixelRatio || 1)) this.dirty = true;
+    if (this.renderer.resize(side, window.devicePixelRatio || 1)) {
+      this.dirty = true;
+      this.resizes.push(`${this.stage.clientWidth}x${this.stage.clientHeight}`);
+    }
   }
 
   mapping() {
@@ -280,7 +284,8 @@ class App {
   }
 
   frame(ts) {
-    const now = performance.now() / 1000;
+    const started = performance.now();
+    const now = started / 1000;
     for (const p of this.session.takePongs()) {
       this.model.serverClock.roundTrip(p.serverMs, p.sentS, p.receivedS);
     }
@@ -305,7 +310,8 @@ class App {
     this.hud.update(this.model, this.session, { pulling: this.aim.phase === 'pulling', muted: this.sound.muted }, now);
     this.updateLobby();
     document.body.classList.toggle('aiming', this.aim.phase === 'pulling' || this.aim.phase === 'sliding');
-    this.frameLog.push({ ts, ms: performance.now() - ts, moving: animating });
+    // Frame time: from the frame's start (the rAF timestamp) to the end of this frame's work.
+    this.frameLog.push({ ts, ms: performance.now() - ts, work: performance.now() - started, moving: animating });
     if (this.frameLog.length > FRAME_LOG) this.frameLog.shift();
     requestAnimationFrame((t) => this.frame(t));
   }
@@ -336,7 +342,7 @@ class App {
       canvas: { left: rect.left, top: rect.top, side: this.renderer.side, dpr: this.renderer.dpr },
       aim: { phase: this.aim.phase, x: this.aim.x, y: this.aim.striker().y, legal: this.aim.placement.legal },
       shotSentTurn: this.shotSentTurn, shots: this.model.shots, lastShot: this.model.lastShot,
-      frames: this.renderer.frames, paints: this.renderer.painter.paints, sounds: this.sound.played,
+      frames: this.renderer.frames, paints: this.renderer.painter.paints, woodMs: this.renderer.painter.woodMs, resizes: this.resizes.slice(), sounds: this.sound.played,
       muted: this.sound.muted, hash: window.location.hash,
     };
   }

@@ -208,23 +208,34 @@ function paintPiece(ctx, c, r, kind) {
   ctx.stroke();
 }
 
+// The wood is painted per pixel, once, at WOOD_PX and scaled to whatever size the board has:
+// a resize (a bar changing height, a phone turning) only redraws the markings.
+const WOOD_PX = 1024;
+
 export class BoardPainter {
   constructor(geometry) {
     this.geometry = geometry;
-    this.wood = null; // board-orientation wood, painted once per side length
+    this.wood = null; // board-orientation wood, WOOD_PX square
     this.board = null; // {canvas, key}
     this.sprites = null; // {scale, cell, byKind}
     this.paints = 0; // how many times a static picture was painted (a figure for docs/web.md)
+    this.woodMs = 0; // how long painting the wood took
   }
 
   // The board picture for a square of `side` device px.
   boardCanvas(side) {
     const s = Math.max(1, Math.round(side));
     if (this.board && this.board.side === s) return this.board.canvas;
-    if (!this.wood || this.wood.width !== s) this.wood = paintWood(this.geometry, s);
+    if (!this.wood) {
+      const t0 = performance.now();
+      this.wood = paintWood(this.geometry, WOOD_PX);
+      this.woodMs = performance.now() - t0;
+      this.paints += 1;
+    }
     const canvas = makeCanvas(s, s);
     const ctx = canvas.getContext('2d');
-    ctx.drawImage(this.wood, 0, 0);
+    ctx.imageSmoothingQuality = 'high';
+    ctx.drawImage(this.wood, 0, 0, s, s);
     ctx.save();
     ctx.scale(s / this.geometry.boardSize, s / this.geometry.boardSize);
     paintMarkings(ctx, this.geometry);

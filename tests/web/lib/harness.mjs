@@ -97,7 +97,7 @@ export function pageUrl(web, server, hash = '') {
   return `http://127.0.0.1:${web.port}/index.html?ws=${encodeURIComponent(server.ws)}${hash}`;
 }
 
-export async function launchBrowser() {
+export async function launchBrowser(extraArgs = []) {
   // Imported here so that a missing `npm ci` is one clear sentence.
   let chromium;
   try {
@@ -106,7 +106,7 @@ export async function launchBrowser() {
     throw new Error('playwright-core is missing: run `npm ci` in tests/web (scripts/install-deps.sh does)');
   }
   // launch() gives every run a fresh temporary profile (user-data-dir) and removes it after.
-  return chromium.launch({ executablePath: env.chromium, headless: true, args: CHROMIUM_ARGS });
+  return chromium.launch({ executablePath: env.chromium, headless: true, args: [...CHROMIUM_ARGS, ...extraArgs] });
 }
 
 // Runs a test body with a deadline; stops every child and the browser, prints the outcome and
