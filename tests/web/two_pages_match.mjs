@@ -41,6 +41,14 @@ run('web.two_pages_match', 170000, async (t) => {
   await watcher.press('#watch');
   await watcher.waitFor('watching', (s) => s.inRoom && s.you === -1);
 
+  // The opponent's live aim: Asha slides her striker, Ravi sees it move there.
+  const aiming = await asha.waitFor('our break', (st) => st.myTurn && !st.animating && st.aim.phase === 'idle');
+  await asha.drag([{ x: 487, y: aiming.aim.y }, { x: 200, y: aiming.aim.y }]);
+  const placed = (await asha.state()).aim.x;
+  check(Math.abs(placed - 200) < 1.5, `Asha's striker at ${placed}`);
+  await ravi.waitFor('the opponent striker where Asha put it', (st, x) => st.aimX === x
+    && st.drawn.some((d) => d.id === -1 && d.x === x && d.y === 520), 5000, placed);
+
   let pictures = 0;
   let seat1Shots = 0;
   const shots = await playUntilOver([asha, ravi], {
@@ -63,6 +71,7 @@ run('web.two_pages_match', 170000, async (t) => {
     },
   });
   check(shots > 0, 'the pages shot');
+  check((await asha.state()).sounds > 0, 'collision sounds were cued as the break played');
 
   const finals = [];
   for (const p of [asha, ravi, watcher]) {
@@ -80,5 +89,16 @@ run('web.two_pages_match', 170000, async (t) => {
   check(result === a.gameEnd.sentence && result.includes('(target score reached)'), `game over panel: ${result}`);
   check(await asha.page.isVisible('#rematch'), 'a player is offered a rematch');
   check(!(await watcher.page.isVisible('#rematch')), 'a spectator is not offered a rematch');
+
+  // Rematch: asked by one, it waits; asked by both, a new game starts for all three pages.
+  await asha.press('#rematch');
+  await asha.page.waitForFunction(() => document.getElementById('rematch').disabled, null, { timeout: 5000 });
+  check((await asha.state()).phase === 'game_over', 'one rematch request alone starts nothing');
+  await ravi.press('#rematch');
+  for (const p of [asha, ravi, watcher]) {
+    const s = await p.waitFor('the new game', (st) => st.phase === 'aiming' && st.gameEnd === null && st.seats.every((x) => x.score === 0));
+    check(s.board.filter((b) => !b.pocketed && b.kind !== 'striker').length === 19, `${p.label}: a fresh board`);
+    check(!(await p.page.isVisible('#game-over')), `${p.label}: the result panel is gone`);
+  }
   console.log(`room ${code}: ${shots} shots by the pages (${seat1Shots} from the turned view), ${a.seats[0].score}-${a.seats[1].score}, ${a.gameEnd.sentence}`);
 });

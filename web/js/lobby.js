@@ -78,10 +78,15 @@ export class Lobby {
     for (const b of this.form.querySelectorAll('button')) b.disabled = busy;
   }
 
-  // A room link was opened: the code is filled in and Join is the default action.
+  // A room link was opened: the code is filled in, the friend's room comes first and its button
+  // is the main one.
   offerRoom(code, watch) {
     this.code.value = code;
     $('lobby-title').textContent = watch ? `Watch room ${code}` : `Join room ${code}`;
+    const friend = $('friend-room');
+    friend.parentNode.insertBefore(friend, $('new-game'));
+    $('join').classList.toggle('primary', !watch);
+    $('watch').classList.toggle('primary', watch);
   }
 
   submit(action) {

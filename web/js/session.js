@@ -18,6 +18,8 @@ export const SESSION_DEFAULTS = Object.freeze({
 // Errors that answer a room request with no: the player picks something else in the lobby.
 const REFUSALS = ['room_not_found', 'room_full', 'unsupported', 'too_many_rooms', 'bad_field',
   'already_in_room'];
+// Messages that belong to a room.
+const ROOM_TRAFFIC = { room_state: true, snapshot: true, event: true, shot_result: true };
 // Close codes after which reconnecting cannot help.
 const FINAL_CLOSES = { 4001: true, 4002: true };
 
@@ -38,7 +40,7 @@ export class Session {
     this.config = config;
     this.ConnectionClass = ConnectionClass;
     this.phase = 'idle';
-    this.status = 'Not connected';
+    this.status = '';
     this.name = '';
     this.link = null;
     this.request = null; // the room request waiting to be sent
@@ -164,6 +166,8 @@ export class Session {
 
   onMessage(link, m, localS) {
     if (link !== this.link) return;
+    // In the lobby no room is ours: what a room we just left still sends is not shown.
+    if (this.phase === 'lobby' && ROOM_TRAFFIC[m.type]) return;
     switch (m.type) {
       case 'welcome':
         this.token = m.resume_token;
