@@ -67,12 +67,10 @@ run('web_report', 300000, async (t) => {
     await p.page.evaluate(() => window.carrom.clearFrameTimes());
     await p.shoot(breakShot(s.aim.y));
     await p.waitFor('the break on screen', (st) => st.animating, 10000);
-    await p.waitFor('rest', (st) => !st.animating && st.phase !== 'moving', 30000);
-    // The break only: from its first moving frame to the first frame at rest after it.
+    await p.waitFor('the break over', (st, turn) => st.turn !== turn, 30000, s.turn);
+    // The break only: the frames where it moves on screen (the bot's reply is another turn).
     const log = await p.page.evaluate(() => window.carrom.frameTimes());
-    const first = log.findIndex((f) => f.moving);
-    const stop = log.findIndex((f, k) => k > first && !f.moving);
-    const frames = log.slice(first, stop < 0 ? log.length : stop);
+    const frames = log.filter((f) => f.moving && f.turn === s.turn);
     check(frames.length > 30, `only ${frames.length} frames while moving`);
     const work = frames.map((f) => f.ms);
     const inside = frames.map((f) => f.work);

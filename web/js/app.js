@@ -214,7 +214,10 @@ class App {
     };
     c.addEventListener('pointercancel', cancel);
     c.addEventListener('lostpointercapture', cancel);
-    c.addEventListener('contextmenu', (e) => e.preventDefault());
+    c.addEventListener('contextmenu', (e) => {
+      e.preventDefault();
+      this.aim.cancel(); // the right button, also while the left one pulls
+    });
     window.addEventListener('keydown', (e) => {
       this.sound.unlock();
       if (e.target instanceof HTMLInputElement || e.target instanceof HTMLSelectElement) return;
@@ -311,7 +314,9 @@ class App {
     this.updateLobby();
     document.body.classList.toggle('aiming', this.aim.phase === 'pulling' || this.aim.phase === 'sliding');
     // Frame time: from the frame's start (the rAF timestamp) to the end of this frame's work.
-    this.frameLog.push({ ts, ms: performance.now() - ts, work: performance.now() - started, moving: animating });
+    this.frameLog.push({
+      ts, ms: performance.now() - ts, work: performance.now() - started, moving: animating, turn: v.turn,
+    });
     if (this.frameLog.length > FRAME_LOG) this.frameLog.shift();
     requestAnimationFrame((t) => this.frame(t));
   }

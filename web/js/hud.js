@@ -65,7 +65,6 @@ export class Hud {
     const toPlay = v.phase === 'aiming' && v.toPlay === seat;
     setClass(el, 'to-play', toPlay);
     let name = s.occupied ? s.name : '(empty seat)';
-    if (s.bot) name += ' (bot)';
     if (s.occupied && !s.connected) name += ' (away)';
     if (seat === v.you) name += ' (you)';
     let sub = s.colour === 'none' ? '' : s.colour;
@@ -133,8 +132,8 @@ export class Hud {
     setClass(e.conn, 'alert', !['in_room', 'lobby', 'joining', 'idle'].includes(session.phase));
     setHidden(e.leave, !v.inRoom);
     setHidden(e.cancel, !ui.pulling);
-    setText(e.mute, ui.muted ? 'Sound off' : 'Sound on');
-    e.mute.setAttribute('aria-pressed', ui.muted ? 'true' : 'false');
+    setText(e.mute, ui.muted ? 'Sound: off' : 'Sound: on');
+    e.mute.setAttribute('aria-pressed', ui.muted ? 'false' : 'true');
     this.messages(model, now);
     // Panels over the board.
     const waiting = v.inRoom && v.phase === 'waiting';
