@@ -1,6 +1,6 @@
 // One WebSocket to the server: JSON text frames out, decoded messages in (protocol.js). Calls
-// onOpen(), onMessage(message, localS) and onClose(sentence, code) once each as they happen;
-// a frame that fails to decode is counted and skipped.
+// onOpen(), onMessage(message, localS) and onClose(sentence, code) as they happen; a frame that
+// fails to decode is counted, reported on the console and skipped.
 
 import { decodeServer } from './protocol.js';
 import { closeSentence } from './plain_words.js';
@@ -26,6 +26,8 @@ export class Connection {
       if (decoded.error) {
         this.badFrames += 1;
         this.lastBadFrame = decoded.error;
+        // A server that breaks the protocol is worth a line in the console; the page goes on.
+        console.error(`carrom: ignored a message from the server (${decoded.error})`);
         return;
       }
       onMessage(decoded.message, localS);

@@ -19,6 +19,7 @@ import { ServerClock } from './server_clock.js';
 import { loudnessFromImpulse, SoundCueQueue } from './sound_cues.js';
 
 const TURNS_KEPT = 8;
+const PENDING_CUES_KEPT = 256; // cues of turns whose first snapshot has not arrived
 
 function emptyView() {
   return {
@@ -191,6 +192,7 @@ export class MatchModel {
     const offset = this.turnOffsets.get(turn);
     if (offset === undefined) {
       this.pendingCues.push({ turn, t, cue: { time: 0, kind, volume } });
+      if (this.pendingCues.length > PENDING_CUES_KEPT) this.pendingCues.shift();
       return;
     }
     this.cues.push({ time: offset + t, kind, volume });

@@ -9,8 +9,10 @@ export function loudnessFromImpulse(impulse, quiet = 5, loud = 2000) {
 }
 
 // Cues {time, kind: 'click' | 'cushion' | 'pocket', volume} sorted by time (server match time).
+// At most `capacity` wait (a hidden tab draws no frames, so none are taken; the oldest go).
 export class SoundCueQueue {
-  constructor() {
+  constructor(capacity = 512) {
+    this.capacity = capacity;
     this.cues = [];
   }
 
@@ -19,6 +21,7 @@ export class SoundCueQueue {
     let i = this.cues.length;
     while (i > 0 && this.cues[i - 1].time > cue.time) i -= 1;
     this.cues.splice(i, 0, cue);
+    if (this.cues.length > this.capacity) this.cues.shift();
   }
 
   // Cues with time <= renderTime, in time order; those more than `stale` s late are dropped
