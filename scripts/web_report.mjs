@@ -39,7 +39,7 @@ const round = (x) => Math.round(x * 100) / 100;
 
 run('web_report', 300000, async (t) => {
   const server = await startServer(['--shot-clock', '0', '--bot-think-ms', '100']);
-  const web = await startWebServer();
+  const web = await startWebServer(server);
   // Unthrottled frames: the interval between rAF timestamps is then the whole frame's cost.
   t.browser = await launchBrowser(unthrottled ? ['--disable-frame-rate-limit', '--disable-gpu-vsync'] : []);
   const results = [];
@@ -93,12 +93,13 @@ run('web_report', 300000, async (t) => {
     });
     await context.close();
   }
-  const report = { viewport: '900x900', chromium_args: 'see tests/web/lib/harness.mjs', runs: results, download };
+  const report = { served_by: web.fromServer ? 'carrom-server' : 'python3 -m http.server', viewport: '900x900', chromium_args: 'see tests/web/lib/harness.mjs', runs: results, download };
   if (args.includes('--json')) {
     console.log(JSON.stringify(report));
   } else {
     console.log('run | frames moving | frame p50 | frame p99 | max | callback p50 / p99 | rAF interval p50 / p99 | idle page p50 / p99 | paints | wood');
     results.forEach((r, i) => console.log(`${i + 1} | ${r.frames} in ${r.seconds} s | ${r.p50_ms} ms | ${r.p99_ms} ms | ${r.max_ms} ms | ${r.work_p50_ms} / ${r.work_p99_ms} ms | ${r.interval_p50_ms} / ${r.interval_p99_ms} ms | ${r.idle_p50_ms} / ${r.idle_p99_ms} ms | ${r.board_paints} | ${r.wood_ms} ms`));
+    console.log(`files served by ${report.served_by}`);
     console.log(`download: ${download.files} files, ${download.bodyBytes} bytes of bodies, ${download.transferBytes} bytes transferred (uncompressed)`);
   }
 });

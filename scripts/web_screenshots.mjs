@@ -26,7 +26,7 @@ const { breakShot } = await import(path.join(root, 'tests/web/lib/match.mjs'));
 
 run('web_screenshots', 120000, async (t) => {
   const server = await startServer(['--shot-clock', '30', '--bot-think-ms', '100']);
-  const web = await startWebServer();
+  const web = await startWebServer(server);
   t.browser = await launchBrowser();
 
   const desk = await Player.open(await t.browser.newContext({ viewport: { width: 900, height: 900 } }), 'desktop', pageUrl(web, server), t.errors);

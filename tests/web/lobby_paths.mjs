@@ -10,7 +10,7 @@ const VIEW = { viewport: { width: 900, height: 900 } };
 
 run('web.lobby_paths', 120000, async (t) => {
   const server = await startServer(['--shot-clock', '0', '--quick-match-bot', '0']);
-  const web = await startWebServer();
+  const web = await startWebServer(server);
   t.browser = await launchBrowser();
   const a = await Player.open(await t.browser.newContext(VIEW), 'Asha', pageUrl(web, server), t.errors);
   const b = await Player.open(await t.browser.newContext(VIEW), 'Ravi', pageUrl(web, server), t.errors);

@@ -9,7 +9,7 @@ import { Player } from './lib/player.mjs';
 run('web.page_vs_bot', 150000, async (t) => {
   check(env.bot, 'CARROM_BOT is not set');
   const server = await startServer(['--shot-clock', '0', '--time-scale', '8', '--no-bots']);
-  const web = await startWebServer();
+  const web = await startWebServer(server);
   t.browser = await launchBrowser();
   const page = await Player.open(await t.browser.newContext({ viewport: { width: 900, height: 900 } }), 'Asha', pageUrl(web, server), t.errors);
   await page.fillLobby({ name: 'Asha', ruleSet: 'freestyle', targetPoints: 10, boards: 1, shotClock: 0 });

@@ -36,7 +36,7 @@ const boardKey = (s) => JSON.stringify(s.board.filter((b) => !b.pocketed).map((b
 
 run('web.reload_resume', 120000, async (t) => {
   const server = await startServer(['--shot-clock', '0', '--no-bots']);
-  const web = await startWebServer();
+  const web = await startWebServer(server);
   const link = await relay(server.port);
   t.browser = await launchBrowser();
   const viaRelay = { ws: link.ws };

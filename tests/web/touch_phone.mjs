@@ -36,7 +36,7 @@ function viewportState(page) {
 
 run('web.touch_phone', 150000, async (t) => {
   const server = await startServer(['--shot-clock', '0', '--time-scale', '8', '--bot-think-ms', '50']);
-  const web = await startWebServer();
+  const web = await startWebServer(server);
   t.browser = await launchBrowser();
   const phone = await Player.open(await t.browser.newContext(PHONE), 'Phone', pageUrl(web, server), t.errors);
   await phone.useTouch();

@@ -14,7 +14,7 @@ const VIEW = { viewport: { width: 900, height: 900 } };
 
 run('web.two_pages_match', 170000, async (t) => {
   const server = await startServer(['--shot-clock', '0', '--time-scale', '8', '--no-bots']);
-  const web = await startWebServer();
+  const web = await startWebServer(server);
   t.browser = await launchBrowser();
 
   const asha = await Player.open(await t.browser.newContext(VIEW), 'Asha', pageUrl(web, server), t.errors);

@@ -83,17 +83,25 @@ export async function startServer(args = []) {
   return { port, ws: `ws://127.0.0.1:${port}/`, child };
 }
 
-// The web client over HTTP on 127.0.0.1 (python's http.server on an ephemeral port).
-export async function startWebServer(root = env.webRoot) {
+// The web client over HTTP: from carrom-server itself when it serves the page at `/` (then the
+// page's WebSocket is its own host), else from python's http.server on an ephemeral port.
+export async function startWebServer(server, root = env.webRoot) {
+  if (server) {
+    const answer = await fetch(`http://127.0.0.1:${server.port}/`).catch(() => null);
+    if (answer && answer.status === 200 && (answer.headers.get('content-type') ?? '').startsWith('text/html')) {
+      return { port: server.port, fromServer: true };
+    }
+  }
   if (!root) throw new Error('CARROM_WEB_ROOT is not set');
   const child = await startChild('http.server', 'python3',
     ['-u', '-m', 'http.server', '0', '--bind', '127.0.0.1', '--directory', root],
     /Serving HTTP on [\d.]+ port (\d+)/);
-  return { port: Number(child.match[1]), child };
+  return { port: Number(child.match[1]), child, fromServer: false };
 }
 
 // The page address: the web client from `web`, talking to the server `server`.
 export function pageUrl(web, server, hash = '') {
+  if (web.fromServer && web.port === server.port) return `http://127.0.0.1:${web.port}/${hash}`;
   return `http://127.0.0.1:${web.port}/index.html?ws=${encodeURIComponent(server.ws)}${hash}`;
 }
 
