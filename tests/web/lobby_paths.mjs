@@ -24,7 +24,12 @@ run('web.lobby_paths', 120000, async (t) => {
   await a.press('#quick');
   await a.waitFor('waiting for an opponent', (s) => s.session.phase === 'joining');
   check((await a.page.textContent('#lobby-status')) === 'Waiting for an opponent...', 'the lobby says it waits');
-  check(await a.page.isVisible('#lobby-cancel'), 'waiting can be cancelled');
+  check(await a.page.isEnabled('#lobby-cancel'), 'waiting can be cancelled');
+  await a.press('#lobby-cancel');
+  await a.waitFor('back in the lobby', (s) => s.session.phase === 'lobby');
+  check(!(await a.page.isVisible('#lobby-cancel')), 'nothing left to cancel');
+  await a.press('#quick');
+  await a.waitFor('waiting again', (s) => s.session.phase === 'joining');
   await b.fillLobby({ name: 'Ravi', ruleSet: 'freestyle' });
   await b.press('#quick');
   const qa = await a.waitFor('paired', (s) => s.inRoom && s.phase === 'aiming');

@@ -71,7 +71,6 @@ class App {
     this.drawKey = '';
     this.frameLog = [];
     this.resizes = []; // stage sizes the board was laid out for
-    this.drawnFrames = 0;
   }
 
   start() {
@@ -308,7 +307,6 @@ class App {
       }
       this.drawKey = key;
       this.dirty = false;
-      this.drawnFrames += 1;
     }
     this.hud.update(this.model, this.session, { pulling: this.aim.phase === 'pulling', muted: this.sound.muted }, now);
     this.updateLobby();
@@ -317,7 +315,7 @@ class App {
     this.frameLog.push({
       ts, ms: performance.now() - ts, work: performance.now() - started, moving: animating, turn: v.turn,
     });
-    if (this.frameLog.length > FRAME_LOG) this.frameLog.shift();
+    if (this.frameLog.length > FRAME_LOG) this.frameLog.splice(0, FRAME_LOG / 10);
     requestAnimationFrame((t) => this.frame(t));
   }
 
@@ -328,7 +326,8 @@ class App {
     if (!show) return;
     const busy = ['connecting', 'greeting', 'joining', 'reconnecting'].includes(phase);
     this.lobby.setBusy(busy);
-    document.getElementById('lobby-cancel').hidden = phase !== 'joining';
+    const cancel = document.getElementById('lobby-cancel');
+    if (cancel.hidden !== (phase !== 'joining')) cancel.hidden = phase !== 'joining';
     this.lobby.setStatus(phase === 'idle' ? 'Pick a name and a game.' : this.session.status);
   }
 

@@ -75,7 +75,9 @@ export class Lobby {
   }
 
   setBusy(busy) {
-    for (const b of this.form.querySelectorAll('button')) b.disabled = busy;
+    if (this.busy === busy) return;
+    this.busy = busy;
+    for (const b of this.form.querySelectorAll('button:not(#lobby-cancel)')) b.disabled = busy;
   }
 
   // A room link was opened: the code is filled in, the friend's room comes first and its button

@@ -46,6 +46,8 @@ export class Player {
       const s = await this.state().catch(() => null);
       throw new Error(`${this.label}: ${what} did not happen within ${timeoutMs} ms (phase ${s?.phase}, session ${s?.session.phase}: ${s?.session.status})`);
     }
+    // Two more frames, so that what the page draws and writes (canvas, HUD) shows it too.
+    await this.page.evaluate(() => new Promise((r) => { requestAnimationFrame(() => requestAnimationFrame(r)); }));
     return this.state();
   }
 
