@@ -69,11 +69,15 @@ export class Hud {
     if (seat === v.you) name += ' (you)';
     let sub = s.colour === 'none' ? '' : s.colour;
     if (s.dues > 0) sub += `${sub ? ', ' : ''}owes ${countWords(s.dues, 'due', 'dues')}`;
-    setText(el.querySelector('.name'), name);
-    setText(el.querySelector('.sub'), sub);
-    setClass(el.querySelector('.sub'), 'alert', s.dues > 0);
-    setText(el.querySelector('.score'), String(s.score));
-    el.querySelector('.dot').dataset.colour = s.colour;
+    const parts = el.parts ?? (el.parts = {
+      name: el.querySelector('.name'), sub: el.querySelector('.sub'),
+      score: el.querySelector('.score'), dot: el.querySelector('.dot'),
+    });
+    setText(parts.name, name);
+    setText(parts.sub, sub);
+    setClass(parts.sub, 'alert', s.dues > 0);
+    setText(parts.score, String(s.score));
+    if (parts.dot.dataset.colour !== s.colour) parts.dot.dataset.colour = s.colour;
   }
 
   statusLine(model, now) {

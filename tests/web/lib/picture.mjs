@@ -42,11 +42,15 @@ export async function checkPicture(player, { minPieces = 1 } = {}) {
       `${player.label}: surface colour ${surface} at board ${freeSpot}`);
   }
   // The drawn pieces are the board's pieces (the striker at rest is hidden while someone aims).
-  const drawnIds = new Set(s.drawn.filter((d) => d.id >= 0 && !d.falling).map((d) => d.id));
-  for (const b of onBoard) {
-    if (b.kind === 'striker') continue;
+  const drawnCoins = s.drawn.filter((d) => d.id >= 0 && !d.falling && d.kind !== 'striker');
+  const drawnIds = new Set(drawnCoins.map((d) => d.id));
+  const coins = onBoard.filter((b) => b.kind !== 'striker');
+  for (const b of coins) {
     check(drawnIds.has(b.id), `${player.label}: piece ${b.id} (${b.kind}) is on the board but not drawn`);
   }
+  check(drawnCoins.length === coins.length, `${player.label}: ${drawnCoins.length} coins drawn, ${coins.length} on the board`);
+  const strikers = s.drawn.filter((d) => d.kind === 'striker' && !d.falling).length;
+  check(strikers === 1, `${player.label}: ${strikers} strikers drawn`);
   let checked = 0;
   s.drawn.forEach((d, i) => {
     if (d.falling) return;
