@@ -139,14 +139,16 @@ export class Hud {
     setText(e.mute, ui.muted ? 'Sound: off' : 'Sound: on');
     e.mute.setAttribute('aria-pressed', ui.muted ? 'false' : 'true');
     this.messages(model, now);
-    // Panels over the board.
-    const waiting = v.inRoom && v.phase === 'waiting';
+    // Panels over the board; the connection's trouble hides the others.
+    const trouble = ['reconnecting', 'failed'].includes(session.phase)
+      || (v.inRoom && ['connecting', 'greeting'].includes(session.phase));
+    const waiting = v.inRoom && v.phase === 'waiting' && !trouble;
     setHidden(e.waiting, !waiting);
     if (waiting) {
       setText(e.code, v.code);
       setText(e.link, roomLink(window.location, v.code));
     }
-    const over = v.inRoom && v.phase === 'game_over' && !model.animating();
+    const over = v.inRoom && v.phase === 'game_over' && !model.animating() && !trouble;
     setHidden(e.over, !over);
     if (over) {
       setText(e.result, v.gameEnd ? v.gameEnd.sentence : 'The game is over');
@@ -154,8 +156,6 @@ export class Hud {
       e.rematch.disabled = v.rematchAsked;
       setText(e.rematch, v.rematchAsked ? 'Rematch asked…' : 'Rematch');
     }
-    const trouble = ['reconnecting', 'failed'].includes(session.phase)
-      || (v.inRoom && ['connecting', 'greeting'].includes(session.phase));
     setHidden(e.notice, !trouble);
     if (trouble) {
       setText(e.noticeTitle, session.phase === 'failed' ? 'Disconnected' : 'Reconnecting');
