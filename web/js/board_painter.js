@@ -4,7 +4,6 @@
 
 const INK = 'rgb(48,28,16)';
 const RED = 'rgb(178,34,38)';
-export const MARGIN = 'rgb(28,18,12)';
 
 // Piece colours: fill, rim, ring (as the desktop client's piece_look).
 export const PIECE_LOOK = {

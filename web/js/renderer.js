@@ -1,15 +1,21 @@
-// Draws one frame of the board on the canvas: the cached board picture, the pieces at their
-// interpolated places, the striker being placed with the aim guide (direction, power ring,
-// placement warning), or the opponent's striker where they are placing it. Coordinates: CSS px
-// of the canvas (the mapping), drawn at devicePixelRatio for sharp pictures.
+// Draws the board on two stacked canvases: below, the board's picture, drawn only when its size
+// changes; above, a transparent layer with the pieces at their interpolated places, the striker
+// being placed with the aim guide (direction, power ring, placement warning), or the opponent's
+// striker where they are placing it. Each frame clears only what the last one drew on the upper
+// layer, so a frame costs the browser the pieces, not the whole board. Coordinates: CSS px of the
+// canvas (the mapping), drawn at devicePixelRatio for sharp pictures.
 
-import { BoardPainter, MARGIN } from './board_painter.js';
+import { BoardPainter } from './board_painter.js';
 import { ScreenMapping } from './screen_mapping.js';
 
 export class Renderer {
-  constructor(canvas, geometry) {
+  constructor(canvas, background, geometry) {
     this.canvas = canvas;
-    this.ctx = canvas.getContext('2d', { alpha: false });
+    this.ctx = canvas.getContext('2d');
+    this.background = background;
+    this.bgCtx = background.getContext('2d', { alpha: false });
+    this.dirty = []; // device px rects the last frame drew on, [x, y, w, h]
+    this.dirtyAll = false;
     this.geometry = geometry;
     this.painter = new BoardPainter(geometry);
     this.side = 0; // CSS px
@@ -24,10 +30,16 @@ export class Renderer {
     if (s === this.side && dpr === this.dpr) return false;
     this.side = s;
     this.dpr = dpr;
-    this.canvas.style.width = `${s}px`;
-    this.canvas.style.height = `${s}px`;
-    this.canvas.width = Math.round(s * dpr);
-    this.canvas.height = Math.round(s * dpr);
+    for (const c of [this.canvas, this.background]) {
+      c.style.width = `${s}px`;
+      c.style.height = `${s}px`;
+      c.width = Math.round(s * dpr);
+      c.height = Math.round(s * dpr);
+    }
+    const devSide = Math.round(s * dpr);
+    this.bgCtx.drawImage(this.painter.boardCanvas(devSide), 0, 0);
+    this.dirty = [];
+    this.dirtyAll = false;
     return true;
   }
 
@@ -42,9 +54,8 @@ export class Renderer {
     const ctx = this.ctx;
     const m = this.mapping(frame.flipped);
     const devSide = Math.round(this.side * this.dpr);
-    ctx.setTransform(1, 0, 0, 1, 0, 0);
     if (devSide <= 0) return;
-    ctx.drawImage(this.painter.boardCanvas(devSide), 0, 0);
+    this.clearLastFrame(devSide);
     ctx.setTransform(this.dpr, 0, 0, this.dpr, 0, 0);
     const sprites = this.painter.spritesFor(m.scale * this.dpr);
     const cell = sprites.cell / this.dpr;
@@ -57,13 +68,36 @@ export class Renderer {
         const size = cell * b.scale;
         ctx.globalAlpha = Math.min(Math.max(b.alpha, 0), 1);
         ctx.drawImage(sprites.byKind[b.kind], p.x - size / 2, p.y - size / 2, size, size);
+        this.markDirty(p.x - size / 2, p.y - size / 2, size);
         this.drawn.push({ id: b.id, kind: b.kind, x: b.x, y: b.y, sx: p.x, sy: p.y, falling: b.falling });
       }
     }
     ctx.globalAlpha = 1;
     if (frame.aim) this.drawAim(m, frame.aim);
     if (frame.placing) this.drawPlacing(m, sprites, cell, frame.placing, frame.grabHint);
+    // The aim guide and the labels reach anywhere: the next frame clears everything.
+    this.dirtyAll = Boolean(frame.aim || (frame.placing && (frame.placing.warning || frame.grabHint)));
     this.frames += 1;
+  }
+
+  // A square of `size` CSS px at (x, y) was drawn on (with a margin for antialiasing).
+  markDirty(x, y, size) {
+    const d = this.dpr;
+    const x0 = Math.floor((x - 2) * d);
+    const y0 = Math.floor((y - 2) * d);
+    this.dirty.push([x0, y0, Math.ceil((x + size + 2) * d) - x0, Math.ceil((y + size + 2) * d) - y0]);
+  }
+
+  clearLastFrame(devSide) {
+    const ctx = this.ctx;
+    ctx.setTransform(1, 0, 0, 1, 0, 0);
+    if (this.dirtyAll) {
+      ctx.clearRect(0, 0, devSide, devSide);
+    } else {
+      for (const [x, y, w, h] of this.dirty) ctx.clearRect(x, y, w, h);
+    }
+    this.dirty = [];
+    this.dirtyAll = false;
   }
 
   drawAim(m, aim) {
@@ -116,6 +150,7 @@ export class Renderer {
     }
     ctx.globalAlpha = placing.alpha;
     ctx.drawImage(sprites.byKind.striker, p.x - cell / 2, p.y - cell / 2, cell, cell);
+    this.markDirty(p.x - cell / 2, p.y - cell / 2, cell);
     ctx.globalAlpha = 1;
     this.drawn.push({ id: -1, kind: 'striker', x: placing.striker.x, y: placing.striker.y, sx: p.x, sy: p.y, falling: false });
     if (placing.warning) {
@@ -147,13 +182,7 @@ export class Renderer {
 
   // Only the board, with no pieces (the lobby's background).
   drawEmpty() {
-    const devSide = Math.round(this.side * this.dpr);
-    this.ctx.setTransform(1, 0, 0, 1, 0, 0);
-    if (devSide <= 0) {
-      this.ctx.fillStyle = MARGIN;
-      return;
-    }
-    this.ctx.drawImage(this.painter.boardCanvas(devSide), 0, 0);
+    this.clearLastFrame(Math.round(this.side * this.dpr));
     this.drawn = [];
   }
 }

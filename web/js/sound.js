@@ -12,6 +12,8 @@ const VOICES = {
 };
 
 const MASK64 = (1n << 64n) - 1n;
+const VOICES_AT_ONCE = 12; // as the desktop client: a new sound stops the oldest beyond this
+const LEVELS = 9; // loudness steps: 0, 1/8, ..., 1
 
 // The desktop client's noise source: a 64-bit LCG, values in [-1, 1).
 function noiseSource() {
@@ -52,6 +54,7 @@ export class SoundPlayer {
     this.muted = storage?.getItem('carrom.muted') === '1';
     this.context = null;
     this.buffers = null;
+    this.voices = []; // sources playing, oldest first
     this.played = 0; // cues played (the debug hook reports it)
   }
 
@@ -68,6 +71,13 @@ export class SoundPlayer {
     } catch {
       this.context = null;
       return;
+    }
+    this.gains = [];
+    for (let i = 0; i < LEVELS; i += 1) {
+      const gain = this.context.createGain();
+      gain.gain.value = i / (LEVELS - 1);
+      gain.connect(this.context.destination);
+      this.gains.push(gain);
     }
     this.buffers = {};
     for (const kind of Object.keys(VOICES)) {
@@ -87,11 +97,18 @@ export class SoundPlayer {
   play(cue) {
     this.played += 1;
     if (this.muted || !this.context || this.context.state !== 'running') return;
+    if (this.voices.length >= VOICES_AT_ONCE) this.voices.shift().stop();
     const source = this.context.createBufferSource();
     source.buffer = this.buffers[cue.kind];
-    const gain = this.context.createGain();
-    gain.gain.value = Math.min(Math.max(cue.volume, 0), 1);
-    source.connect(gain).connect(this.context.destination);
+    // One connection per sound, to a gain made once per loudness step: changing the audio
+    // graph takes a lock the audio thread holds while it renders.
+    const level = Math.round(Math.min(Math.max(cue.volume, 0), 1) * (LEVELS - 1));
+    source.connect(this.gains[level]);
+    source.onended = () => {
+      const i = this.voices.indexOf(source);
+      if (i >= 0) this.voices.splice(i, 1);
+    };
+    this.voices.push(source);
     source.start();
   }
 }
