@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
-# Installs every Debian (bookworm) package the project builds, tests and runs with.
-# Idempotent: does nothing when all of them are present. Runs as root or through sudo.
+# Installs every Debian (bookworm) package the project builds, tests and runs with, then the
+# browser tests' npm packages (tests/web, pinned by its package-lock.json) with `npm ci`.
+# Idempotent: does nothing when all of them are present. Runs apt-get as root or through sudo.
 set -euo pipefail
+cd "$(dirname "$0")/.."
 
 packages=(
     build-essential cmake ninja-build pkg-config
@@ -11,7 +13,12 @@ packages=(
     xvfb xauth fonts-dejavu-core
     python3 python3-matplotlib
     iproute2 procps
+    chromium
 )
+# node and npm for the web client's tests (tests/web): Debian's, unless a node is installed
+# already (a NodeSource node brings its own npm, and Debian's npm package conflicts with it).
+command -v node >/dev/null || packages+=(nodejs)
+command -v npm >/dev/null || packages+=(npm)
 
 missing=()
 for p in "${packages[@]}"; do
@@ -20,8 +27,26 @@ for p in "${packages[@]}"; do
     fi
 done
 
+# playwright-core for the browser tests, exactly as package-lock.json pins it (npm ci); skipped
+# when that version is installed already. It drives the system chromium: nothing else is fetched.
+install_web_test_packages() {
+    local want have
+    if [ ! -f tests/web/package-lock.json ]; then
+        return # only the script was copied (docker/Dockerfile's first step)
+    fi
+    want=$(node -e 'console.log(require("./tests/web/package-lock.json").packages["node_modules/playwright-core"].version)')
+    have=$(node -e 'try { console.log(require("./tests/web/node_modules/playwright-core/package.json").version) } catch { console.log("none") }')
+    if [ "$want" = "$have" ]; then
+        echo "install-deps: playwright-core $have present"
+        return
+    fi
+    echo "install-deps: npm ci in tests/web (playwright-core $want)"
+    (cd tests/web && npm ci --no-audit --no-fund)
+}
+
 if [ ${#missing[@]} -eq 0 ]; then
     echo "install-deps: all ${#packages[@]} packages present"
+    install_web_test_packages
     exit 0
 fi
 
@@ -34,3 +59,4 @@ echo "install-deps: installing ${missing[*]}"
 export DEBIAN_FRONTEND=noninteractive
 "${sudo_cmd[@]}" apt-get update -q
 "${sudo_cmd[@]}" apt-get install -y -q --no-install-recommends "${missing[@]}"
+install_web_test_packages

@@ -1,0 +1,102 @@
+// A seat survives a page reload in the middle of a shot and a dropped connection: the page takes
+// its seat back with the token kept in sessionStorage, shows the shot's end exactly as the
+// opponent does, and plays on. The connection runs through a TCP relay the test can cut.
+// Shots play in real time here (no --time-scale), so the reload lands mid-shot.
+
+import net from 'node:net';
+
+import { check, launchBrowser, pageUrl, run, sleep, startServer, startWebServer } from './lib/harness.mjs';
+import { breakShot } from './lib/match.mjs';
+import { Player } from './lib/player.mjs';
+import { chooseShot } from './lib/shot_chooser.mjs';
+
+const VIEW = { viewport: { width: 900, height: 900 } };
+
+// Relays 127.0.0.1:port to the server; cut() closes every relayed connection.
+async function relay(target) {
+  const sockets = new Set();
+  const server = net.createServer((client) => {
+    const upstream = net.connect(target, '127.0.0.1');
+    for (const [a, b] of [[client, upstream], [upstream, client]]) {
+      sockets.add(a);
+      a.on('close', () => { sockets.delete(a); b.destroy(); });
+      a.on('error', () => b.destroy());
+      a.pipe(b);
+    }
+  });
+  await new Promise((r) => { server.listen(0, '127.0.0.1', r); });
+  return {
+    ws: `ws://127.0.0.1:${server.address().port}/`,
+    cut: () => { for (const s of sockets) s.destroy(); },
+    close: () => server.close(),
+  };
+}
+
+const boardKey = (s) => JSON.stringify(s.board.filter((b) => !b.pocketed).map((b) => [b.id, b.x, b.y]));
+
+run('web.reload_resume', 120000, async (t) => {
+  const server = await startServer(['--shot-clock', '0', '--no-bots']);
+  const web = await startWebServer(server);
+  const link = await relay(server.port);
+  t.browser = await launchBrowser();
+  const viaRelay = { ws: link.ws };
+
+  const asha = await Player.open(await t.browser.newContext(VIEW), 'Asha', pageUrl(web, viaRelay), t.errors);
+  await asha.fillLobby({ name: 'Asha', ruleSet: 'icf' });
+  await asha.press('#create');
+  const { code } = await asha.waitFor('the room', (s) => s.inRoom && s.phase === 'waiting');
+  const ravi = await Player.open(await t.browser.newContext(VIEW), 'Ravi', pageUrl(web, server), t.errors);
+  await ravi.fillLobby({ name: 'Ravi', code });
+  await ravi.press('#join');
+  await ravi.waitFor('seat 1', (s) => s.inRoom && s.you === 1);
+
+  let s = await asha.waitFor('the break', (st) => st.myTurn && !st.animating && st.aim.phase === 'idle');
+  await asha.shoot(breakShot(s.aim.y));
+  await asha.waitFor('pieces moving on screen', (st) => st.phase === 'moving' && st.animating, 10000);
+  await sleep(300);
+  s = await asha.state();
+  check(s.phase === 'moving', 'the reload comes while the shot plays');
+  const before = s.code;
+
+  await asha.page.reload();
+  s = await asha.waitFor('the seat back after the reload', (st) => st.inRoom && st.session.phase === 'in_room', 15000);
+  check(s.code === before && s.you === 0, `same room and seat after the reload (${s.code}, seat ${s.you})`);
+  check(s.hash === `#/room/${code}`, 'the address still shows the room');
+  const rv = await ravi.waitFor('the opponent back', (st) => st.seats[0].connected, 15000);
+  check(rv.seats[0].connected, 'the opponent sees the seat connected again');
+
+  const a1 = await asha.waitFor('the shot over', (st) => st.phase !== 'moving' && !st.animating && st.shots >= 1, 30000);
+  const r1 = await ravi.waitFor('the shot over', (st) => st.phase !== 'moving' && !st.animating && st.shots >= 1, 30000);
+  check(boardKey(a1) === boardKey(r1), 'after the reload both pages show the same board');
+
+  // Now the connection drops (the relay cuts it): the page reconnects and resumes by itself.
+  link.cut();
+  await asha.waitFor('reconnecting shown', (st) => ['reconnecting', 'connecting', 'greeting'].includes(st.session.phase) || st.session.phase === 'in_room', 5000);
+  s = await asha.waitFor('the seat back after the drop', (st) => st.session.phase === 'in_room' && st.inRoom, 20000);
+  check(s.you === 0 && s.code === code, 'same seat after the drop');
+
+  // Play on until the resumed page has shot again.
+  let pageShots = 0;
+  let shots = 0;
+  const deadline = Date.now() + 60000;
+  while (pageShots < 1) {
+    check(Date.now() < deadline && shots < 12, `the resumed page got no turn (${shots} shots)`);
+    const [sa, sr] = [await asha.state(), await ravi.state()];
+    const ready = (st) => st.myTurn && !st.animating && st.aim.phase === 'idle';
+    const mover = ready(sa) ? [asha, sa] : ready(sr) ? [ravi, sr] : null;
+    if (!mover) {
+      await sleep(100);
+      continue;
+    }
+    const [p, st] = mover;
+    await p.shoot(chooseShot(st.board, st.aim.y, shots));
+    shots += 1;
+    if (p === asha) pageShots += 1;
+    await p.waitFor('the shot result', (x) => x.turn !== x.shotSentTurn || x.phase === 'game_over', 30000);
+  }
+  check(pageShots === 1, 'the resumed page shot again');
+  const a2 = await asha.waitFor('rest', (st) => !st.animating && st.phase !== 'moving', 30000);
+  const r2 = await ravi.waitFor('rest', (st, turn) => !st.animating && st.phase !== 'moving' && st.turn === turn, 30000, a2.turn);
+  check(boardKey(a2) === boardKey(r2), 'both pages agree after the resumed page shot');
+  link.close();
+});

@@ -1,0 +1,30 @@
+# Browser tests of the web client (web/): node drives the system chromium through
+# playwright-core (tests/web/package.json, pinned by package-lock.json, installed by `npm ci`
+# in scripts/install-deps.sh; nothing is downloaded at test time) against a real carrom-server
+# (and carrom-bot). Registered when node and chromium are installed; a test whose
+# playwright-core is missing fails with that sentence. The pure modules' unit tests need only node.
+find_program(CARROM_NODE NAMES node nodejs)
+find_program(CARROM_CHROMIUM NAMES chromium chromium-browser)
+if(NOT CARROM_NODE)
+    message(STATUS "web tests: node not found, not registered")
+    return()
+endif()
+
+set(web_dir ${CMAKE_CURRENT_SOURCE_DIR}/web)
+add_test(NAME web.unit COMMAND ${CARROM_NODE} ${web_dir}/unit_test.mjs)
+set_tests_properties(web.unit PROPERTIES TIMEOUT 60 LABELS web)
+
+if(NOT CARROM_CHROMIUM OR NOT TARGET carrom-server OR NOT TARGET carrom-bot)
+    message(STATUS "web tests: chromium, carrom-server or carrom-bot missing, browser tests not registered")
+    return()
+endif()
+
+foreach(test two_pages_match page_vs_bot touch_phone reload_resume lobby_paths)
+    add_test(NAME web.${test} COMMAND ${CARROM_NODE} ${web_dir}/${test}.mjs)
+    set_tests_properties(web.${test} PROPERTIES
+        TIMEOUT 200
+        LABELS web
+        # One browser at a time: each starts several pages, and timings stay honest.
+        RESOURCE_LOCK chromium
+        ENVIRONMENT "CARROM_SERVER=$<TARGET_FILE:carrom-server>;CARROM_BOT=$<TARGET_FILE:carrom-bot>;CARROM_WEB_ROOT=${PROJECT_SOURCE_DIR}/web;CARROM_CHROMIUM=${CARROM_CHROMIUM}")
+endforeach()

@@ -1,0 +1,375 @@
+// The page: wires the session, the match model, the aim, the renderer, the HUD, the lobby and
+// the sounds, runs one requestAnimationFrame loop, and exposes a read-only debug hook
+// (window.carrom) that tests and scripts/web_report.mjs use to see what the page shows.
+//
+// The WebSocket address is the page's own host (the server serves this page), or the `ws`
+// query parameter: index.html?ws=ws://127.0.0.1:7777/.
+
+import { AimController, clampBaselineX } from './aim_controller.js';
+import { baselineY } from './board_geometry.js';
+import { Connection } from './connection.js';
+import { Hud } from './hud.js';
+import { Lobby } from './lobby.js';
+import { MatchModel } from './match_model.js';
+import { errorSentence } from './plain_words.js';
+import * as proto from './protocol.js';
+import { Renderer } from './renderer.js';
+import { parseRoomHash, roomHash, roomLink, showHash } from './room_link.js';
+import { Session, SESSION_DEFAULTS } from './session.js';
+import { SoundPlayer } from './sound.js';
+
+const AIM_SEND_INTERVAL_S = 0.05; // at most 20 aim messages a second
+const TOUCH_GRAB_CSS_PX = 30; // a finger grabs the striker within 30 CSS px (a 60 px target)
+const FRAME_LOG = 20000; // frame times kept for the debug hook (a minute at 300 frames/s)
+
+function storage(kind) {
+  try {
+    const s = window[kind];
+    s.getItem('carrom.probe');
+    return s;
+  } catch {
+    return null; // storage disabled: the page still works, without resume across reloads
+  }
+}
+
+function serverUrl() {
+  const given = new URLSearchParams(window.location.search).get('ws');
+  if (given) return given;
+  const scheme = window.location.protocol === 'https:' ? 'wss' : 'ws';
+  return `${scheme}://${window.location.host}/`;
+}
+
+class App {
+  constructor() {
+    this.canvas = document.getElementById('board');
+    this.stage = document.getElementById('stage');
+    this.model = new MatchModel();
+    this.aim = new AimController(this.model.physics);
+    this.renderer = new Renderer(this.canvas, document.getElementById('board-bg'), this.model.geometry);
+    this.sound = new SoundPlayer(storage('localStorage'));
+    this.session = new Session(serverUrl(), storage('sessionStorage'), {
+      onMessage: (m, localS) => this.onMessage(m, localS),
+      onChange: () => { this.dirty = true; },
+      onRefused: (error, request) => this.onRefused(error, request),
+    }, SESSION_DEFAULTS, Connection);
+    this.lobby = new Lobby(storage('localStorage'), (name, request) => this.request(name, request));
+    this.hud = new Hud({
+      rematch: () => this.rematch(),
+      lobby: () => this.toLobby(),
+      retry: () => this.retry(),
+      cancelAim: () => { this.aim.cancel(); this.pointerId = null; },
+      toggleMute: () => this.sound.setMuted(!this.sound.muted),
+      copyLink: () => this.copyLink(),
+    });
+    this.bodies = [];
+    this.aimTurn = -1; // the turn the aim was set up for
+    this.shotSentTurn = -1; // the turn we already shot in (no double shots)
+    this.lastAimSent = -1;
+    this.aimDirty = false;
+    this.pointerId = null;
+    this.fromLink = null; // the room link the page was opened with
+    this.drawKey = '';
+    this.frameLog = [];
+    this.resizes = []; // stage sizes the board was laid out for
+  }
+
+  start() {
+    this.bindInput();
+    new ResizeObserver(() => this.layout()).observe(this.stage);
+    window.addEventListener('hashchange', () => this.onHash());
+    document.getElementById('lobby-cancel').addEventListener('click', () => this.toLobby());
+    this.layout();
+    const name = this.lobby.storedName();
+    this.fromLink = parseRoomHash(window.location.hash);
+    if (this.fromLink) this.lobby.offerRoom(this.fromLink.code, this.fromLink.kind === 'watch');
+    if (this.session.heldRoom() && name && proto.isResumeToken(this.session.token)) {
+      this.session.start(name, true); // a reload: take the seat back
+    } else if (this.fromLink && name) {
+      this.joinLink(name);
+    }
+    requestAnimationFrame((ts) => this.frame(ts));
+  }
+
+  joinLink(name) {
+    const l = this.fromLink;
+    this.request(name, { kind: l.kind === 'watch' ? 'spectate' : 'join', code: l.code });
+  }
+
+  onHash() {
+    const link = parseRoomHash(window.location.hash);
+    if (!link || (this.model.view.inRoom && link.code === this.model.view.code)) return;
+    this.fromLink = link;
+    this.lobby.offerRoom(link.code, link.kind === 'watch');
+    if (!this.model.view.inRoom && this.lobby.storedName()) this.joinLink(this.lobby.storedName());
+  }
+
+  request(name, request) {
+    this.lobby.setError('');
+    if (['idle', 'failed'].includes(this.session.phase) || this.session.name !== name) {
+      this.session.start(name);
+    }
+    this.session.ask(request);
+  }
+
+  onMessage(m, localS) {
+    if (m.type === 'error') {
+      this.shotSentTurn = -1; // a rejected shot: aim again
+      if (!this.model.view.inRoom) this.lobby.setError(errorSentence(m));
+    }
+    if (m.type === 'room_state') showHash(roomHash(m.code, m.you < 0));
+    this.model.handle(m, localS);
+    this.dirty = true;
+  }
+
+  onRefused(error, request) {
+    // A friend's link to a full room: watch it instead.
+    if (error.code === 'room_full' && request?.kind === 'join' && this.fromLink?.code === request.code) {
+      this.session.ask({ kind: 'spectate', code: request.code });
+      return;
+    }
+    this.lobby.setError(errorSentence(error));
+  }
+
+  toLobby() {
+    this.session.leaveRoom();
+    this.model.reset();
+    this.aim.endTurn();
+    this.pointerId = null;
+    this.fromLink = null;
+    showHash('');
+    this.dirty = true;
+  }
+
+  retry() {
+    const name = this.lobby.storedName() || this.session.name;
+    this.session.start(name, Boolean(this.session.heldRoom()));
+  }
+
+  rematch() {
+    if (this.session.sendGame(proto.rematch())) {
+      this.model.view.rematchAsked = true;
+      this.model.log.post('Rematch asked for', 'info', performance.now() / 1000);
+    }
+  }
+
+  copyLink() {
+    const link = roomLink(window.location, this.model.view.code);
+    navigator.clipboard?.writeText(link).then(
+      () => this.model.log.post('Link copied', 'info', performance.now() / 1000),
+      () => this.model.log.post(link, 'info', performance.now() / 1000));
+  }
+
+  layout() {
+    const side = Math.min(this.stage.clientWidth, this.stage.clientHeight);
+    if (this.renderer.resize(side, window.devicePixelRatio || 1)) {
+      this.dirty = true;
+      this.resizes.push(`${this.stage.clientWidth}x${this.stage.clientHeight}`);
+    }
+  }
+
+  mapping() {
+    return this.renderer.mapping(this.model.flipped());
+  }
+
+  boardPoint(e) {
+    const rect = this.canvas.getBoundingClientRect();
+    return this.mapping().toBoard({ x: e.clientX - rect.left, y: e.clientY - rect.top });
+  }
+
+  bindInput() {
+    const c = this.canvas;
+    c.addEventListener('pointerdown', (e) => {
+      this.sound.unlock();
+      e.preventDefault();
+      if (this.pointerId !== null && e.pointerId !== this.pointerId) {
+        this.aim.cancel(); // a second finger cancels
+        this.pointerId = null;
+        return;
+      }
+      if (e.button !== undefined && e.button > 0) {
+        this.aim.cancel(); // right or middle button cancels
+        return;
+      }
+      this.pointerId = e.pointerId;
+      c.setPointerCapture(e.pointerId);
+      const minGrab = e.pointerType === 'mouse' ? 0 : this.mapping().lengthToBoard(TOUCH_GRAB_CSS_PX);
+      this.aim.pointerDown(this.boardPoint(e), this.model.boardNow(), minGrab);
+    });
+    c.addEventListener('pointermove', (e) => {
+      if (e.pointerId !== this.pointerId) return;
+      this.aim.pointerMove(this.boardPoint(e), this.model.boardNow());
+    });
+    const up = (e) => {
+      if (e.pointerId !== this.pointerId) return;
+      this.pointerId = null;
+      const shot = this.aim.pointerUp(this.boardPoint(e), this.model.boardNow());
+      if (shot) this.shoot(shot);
+    };
+    c.addEventListener('pointerup', up);
+    const cancel = (e) => {
+      if (e.pointerId !== this.pointerId) return;
+      this.pointerId = null;
+      this.aim.cancel();
+    };
+    c.addEventListener('pointercancel', cancel);
+    c.addEventListener('lostpointercapture', cancel);
+    c.addEventListener('contextmenu', (e) => {
+      e.preventDefault();
+      this.aim.cancel(); // the right button, also while the left one pulls
+    });
+    window.addEventListener('keydown', (e) => {
+      this.sound.unlock();
+      if (e.target instanceof HTMLInputElement || e.target instanceof HTMLSelectElement) return;
+      const pieces = this.model.boardNow();
+      if (e.key === 'Escape') {
+        this.aim.cancel();
+        this.pointerId = null;
+      } else if (e.key === 'ArrowLeft' || e.key === 'ArrowRight') {
+        // Screen left is board -x, or +x when the view is turned.
+        let dir = e.key === 'ArrowLeft' ? -1 : 1;
+        if (this.model.flipped()) dir = -dir;
+        this.aim.nudge(dir, e.shiftKey, pieces);
+        e.preventDefault();
+      }
+    });
+  }
+
+  shoot(shot) {
+    const turn = this.model.view.turn;
+    if (this.session.sendGame(proto.shoot(turn, shot.x, shot.angle, shot.power))) {
+      this.shotSentTurn = turn;
+      this.aim.endTurn();
+    }
+  }
+
+  syncAim(now) {
+    const v = this.model.view;
+    const canAim = this.model.myTurn() && !this.model.animating() && this.shotSentTurn !== v.turn
+      && this.session.phase === 'in_room';
+    if (!canAim) {
+      this.aim.endTurn();
+      return;
+    }
+    if (this.aim.phase === 'inactive') {
+      const x = this.aimTurn === v.turn ? this.aim.x : this.model.physics.boardSize / 2;
+      this.aim.beginTurn(this.model.seatBaseline(v.you), x);
+      this.aimTurn = v.turn;
+      this.aimDirty = true;
+    }
+    if (this.aim.takeMoved()) this.aimDirty = true;
+    // Tell the room where the striker is, at most 20 times a second.
+    if (this.aimDirty && now - this.lastAimSent >= AIM_SEND_INTERVAL_S) {
+      this.session.sendGame(proto.aim(v.turn, this.aim.x));
+      this.lastAimSent = now;
+      this.aimDirty = false;
+    }
+  }
+
+  // What the canvas shows besides the pieces: our striker while we aim, or the opponent's.
+  overlays() {
+    const v = this.model.view;
+    if (this.aim.phase !== 'inactive') {
+      const pulling = this.aim.phase === 'pulling';
+      const shot = this.aim.pendingShot();
+      return {
+        placing: { striker: this.aim.striker(), alpha: 1, warning: !this.aim.placement.legal },
+        aim: pulling ? { striker: this.aim.striker(), angle: shot.angle, fraction: this.aim.powerFraction() } : null,
+        grabHint: this.aim.phase === 'idle',
+      };
+    }
+    if (v.inRoom && v.phase === 'aiming' && !this.model.animating() && v.toPlay !== v.you) {
+      const x = clampBaselineX(v.aimX ?? this.model.physics.boardSize / 2, this.model.physics);
+      const y = baselineY(this.model.seatBaseline(v.toPlay), this.model.physics);
+      return { placing: { striker: { x, y }, alpha: 0.85, warning: false }, aim: null, grabHint: false };
+    }
+    return { placing: null, aim: null, grabHint: false };
+  }
+
+  frame(ts) {
+    const started = performance.now();
+    const now = started / 1000;
+    for (const p of this.session.takePongs()) {
+      this.model.serverClock.roundTrip(p.serverMs, p.sentS, p.receivedS);
+    }
+    const v = this.model.view;
+    this.bodies = v.inRoom ? this.model.render(now) : [];
+    const animating = v.inRoom && this.model.animating();
+    this.syncAim(now);
+    // One sound of each kind per frame, the loudest: a break's burst of clicks in the same
+    // 16 ms is heard as one click, and the audio thread is spared dozens of voices.
+    const loudest = {};
+    for (const cue of this.model.takeSounds()) {
+      if (!loudest[cue.kind] || cue.volume > loudest[cue.kind].volume) loudest[cue.kind] = cue;
+    }
+    for (const cue of Object.values(loudest)) this.sound.play(cue);
+    const o = this.overlays();
+    const key = [v.inRoom, this.model.version, this.aim.phase, this.aim.x, this.aim.pointer.x,
+      this.aim.pointer.y, o.placing?.striker.x, this.renderer.side, this.model.flipped()].join('|');
+    if (animating || this.dirty || key !== this.drawKey) {
+      if (v.inRoom) {
+        this.renderer.draw({ bodies: this.bodies, flipped: this.model.flipped(), ...o });
+      } else {
+        this.renderer.drawEmpty();
+      }
+      this.drawKey = key;
+      this.dirty = false;
+    }
+    this.hud.update(this.model, this.session, { pulling: this.aim.phase === 'pulling', muted: this.sound.muted }, now);
+    this.updateLobby();
+    document.body.classList.toggle('aiming', this.aim.phase === 'pulling' || this.aim.phase === 'sliding');
+    // Frame time: from the frame's start (the rAF timestamp) to the end of this frame's work.
+    this.frameLog.push({
+      ts, ms: performance.now() - ts, work: performance.now() - started, moving: animating, turn: v.turn,
+    });
+    if (this.frameLog.length > FRAME_LOG) this.frameLog.splice(0, FRAME_LOG / 10);
+    requestAnimationFrame((t) => this.frame(t));
+  }
+
+  updateLobby() {
+    const phase = this.session.phase;
+    const show = !this.model.view.inRoom;
+    this.lobby.show(show);
+    if (!show) return;
+    const busy = ['connecting', 'greeting', 'joining', 'reconnecting'].includes(phase);
+    this.lobby.setBusy(busy);
+    const cancel = document.getElementById('lobby-cancel');
+    if (cancel.hidden !== (phase !== 'joining')) cancel.hidden = phase !== 'joining';
+    this.lobby.setStatus(phase === 'idle' ? 'Pick a name and a game.' : this.session.status);
+  }
+
+  // The debug hook's picture of the page (plain data; nothing in it changes the page).
+  debugState() {
+    const v = this.model.view;
+    const rect = this.canvas.getBoundingClientRect();
+    return {
+      session: { phase: this.session.phase, status: this.session.status, badFrames: this.session.badFrames() },
+      inRoom: v.inRoom, code: v.code, you: v.you, ruleSet: v.ruleSet, phase: v.phase, turn: v.turn,
+      toPlay: v.toPlay, winner: v.winner, gameEnd: v.gameEnd, myTurn: this.model.myTurn(),
+      animating: this.model.animating(), flipped: this.model.flipped(),
+      seats: v.seats.map((s) => ({ ...s })), queen: { ...v.queen }, aimX: v.aimX,
+      board: this.model.boardNow().map((b) => ({ ...b })),
+      drawn: this.renderer.drawn.map((d) => ({ ...d })),
+      canvas: { left: rect.left, top: rect.top, side: this.renderer.side, dpr: this.renderer.dpr },
+      aim: { phase: this.aim.phase, x: this.aim.x, y: this.aim.striker().y, legal: this.aim.placement.legal },
+      shotSentTurn: this.shotSentTurn, shots: this.model.shots, lastShot: this.model.lastShot,
+      frames: this.renderer.frames, paints: this.renderer.painter.paints, woodMs: this.renderer.painter.woodMs, resizes: this.resizes.slice(), sounds: this.sound.played,
+      muted: this.sound.muted, hash: window.location.hash,
+    };
+  }
+
+  // Client (viewport) px of a board point, as the page maps it now.
+  toClient(x, y) {
+    const rect = this.canvas.getBoundingClientRect();
+    const p = this.mapping().toScreen({ x, y });
+    return { x: rect.left + p.x, y: rect.top + p.y };
+  }
+}
+
+const app = new App();
+window.carrom = Object.freeze({
+  state: () => app.debugState(),
+  toClient: (x, y) => app.toClient(x, y),
+  frameTimes: () => app.frameLog.slice(),
+  clearFrameTimes: () => { app.frameLog.length = 0; },
+});
+app.start();

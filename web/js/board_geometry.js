@@ -1,0 +1,102 @@
+// The board as the server simulates it (the defaults of common/include/carrom/config.hpp) and
+// its markings (client/src/board_geometry.cpp). Board px, origin at the top-left corner, y down.
+
+export const PHYSICS = Object.freeze({
+  boardSize: 600, // outer size of the square board
+  frame: 35, // cushion face distance from each edge
+  coinRadius: 14, // black, white and queen
+  strikerRadius: 18,
+  pocketRadius: 22,
+  maxPower: 25, // shot power range [0, maxPower]
+  baselineOffset: 80, // baseline distance from the near edge
+  baselineEndMargin: 60, // baseline x range: frame + margin + striker radius
+});
+
+export const STRIKER_ID = 19;
+
+export function radiusOf(kind, c = PHYSICS) {
+  return kind === 'striker' ? c.strikerRadius : c.coinRadius;
+}
+
+// y of the striker centre line for a seat's baseline ('bottom' or 'top').
+export function baselineY(baseline, c = PHYSICS) {
+  return baseline === 'top' ? c.baselineOffset : c.boardSize - c.baselineOffset;
+}
+
+export function baselineXMin(c = PHYSICS) {
+  return c.frame + c.baselineEndMargin + c.strikerRadius;
+}
+
+export function baselineXMax(c = PHYSICS) {
+  return c.boardSize - baselineXMin(c);
+}
+
+// Pocket centres: top-left, top-right, bottom-left, bottom-right.
+export function pocketCentres(c = PHYSICS) {
+  const lo = c.frame + c.pocketRadius;
+  const hi = c.boardSize - lo;
+  return [{ x: lo, y: lo }, { x: hi, y: lo }, { x: lo, y: hi }, { x: hi, y: hi }];
+}
+
+// Baseline markings: the centre line from start to end (end circle centres), the unit normal
+// towards the board centre, the half gap between the two drawn lines. Bottom, top, left, right.
+function baselines(c) {
+  const near = c.baselineOffset;
+  const far = c.boardSize - c.baselineOffset;
+  const lo = c.frame + c.baselineEndMargin + c.strikerRadius;
+  const hi = c.boardSize - lo;
+  const g = 0.77 * c.strikerRadius; // ICF: the gap is 0.77 of the striker diameter
+  return [
+    { start: { x: lo, y: far }, end: { x: hi, y: far }, normal: { x: 0, y: -1 }, halfGap: g, endR: g },
+    { start: { x: lo, y: near }, end: { x: hi, y: near }, normal: { x: 0, y: 1 }, halfGap: g, endR: g },
+    { start: { x: near, y: lo }, end: { x: near, y: hi }, normal: { x: 1, y: 0 }, halfGap: g, endR: g },
+    { start: { x: far, y: lo }, end: { x: far, y: hi }, normal: { x: -1, y: 0 }, halfGap: g, endR: g },
+  ];
+}
+
+// A diagonal arrow from near a pocket towards the centre, with an arc at its inner end.
+function arrow(pocket, centre, c) {
+  const dx = centre.x - pocket.x;
+  const dy = centre.y - pocket.y;
+  const len = Math.hypot(dx, dy);
+  const d = { x: dx / len, y: dy / len };
+  const at = (k) => ({ x: pocket.x + d.x * k, y: pocket.y + d.y * k });
+  return {
+    tip: at(c.pocketRadius + 1.2 * c.coinRadius),
+    tail: at(c.pocketRadius + 10.5 * c.coinRadius),
+    head: 0.6 * c.coinRadius,
+    arcR: 1.3 * c.coinRadius,
+  };
+}
+
+export function makeBoardGeometry(c = PHYSICS) {
+  const centre = { x: c.boardSize / 2, y: c.boardSize / 2 };
+  const pockets = pocketCentres(c);
+  return {
+    boardSize: c.boardSize,
+    frame: c.frame,
+    pocketR: c.pocketRadius,
+    coinR: c.coinRadius,
+    strikerR: c.strikerRadius,
+    pockets,
+    centre,
+    centreCircleR: c.coinRadius,
+    outerCircleR: 6 * c.coinRadius, // encloses the starting layout's outer ring
+    baselines: baselines(c),
+    arrows: pockets.map((p) => arrow(p, centre, c)),
+  };
+}
+
+// Index of the pocket whose centre is nearest to p.
+export function nearestPocket(geometry, p) {
+  let best = 0;
+  let bestD2 = Infinity;
+  geometry.pockets.forEach((q, i) => {
+    const d2 = (p.x - q.x) ** 2 + (p.y - q.y) ** 2;
+    if (d2 < bestD2) {
+      bestD2 = d2;
+      best = i;
+    }
+  });
+  return best;
+}

@@ -1,0 +1,132 @@
+// The lobby (client/app/lobby_view.cpp, as an HTML form over the board): the player's name
+// (kept in localStorage), a rule set and match options for a new room, a server bot of a chosen
+// level, quick match, and a room code to join or watch. It hands the app a checked request; it
+// never talks to the server itself.
+
+import {
+  clipName, isPlayerName, isRoomCode, normaliseRoomCode, RULE_SETS, BOT_LEVELS,
+} from './protocol.js';
+
+const $ = (id) => document.getElementById(id);
+
+// Reads an optional whole number in [lo, hi] from an input; '' when empty, null when invalid.
+function optionalInt(input, lo, hi) {
+  const text = input.value.trim();
+  if (text === '') return '';
+  const n = Number(text);
+  return Number.isInteger(n) && n >= lo && n <= hi ? n : null;
+}
+
+export class Lobby {
+  // onRequest(name, request): request is {kind, ruleSet, options, bot, code}.
+  constructor(storage, onRequest) {
+    this.storage = storage;
+    this.onRequest = onRequest;
+    this.form = $('lobby');
+    this.name = $('name');
+    this.ruleSet = $('rule-set');
+    this.targetPoints = $('target-points');
+    this.boards = $('boards');
+    this.shotClock = $('shot-clock');
+    this.botLevel = $('bot-level');
+    this.code = $('room-code');
+    this.status = $('lobby-status');
+    this.error = $('lobby-error');
+    this.name.value = storage?.getItem('carrom.name') ?? '';
+    this.form.addEventListener('submit', (e) => {
+      e.preventDefault();
+      if (e.submitter) this.submit(e.submitter.value);
+    });
+    // Enter: join the code when one is typed, else create a room.
+    this.form.addEventListener('keydown', (e) => {
+      if (e.key !== 'Enter' || e.target.tagName !== 'INPUT') return;
+      e.preventDefault();
+      this.submit(this.code.value ? 'join' : 'create');
+    });
+    this.code.addEventListener('input', () => {
+      const c = normaliseRoomCode(this.code.value);
+      if (c !== this.code.value) this.code.value = c;
+    });
+    this.name.addEventListener('input', () => {
+      const n = clipName(this.name.value);
+      if (n !== this.name.value) this.name.value = n;
+    });
+  }
+
+  storedName() {
+    const n = this.name.value.trim();
+    return isPlayerName(n) ? n : '';
+  }
+
+  show(visible) {
+    if (this.form.hidden === visible) this.form.hidden = !visible;
+  }
+
+  visible() {
+    return !this.form.hidden;
+  }
+
+  setStatus(text) {
+    if (this.status.textContent !== text) this.status.textContent = text;
+  }
+
+  setError(text) {
+    if (this.error.textContent !== text) this.error.textContent = text;
+  }
+
+  setBusy(busy) {
+    if (this.busy === busy) return;
+    this.busy = busy;
+    for (const b of this.form.querySelectorAll('button:not(#lobby-cancel)')) b.disabled = busy;
+  }
+
+  // A room link was opened: the code is filled in, the friend's room comes first and its button
+  // is the main one.
+  offerRoom(code, watch) {
+    this.code.value = code;
+    $('lobby-title').textContent = watch ? `Watch room ${code}` : `Join room ${code}`;
+    const friend = $('friend-room');
+    friend.parentNode.insertBefore(friend, $('new-game'));
+    $('join').classList.toggle('primary', !watch);
+    $('watch').classList.toggle('primary', watch);
+  }
+
+  submit(action) {
+    const name = this.name.value.trim();
+    if (!isPlayerName(name)) {
+      this.setError('Enter a name first (1 to 24 bytes, no control characters).');
+      this.name.focus();
+      return;
+    }
+    this.storage?.setItem('carrom.name', name);
+    const ruleSet = RULE_SETS.includes(this.ruleSet.value) ? this.ruleSet.value : 'icf';
+    const options = {
+      target_points: optionalInt(this.targetPoints, 1, 1000),
+      boards: optionalInt(this.boards, 1, 99),
+      shot_clock_s: optionalInt(this.shotClock, 0, 600),
+    };
+    let request;
+    if (action === 'create' || action === 'bot') {
+      for (const [key, value] of Object.entries(options)) {
+        if (value === null) {
+          this.setError(`The ${key.replace(/_s$/, '').replace('_', ' ')} is out of range.`);
+          return;
+        }
+      }
+      const level = BOT_LEVELS.includes(this.botLevel.value) ? this.botLevel.value : 'medium';
+      request = { kind: 'create', ruleSet, options, bot: action === 'bot' ? level : null };
+    } else if (action === 'quick') {
+      request = { kind: 'quick', ruleSet };
+    } else {
+      const code = normaliseRoomCode(this.code.value);
+      if (!isRoomCode(code)) {
+        this.setError('A room code has 6 letters and digits, as shown in the room.');
+        this.code.focus();
+        return;
+      }
+      request = { kind: action === 'watch' ? 'spectate' : 'join', code };
+    }
+    this.setError('');
+    this.onRequest(name, request);
+  }
+}

@@ -1,0 +1,320 @@
+// Everything the page knows about its match, built only from server messages
+// (client/src/match_model.cpp): the HUD's view (seats, scores, turn, shot clock, queen, dues),
+// the board to draw (through the playout clock and the interpolation buffer), sound cues and
+// short messages for the player.
+//
+// Snapshot and event times are seconds since the start of their shot, so each shot's times are
+// placed on one continuous timeline: the first snapshot of a turn starts where the local clock
+// (less the base network transit) is when it arrives. Physics events of a turn whose first
+// snapshot has not arrived yet wait for it. Local times in s (performance.now() / 1000).
+
+import { makeBoardGeometry, PHYSICS } from './board_geometry.js';
+import { HudLog } from './hud_log.js';
+import { InterpolationBuffer } from './interpolation_buffer.js';
+import { PlayoutClock } from './playout_clock.js';
+import {
+  countWords, errorSentence, gameEndSentence, pocketList, queenSentence,
+} from './plain_words.js';
+import { ServerClock } from './server_clock.js';
+import { loudnessFromImpulse, SoundCueQueue } from './sound_cues.js';
+
+const TURNS_KEPT = 8;
+const PENDING_CUES_KEPT = 256; // cues of turns whose first snapshot has not arrived
+
+function emptyView() {
+  return {
+    inRoom: false,
+    code: '',
+    you: -1, // our seat, -1 for a spectator
+    ruleSet: 'icf',
+    options: { target_points: 0, boards: 0, shot_clock_s: 0 },
+    seats: [], // {occupied, name, connected, bot, colour, baseline, score, dues}
+    spectators: 0,
+    boardNumber: 1,
+    turn: 0,
+    toPlay: 0,
+    phase: 'waiting',
+    queen: { state: 'on_board', seat: -1 },
+    winner: -1,
+    deadlineMs: null, // shot clock, server clock
+    aimX: null, // the shooter's live striker x (aim events)
+    gameEnd: null, // {winner, reason, sentence} once the game ended
+    rematchAsked: false,
+  };
+}
+
+export class MatchModel {
+  constructor(physics = PHYSICS) {
+    this.physics = physics;
+    this.geometry = makeBoardGeometry(physics);
+    this.serverClock = new ServerClock();
+    this.log = new HudLog();
+    this.reset();
+  }
+
+  // Forget the room (left it, or the seat is gone).
+  reset() {
+    this.view = emptyView();
+    this.playout = new PlayoutClock();
+    this.buffer = new InterpolationBuffer(this.geometry);
+    this.cues = new SoundCueQueue();
+    this.due = [];
+    this.kinds = new Map();
+    this.turnOffsets = new Map(); // turn -> continuous time of the shot's t = 0
+    this.pendingCues = [];
+    this.lastProtoSeq = null;
+    this.nextSeq = 1;
+    this.lastRender = 0;
+    this.shots = 0; // shot results received
+    this.lastShot = null; // the latest shot_result: {turn, seat, x, angle, power, pocketed}
+    this.version = 0; // changes whenever the HUD's view changes
+  }
+
+  handle(m, localS) {
+    switch (m.type) {
+      case 'welcome': this.serverClock.oneWay(m.server_time_ms, localS); break;
+      case 'room_state': this.onRoomState(m, localS); break;
+      case 'snapshot': this.onSnapshot(m, localS); return; // no HUD change
+      case 'event': this.onEvent(m, localS); break;
+      case 'shot_result': this.onShotResult(m, localS); break;
+      case 'error': this.log.post(errorSentence(m), 'error', localS); break;
+      default: return;
+    }
+    this.version += 1;
+  }
+
+  myTurn() {
+    const v = this.view;
+    return v.inRoom && v.you >= 0 && v.phase === 'aiming' && v.toPlay === v.you;
+  }
+
+  spectator() {
+    return this.view.you < 0;
+  }
+
+  seatBaseline(seat) {
+    const s = this.view.seats[seat];
+    return s ? s.baseline : seat === 1 ? 'top' : 'bottom';
+  }
+
+  // Our baseline is the top one: the view is turned so that it is at the bottom.
+  flipped() {
+    return this.view.you >= 0 && this.seatBaseline(this.view.you) === 'top';
+  }
+
+  seatName(seat) {
+    const s = this.view.seats[seat];
+    return s && s.name ? s.name : `Seat ${seat + 1}`;
+  }
+
+  // Seconds left on the shot clock by the server's clock, or null when none runs.
+  shotClockLeft(localS) {
+    const v = this.view;
+    if (v.deadlineMs === null || v.phase !== 'aiming') return null;
+    return this.serverClock.secondsUntil(v.deadlineMs, localS);
+  }
+
+  kindOf(id) {
+    return this.kinds.get(id) ?? 'black';
+  }
+
+  continuousNow(localS) {
+    const now = localS - this.playout.baseTransit();
+    return this.buffer.empty() ? now : Math.max(now, this.buffer.newestTime() + 1e-3);
+  }
+
+  onRoomState(m, localS) {
+    if (this.view.inRoom && m.code !== this.view.code) this.reset();
+    const joined = !this.view.inRoom;
+    this.serverClock.oneWay(m.server_time_ms, localS);
+    const v = this.view;
+    if (v.phase === 'game_over' && m.phase !== 'game_over') {
+      v.gameEnd = null; // a rematch started
+      v.rematchAsked = false;
+    }
+    Object.assign(v, {
+      inRoom: true, code: m.code, you: m.you, ruleSet: m.rule_set, options: m.options,
+      spectators: m.spectators, boardNumber: m.board_number, turn: m.turn, toPlay: m.to_play,
+      phase: m.phase, queen: m.queen, winner: m.winner,
+      deadlineMs: m.shot_clock_deadline_ms ?? null,
+    });
+    v.seats = m.seats.map((s, i) => ({
+      occupied: s.occupied, name: s.name, connected: s.connected, bot: s.bot, colour: s.colour,
+      baseline: s.baseline, score: m.scores[i] ?? 0, dues: m.dues[i] ?? 0,
+    }));
+    const bodies = m.bodies.map((b) => {
+      this.kinds.set(b.id, b.kind);
+      return { id: b.id, kind: b.kind, x: b.x, y: b.y, vx: b.vx, vy: b.vy, pocketed: b.pocketed };
+    });
+    this.buffer.push({ seq: this.nextSeq++, time: this.continuousNow(localS), keyframe: true, bodies });
+    if (joined) {
+      this.log.post(m.you >= 0 ? `Joined room ${m.code}` : `Watching room ${m.code}`, 'info', localS);
+    }
+  }
+
+  onSnapshot(m, localS) {
+    if (this.lastProtoSeq !== null && m.seq <= this.lastProtoSeq && !m.keyframe) return;
+    this.lastProtoSeq = m.seq;
+    if (!m.keyframe && this.view.phase !== 'moving') {
+      this.view.phase = 'moving';
+      this.version += 1;
+    }
+    let offset = this.turnOffsets.get(m.turn);
+    if (offset === undefined) {
+      offset = this.continuousNow(localS) - m.t;
+      this.turnOffsets.set(m.turn, offset);
+      while (this.turnOffsets.size > TURNS_KEPT) {
+        this.turnOffsets.delete(this.turnOffsets.keys().next().value);
+      }
+      this.pendingCues = this.pendingCues.filter((p) => {
+        if (p.turn !== m.turn) return true;
+        this.cues.push({ ...p.cue, time: offset + p.t });
+        return false;
+      });
+    }
+    const before = this.buffer.newestState() ?? [];
+    const bodies = m.bodies.map(([id, x, y, vx, vy]) => ({
+      id, kind: this.kindOf(id), x, y, vx, vy, pocketed: false,
+    }));
+    for (const id of m.pocketed) {
+      const prev = before.find((b) => b.id === id);
+      bodies.push({
+        id, kind: this.kindOf(id), x: prev ? prev.x : 0, y: prev ? prev.y : 0, vx: 0, vy: 0,
+        pocketed: true,
+      });
+    }
+    const s = { seq: this.nextSeq++, time: offset + m.t, keyframe: m.keyframe, bodies };
+    if (this.buffer.push(s)) this.playout.onSnapshot(s.time, localS);
+  }
+
+  cue(turn, t, kind, volume) {
+    if (volume <= 0) return;
+    const offset = this.turnOffsets.get(turn);
+    if (offset === undefined) {
+      this.pendingCues.push({ turn, t, cue: { time: 0, kind, volume } });
+      if (this.pendingCues.length > PENDING_CUES_KEPT) this.pendingCues.shift();
+      return;
+    }
+    this.cues.push({ time: offset + t, kind, volume });
+  }
+
+  setSeat(seat, fields) {
+    const s = this.view.seats[seat];
+    if (s) Object.assign(s, fields);
+  }
+
+  onEvent(e, localS) {
+    const v = this.view;
+    const post = (text, tone) => this.log.post(text, tone, localS);
+    switch (e.kind) {
+      case 'collision': this.cue(e.turn, e.t, 'click', loudnessFromImpulse(e.impulse)); break;
+      case 'cushion': this.cue(e.turn, e.t, 'cushion', 0.8 * loudnessFromImpulse(e.impulse)); break;
+      case 'pocket': this.cue(e.turn, e.t, 'pocket', 1); break;
+      case 'foul': post(`${this.seatName(e.seat)}: ${e.message}`, 'foul'); break;
+      case 'queen':
+        v.queen = e.queen;
+        post(queenSentence(e.queen, this.seatName(e.queen.seat)), 'info');
+        break;
+      case 'due':
+        this.setSeat(e.seat, { dues: e.owed });
+        if (e.owed > 0) post(`${this.seatName(e.seat)} owes ${countWords(e.owed, 'due', 'dues')}`, 'foul');
+        break;
+      case 'turn':
+        this.serverClock.oneWay(e.server_time_ms, localS);
+        Object.assign(v, {
+          turn: e.turn, toPlay: e.seat, deadlineMs: e.deadline_ms ?? null, phase: 'aiming',
+          aimX: null,
+        });
+        post(e.seat === v.you ? 'Your turn' : `${this.seatName(e.seat)} to play`, 'info');
+        break;
+      case 'board_end':
+        e.scores.forEach((score, i) => this.setSeat(i, { score }));
+        v.phase = 'board_over';
+        post(e.winner >= 0 ? `Board ${e.board} to ${this.seatName(e.winner)} (+${e.points})`
+          : `Board ${e.board} ends, no winner`, 'good');
+        break;
+      case 'game_end': {
+        e.scores.forEach((score, i) => this.setSeat(i, { score }));
+        v.winner = e.winner;
+        v.phase = 'game_over';
+        const sentence = gameEndSentence(e.winner, e.winner === v.you && v.you >= 0,
+          this.seatName(e.winner), e.reason, v.you < 0);
+        v.gameEnd = { winner: e.winner, reason: e.reason, sentence };
+        post(sentence, 'good');
+        break;
+      }
+      case 'player_dropped': {
+        this.setSeat(e.seat, { connected: false });
+        const grace = Math.trunc((e.grace_deadline_ms - e.server_time_ms) / 1000);
+        post(`${this.seatName(e.seat)} lost the connection; they have ${grace} s to come back`, 'error');
+        break;
+      }
+      case 'player_returned':
+        this.setSeat(e.seat, { connected: true });
+        post(`${this.seatName(e.seat)} is back`, 'info');
+        break;
+      case 'aim':
+        if (e.seat !== v.you && e.turn === v.turn) v.aimX = e.x;
+        break;
+      default:
+        break;
+    }
+  }
+
+  onShotResult(m, localS) {
+    const v = this.view;
+    this.shots += 1;
+    this.lastShot = {
+      turn: m.turn, seat: m.seat, x: m.x, angle: m.angle, power: m.power, pocketed: m.pocketed,
+    };
+    v.seats.forEach((s, i) => {
+      if (i < m.scores.length) s.score = m.scores[i];
+      if (i < m.dues.length) s.dues = m.dues[i];
+    });
+    v.queen = m.queen;
+    v.turn = m.next_turn;
+    v.toPlay = m.next_seat;
+    const kinds = m.pocketed.map((id) => this.kindOf(id));
+    if (kinds.length > 0) this.log.post(`${this.seatName(m.seat)} pocketed ${pocketList(kinds)}`, 'good', localS);
+    if (m.extra_turn && !m.game_over && !m.board_over) {
+      this.log.post(`${this.seatName(m.seat)} plays again`, 'info', localS);
+    }
+  }
+
+  // The board to draw at localS; sound cues that became due are kept for takeSounds().
+  render(localS) {
+    const t = this.playout.renderTime(localS);
+    this.lastRender = t;
+    let bodies = this.buffer.sample(t);
+    for (const c of this.cues.takeDue(t)) this.due.push(c);
+    // While aiming, the striker is drawn where the shooter places it, not where it last stopped.
+    if (this.view.phase === 'aiming' && !this.animating()) {
+      bodies = bodies.filter((b) => b.kind !== 'striker');
+    }
+    return bodies;
+  }
+
+  takeSounds() {
+    const out = this.due;
+    this.due = [];
+    return out;
+  }
+
+  // True while a shot is still being played on screen.
+  animating() {
+    return this.view.phase === 'moving'
+      || (!this.buffer.empty() && this.lastRender < this.buffer.newestTime());
+  }
+
+  // The newest board (for placement checks and the coins left), [] before the first state.
+  boardNow() {
+    return this.buffer.newestState() ?? [];
+  }
+
+  // Coins still on the board by kind, from the newest state.
+  coinsLeft() {
+    const left = { black: 0, white: 0, queen: 0 };
+    for (const b of this.boardNow()) if (!b.pocketed && b.kind in left) left[b.kind] += 1;
+    return left;
+  }
+}
