@@ -9,6 +9,7 @@
 
 #include <bit>
 #include <cmath>
+#include <numbers>
 #include <string>
 
 namespace carrom::proto {
@@ -197,6 +198,21 @@ TEST(JournalJson, AWholeJournalHasFormatMatchAndEntries) {
     EXPECT_EQ(j["match"], match_created_to_json(created()));
     EXPECT_EQ(j["entries"].size(), 1U);
     EXPECT_EQ(j.size(), 3U);
+}
+
+// docs/protocol.md shows this journal: the standard break, then a dropped connection.
+TEST(JournalJson, TheDocumentedExampleIsWhatTheRulesRecord) {
+    test::JournalRecorder game(created());
+    game.stroke(Shot{300.0, -std::numbers::pi / 2.0, 25.0});
+    game.member(SeatDroppedEntry{1});
+    const Json j = journal_to_json(game.journal());
+    EXPECT_EQ(j["entries"], Json::parse(R"([
+        {"type": "stroke", "time_ms": 1700000001500, "turn": 0, "seat": 0,
+         "shot": {"x": 300.0, "angle": -1.5707963267948966, "power": 25.0},
+         "result_hash": "6e07b4164aa0cc8f",
+         "outcome": {"state_hash": "a379fc4311ddda2e", "pocketed": [], "fouls": [],
+                     "scores": [0, 0], "next_seat": 1}},
+        {"type": "drop", "time_ms": 1700000003000, "seat": 1}])"));
 }
 
 // --- decoding errors ---------------------------------------------------------------------------
