@@ -40,7 +40,7 @@ inline rules::RulesConfig short_game() {
     rules::RulesConfig config;
     config.target_points = 5;
     config.max_boards = 2;
-    config.freestyle.target = 40;
+    config.freestyle.target = 100;
     return config;
 }
 

@@ -6,6 +6,7 @@
 
 #include <sqlite3.h>
 
+#include <optional>
 #include <stdexcept>
 
 namespace carrom::store::sqlite {
@@ -26,10 +27,15 @@ void run(SQLite::Statement& statement) {
     statement.exec();
 }
 
+// Text for a column. Names are valid UTF-8 when they come from the wire (the JSON parser checks);
+// anything else is replaced rather than failing every retry.
+std::string dump(const nlohmann::json& j) {
+    return j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+}
+
 // The end of a game, as matches.result holds it: {"result": <game result>, "scores": [...]}.
 std::string result_json(const rules::GameResult& result, const std::vector<int>& scores) {
-    return nlohmann::json{{"result", proto::game_result_to_json(result)}, {"scores", scores}}
-        .dump();
+    return dump(nlohmann::json{{"result", proto::game_result_to_json(result)}, {"scores", scores}});
 }
 
 } // namespace
@@ -68,16 +74,22 @@ SqliteWriter::write(std::span<WriteItem> items, const std::function<bool()>& fai
         run(begin_);
         for (std::size_t i = 0; i < items.size(); ++i) {
             run(savepoint_);
+            std::optional<std::string> refusal;
             try {
                 write_one(items[i]);
                 run(release_);
             } catch (const SQLite::Exception& e) {
                 if (e.getErrorCode() != SQLITE_CONSTRAINT) {
-                    throw;
+                    throw; // the file's problem: roll back, retry later
                 }
+                refusal = e.what(); // the item's problem: it would fail every time
+            } catch (const nlohmann::json::exception& e) {
+                refusal = e.what();
+            }
+            if (refusal) {
                 run(rollback_to_);
                 run(release_);
-                refused.push_back(Refusal{i, e.what()});
+                refused.push_back(Refusal{i, *refusal});
             }
         }
         if (fail_before_commit && fail_before_commit()) {
@@ -116,7 +128,7 @@ void SqliteWriter::create(const CreateItem& item) {
     insert_match_.bind(4, static_cast<std::int64_t>(c.time_ms));
     insert_match_.bind(5, c.versions.physics);
     insert_match_.bind(6, c.versions.rules);
-    insert_match_.bind(7, proto::match_created_to_json(c).dump());
+    insert_match_.bind(7, dump(proto::match_created_to_json(c)));
     run(insert_match_);
     for (const proto::JournalSeat& seat : c.seats) {
         insert_player_.bind(1, seat.name);
@@ -130,7 +142,7 @@ void SqliteWriter::append(const AppendItem& item) {
     insert_entry_.bind(2, static_cast<std::int64_t>(item.seq));
     insert_entry_.bind(3, static_cast<std::int64_t>(item.entry.time_ms));
     insert_entry_.bind(4, std::string(proto::event_type(item.entry.event)));
-    insert_entry_.bind(5, proto::journal_entry_to_json(item.entry).dump());
+    insert_entry_.bind(5, dump(proto::journal_entry_to_json(item.entry)));
     run(insert_entry_);
     if (const auto* joined = std::get_if<proto::SeatJoinedEntry>(&item.entry.event)) {
         insert_player_.bind(1, joined->name);
