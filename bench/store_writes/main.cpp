@@ -2,7 +2,8 @@
 // fast as it takes them) and reports how long each append waited for its on_written(true): the
 // time a room would hold a stroke's first broadcast back (docs/server.md, "Match store").
 //   carrom-store-writes --matches 1000 --rate 300 --seconds 10 [--path FILE]
-// prints one line: entries, entries/s achieved, and the wait's p50, p99, p99.9 and max in ms.
+// prints one line: the time open() took (its checks include PRAGMA quick_check, which reads
+// every page), entries, entries/s achieved, and the wait's p50, p99, p99.9 and max in ms.
 // --rate 0 appends as fast as possible (throughput). The entries are real journal entries of a
 // seeded game, so their size is a stroke's.
 
@@ -85,7 +86,10 @@ int main(int argc, char** argv) {
         dir = ::mkdtemp(pattern.data());
         path = (dir / "carrom.db").string();
     }
+    const auto open_start = Clock::now();
     auto opened = store::SqliteMatchStore::open(path);
+    const double open_ms =
+        std::chrono::duration<double, std::milli>(Clock::now() - open_start).count();
     if (opened.error) {
         std::fprintf(stderr, "%s: %s\n", opened.error->code.c_str(), opened.error->message.c_str());
         return 2;
@@ -93,12 +97,15 @@ int main(int argc, char** argv) {
     store::SqliteMatchStore& s = *opened.store;
     const std::vector<proto::JournalEntry> strokes = sample_strokes();
     std::vector<std::int64_t> next_seq(static_cast<std::size_t>(matches), 0);
+    std::vector<std::string> ids;
     for (int m = 0; m < matches; ++m) {
         proto::MatchCreated c;
-        c.match_id = "bench-" + std::to_string(m);
+        c.match_id = "bench-" + std::to_string(m) + "-" +
+                     std::to_string(open_start.time_since_epoch().count());
         c.room_code = "ABCDEF";
         c.seats = {proto::JournalSeat{"ann", false}, proto::JournalSeat{"bea", false}};
         c.versions.server = "bench";
+        ids.push_back(c.match_id);
         s.create(c);
     }
     s.flush(std::chrono::seconds(60));
@@ -122,8 +129,7 @@ int main(int argc, char** argv) {
         }
         const auto m = static_cast<std::size_t>(sent % matches);
         const auto queued = Clock::now();
-        s.append("bench-" + std::to_string(m), next_seq[m]++,
-                 strokes[static_cast<std::size_t>(sent) % strokes.size()],
+        s.append(ids[m], next_seq[m]++, strokes[static_cast<std::size_t>(sent) % strokes.size()],
                  [&, queued](bool written) {
                      const double ms =
                          std::chrono::duration<double, std::milli>(Clock::now() - queued).count();
@@ -144,9 +150,10 @@ int main(int argc, char** argv) {
     }
     const std::lock_guard lock(mutex);
     const std::size_t written = waits_ms.size();
-    std::printf("matches %d entries %lld written %zu entries_per_s %.0f wait_ms p50 %.3f p99 %.3f "
+    std::printf("open_ms %.1f matches %d entries %lld written %zu entries_per_s %.0f wait_ms p50 "
+                "%.3f p99 %.3f "
                 "p99.9 %.3f max %.3f errors %llu\n",
-                matches, static_cast<long long>(sent), written,
+                open_ms, matches, static_cast<long long>(sent), written,
                 static_cast<double>(written) / elapsed, percentile(waits_ms, 0.5),
                 percentile(waits_ms, 0.99), percentile(waits_ms, 0.999), percentile(waits_ms, 1.0),
                 static_cast<unsigned long long>(health.errors_total));
