@@ -9,7 +9,7 @@ packages=(
     build-essential cmake ninja-build pkg-config
     libboost-dev nlohmann-json3-dev libsfml-dev
     libgtest-dev libgmock-dev googletest libbenchmark-dev
-    libcli11-dev libspdlog-dev
+    libcli11-dev libspdlog-dev libsqlite3-dev libsqlitecpp-dev
     xvfb xauth fonts-dejavu-core
     python3 python3-matplotlib
     iproute2 procps

@@ -124,8 +124,8 @@ std::optional<int> team_or_null(Fields& f, std::string_view key, int teams) {
     return team;
 }
 
-MaybeError decode_board_result(const Json& j, const std::string& path, int teams,
-                               rules::BoardResult& out) {
+MaybeError read_board_result(const Json& j, const std::string& path, int teams,
+                             rules::BoardResult& out) {
     if (auto e = check_object(j, path, {"board", "winner_team", "points", "reason"})) {
         return e;
     }
@@ -137,8 +137,8 @@ MaybeError decode_board_result(const Json& j, const std::string& path, int teams
     return f.error;
 }
 
-MaybeError decode_game_result(const Json& j, const std::string& path, int teams,
-                              rules::GameResult& out) {
+MaybeError read_game_result(const Json& j, const std::string& path, int teams,
+                            rules::GameResult& out) {
     if (auto e = check_object(j, path, {"winner_team", "reason"})) {
         return e;
     }
@@ -317,14 +317,14 @@ MaybeError decode_results(Fields& f, MatchState& s, const std::string& path) {
         s.boards.assign(a.size(), {});
         for (std::size_t i = 0; i < a.size(); ++i) {
             if (auto e =
-                    decode_board_result(a[i], index_path(f.at("boards"), i), teams, s.boards[i])) {
+                    read_board_result(a[i], index_path(f.at("boards"), i), teams, s.boards[i])) {
                 return e;
             }
         }
     }
     if (f.has("result") && !f["result"].is_null()) {
         rules::GameResult result;
-        if (auto e = decode_game_result(f["result"], f.at("result"), teams, result)) {
+        if (auto e = read_game_result(f["result"], f.at("result"), teams, result)) {
             return e;
         }
         s.result = result;
@@ -350,6 +350,20 @@ MaybeError check_state_keys(const Json& j, const std::string& path) {
 }
 
 } // namespace
+
+Decoded<rules::BoardResult> decode_board_result(const nlohmann::json& j, int teams,
+                                                const std::string& path) {
+    Decoded<rules::BoardResult> out;
+    out.error = read_board_result(j, path, teams, out.value);
+    return out;
+}
+
+Decoded<rules::GameResult> decode_game_result(const nlohmann::json& j, int teams,
+                                              const std::string& path) {
+    Decoded<rules::GameResult> out;
+    out.error = read_game_result(j, path, teams, out.value);
+    return out;
+}
 
 Decoded<rules::RulesConfig> decode_rules_config(const nlohmann::json& j,
                                                 const rules::RulesConfig& base,

@@ -2,6 +2,7 @@
 // as JSON. Bad input prints {"error": {"code", "path", "message"}} on stderr and exits 2.
 // See docs/carrom-sim.md.
 
+#include "replay_mode.hpp"
 #include "rules_mode.hpp"
 #include "sim_cli.hpp"
 
@@ -73,6 +74,17 @@ int run_rules(const std::string& path) {
     return carrom::run_rules_mode(file, std::cout, std::cerr);
 }
 
+int run_replay(const std::string& path, bool pretty) {
+    if (path.empty() || path == "-") {
+        return carrom::run_replay_mode(std::cin, std::cout, std::cerr, pretty);
+    }
+    std::ifstream file(path, std::ios::binary);
+    if (!file) {
+        return fail({"io_error", "", "cannot open the journal file '" + path + "'"});
+    }
+    return carrom::run_replay_mode(file, std::cout, std::cerr, pretty);
+}
+
 // Everything the command line sets.
 struct CliArgs {
     carrom::sim_cli::RunOptions options;
@@ -82,13 +94,15 @@ struct CliArgs {
     bool pretty = false;
     bool no_events = false;
     bool rules = false;
+    bool replay = false;
 };
 
 void add_flags(CLI::App& app, CliArgs& args) {
     using carrom::sim_cli::Integrator;
     const std::map<std::string, Integrator> integrators{{"exact", Integrator::Exact},
                                                         {"fixed", Integrator::Fixed}};
-    app.add_option("scene", args.path, "scene JSON file; '-' or none reads stdin");
+    app.add_option("scene", args.path,
+                   "scene (or rules question, or journal) JSON file; '-' or none reads stdin");
     app.add_option("--integrator", args.options.integrator, "exact (default) or fixed")
         ->transform(CLI::CheckedTransformer(integrators, CLI::ignore_case));
     app.add_option("--dt", args.options.frame_dt_s, "fixed: frame time step, s (default 1/60)")
@@ -105,7 +119,11 @@ void add_flags(CLI::App& app, CliArgs& args) {
     app.add_flag("--pretty", args.pretty, "indent the JSON output");
     app.add_flag("--invariants", args.options.invariants,
                  "exact: check overlap, cushions and kinetic energy at every event time");
-    app.add_flag("--rules", args.rules, "rules mode: read a rules question instead of a scene");
+    auto* rules =
+        app.add_flag("--rules", args.rules, "rules mode: read a rules question instead of a scene");
+    app.add_flag("--replay", args.replay,
+                 "replay mode: verify a match journal; exit 1 if an outcome differs")
+        ->excludes(rules);
 }
 
 int simulate(CliArgs& args) {
@@ -146,6 +164,9 @@ int run(int argc, char** argv) {
         return fail({"bad_argument", "", "--dt and --at must be finite numbers"});
     }
     args.at_given = app.count("--at") > 0;
+    if (args.replay) {
+        return run_replay(args.path, args.pretty);
+    }
     return args.rules ? run_rules(args.path) : simulate(args);
 }
 

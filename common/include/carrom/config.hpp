@@ -36,6 +36,8 @@ struct PhysicsConfig {
     double baseline_end_margin_px = 60.0; // baseline x range: frame + margin + striker radius
     int max_events = 200000;              // hard safety bound per simulation
 
+    friend bool operator==(const PhysicsConfig&, const PhysicsConfig&) = default;
+
     double radius(BodyKind kind) const {
         return kind == BodyKind::Striker ? striker_radius_px : coin_radius_px;
     }

@@ -30,6 +30,7 @@ struct Shot {
     double x_px = 300.0;
     double angle_rad = 0.0;
     double power = 0.0;
+    friend bool operator==(const Shot&, const Shot&) = default;
 };
 
 // Which baseline a shot is taken from.

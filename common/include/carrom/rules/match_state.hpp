@@ -47,11 +47,13 @@ struct BoardResult {
     std::optional<int> winner_team; // empty: no winner (freestyle/seed draw)
     int points = 0;                 // icf: points the winner scored for the board
     RuleCode reason = RuleCode::BoardCleared;
+    friend bool operator==(const BoardResult&, const BoardResult&) = default;
 };
 
 struct GameResult {
     std::optional<int> winner_team; // empty: a draw
     RuleCode reason = RuleCode::BoardCleared;
+    friend bool operator==(const GameResult&, const GameResult&) = default;
 };
 
 struct MatchState {

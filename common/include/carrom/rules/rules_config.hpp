@@ -15,6 +15,7 @@ struct FreestylePoints {
     int queen = 50;           // awarded when the queen is covered
     int striker_penalty = 20; // subtracted when the shooter pockets the striker
     int target = 170;         // first side to reach this wins
+    friend bool operator==(const FreestylePoints&, const FreestylePoints&) = default;
 };
 
 struct RulesConfig {
@@ -32,6 +33,7 @@ struct RulesConfig {
     int board_points_cap = 12;   // icf: most points one board can give
     int break_tries = 3;         // icf: tries to touch a coin on the break
     FreestylePoints freestyle{}; //
+    friend bool operator==(const RulesConfig&, const RulesConfig&) = default;
 };
 
 // Checks every field; returns the first problem (code "invalid_config", field named).

@@ -42,6 +42,11 @@ Decoded<rules::MatchState> decode_match_state(const nlohmann::json& j,
 nlohmann::json queen_state_to_json(const rules::QueenState& queen);
 nlohmann::json board_result_to_json(const rules::BoardResult& board);
 nlohmann::json game_result_to_json(const rules::GameResult& result);
+// The inverses, for a match of `teams` teams (winner_team null or in [0, teams)).
+Decoded<rules::BoardResult> decode_board_result(const nlohmann::json& j, int teams,
+                                                const std::string& path);
+Decoded<rules::GameResult> decode_game_result(const nlohmann::json& j, int teams,
+                                              const std::string& path);
 // {"x", "angle", "power"}.
 nlohmann::json rules_shot_to_json(const Shot& shot);
 // {"x", "angle", "power"}: finite numbers (placement is the rules' job: check_placement).

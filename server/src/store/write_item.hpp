@@ -1,0 +1,36 @@
+#pragma once
+// One unit of work queued for a store's writer: plain data, written in queue order.
+
+#include "store/match_store.hpp"
+
+#include <cstdint>
+#include <optional>
+#include <variant>
+
+namespace carrom::store {
+
+struct CreateItem {
+    proto::MatchCreated created;
+};
+struct AppendItem {
+    MatchId match;
+    std::int64_t seq = 0;
+    proto::JournalEntry entry;
+};
+struct SeatTokenItem {
+    MatchId match;
+    int seat = 0;
+    std::optional<TokenHash> token; // none: the seat has no token any more
+};
+struct FinishItem {
+    MatchId match;
+    std::int64_t time_ms = 0;
+};
+
+struct WriteItem {
+    std::variant<CreateItem, AppendItem, SeatTokenItem, FinishItem> what;
+    OnWritten on_written; // appends only; may be empty
+    bool told = false;    // on_written has been called
+};
+
+} // namespace carrom::store
