@@ -216,8 +216,9 @@ ReplayResult replay(const MatchJournal& journal, const ReplayOptions& options) {
         compare_int(step.differences, "turn", input->turn, out.state.turn_number);
         if (r.error) {
             step.refused = r.error;
-            step.differences.push_back("the rules refuse it: " + r.error->code + " (" +
-                                       r.error->message + ")");
+            step.differences.push_back(
+                "the rules refuse it: " + std::string(rules::to_string(r.error->code)) + " (" +
+                r.error->message + ")");
             ++out.mismatches;
             out.steps.push_back(std::move(step));
             return out;

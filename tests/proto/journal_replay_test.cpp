@@ -210,7 +210,7 @@ TEST(JournalReplay, AnInputTheRulesRefuseStopsTheReplay) {
     const ReplayStep& last = r.steps.back();
     EXPECT_EQ(last.entry, index);
     ASSERT_TRUE(last.refused.has_value());
-    EXPECT_EQ(last.refused->code, "not_your_turn");
+    EXPECT_EQ(last.refused->code, rules::RuleErrorCode::NotYourTurn);
 }
 
 TEST(JournalReplay, AStrokeAfterTheGameEndedIsRefused) {
@@ -221,7 +221,7 @@ TEST(JournalReplay, AStrokeAfterTheGameEndedIsRefused) {
         JournalEntry{0, StrokeEntry{1, 1, Shot{300.0, -1.5, 10.0}, 0, OutcomeRecord{}}});
     const ReplayResult r = replay(journal);
     ASSERT_EQ(r.steps.size(), 2U);
-    EXPECT_EQ(r.steps[1].refused->code, "game_over");
+    EXPECT_EQ(r.steps[1].refused->code, rules::RuleErrorCode::GameOver);
 }
 
 TEST(JournalReplay, MembershipEntriesChangeNothing) {

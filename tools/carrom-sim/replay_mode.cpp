@@ -9,6 +9,7 @@
 #include "carrom/proto/journal_json.hpp"
 #include "carrom/proto/journal_replay.hpp"
 #include "carrom/proto/match_json.hpp"
+#include "carrom/rules/rule_error.hpp"
 
 #include <iostream>
 #include <string>
@@ -32,7 +33,8 @@ Json step_to_json(const proto::ReplayStep& step, const proto::JournalEntry& entr
         out["result_hash"] = proto::hash_to_hex(step.result_hash);
     }
     if (step.refused) {
-        out["refused"] = {{"code", step.refused->code}, {"message", step.refused->message}};
+        out["refused"] = {{"code", std::string(rules::to_string(step.refused->code))},
+                          {"message", step.refused->message}};
     } else {
         out["outcome"] = proto::outcome_record_to_json(step.replayed);
     }
