@@ -1,9 +1,9 @@
 #!/usr/bin/python3
 """Runs carrom-load at several match counts and writes the table and plot of docs/server-load.md.
 
-usage: scripts/load_report.py --build build/h-srv-rel [--matches 10 100 250 500 1000]
+usage: scripts/load_report.py --build build/release [--matches 10 100 250 500 1000]
                               [--duration 20] [--think-ms 8000] [--think-spread-ms 4000]
-                              [--out-json /tmp/load.json] [--plot docs/img/server-load.png]
+                              [--out-json /tmp/load.json] [--plot docs/img/server-load-human.png]
 
 Each run starts its own carrom-server (Release build, 127.0.0.1, ephemeral port, 2 I/O threads),
 ramps the matches up, measures for --duration seconds and stops the server. Prints a Markdown
