@@ -593,7 +593,7 @@ def write_report(tools, args, err_rows, fig, sens_rows, stab_rows, bench, elapse
     brk = next((r for r in bench_rows if r["name"].startswith("PhysicsExactBreak/record_events:0")), None)
     shots = next((r for r in bench_rows if r["name"].startswith("PhysicsExactRandomShots")), None)
     if brk and shots:
-        w(f"Targets (issue 3): the break at most 10 us median per full shot: "
+        w(f"Targets: the break at most 10 us median per full shot: "
           f"{fmt(brk['median_real_us'])} us ({'met' if brk['median_real_us'] <= 10 else 'NOT met'}); "
           f"at least 100,000 random full shots per second on one core: "
           f"{fmt(shots['median_items_s'])} /s ({'met' if shots['median_items_s'] >= 1e5 else 'NOT met'}). "
