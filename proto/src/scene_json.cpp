@@ -245,6 +245,14 @@ Decoded<nlohmann::json> parse_json_text(std::string_view text, std::size_t max_b
                                    std::to_string(kMaxJsonDepth) + " deep");
         return out;
     }
+    // The JSON library ends the input at a NUL byte and would ignore what follows; JSON never
+    // holds a raw NUL (not even inside a string), so any NUL makes the text malformed.
+    if (const auto nul = text.find('\0'); nul != std::string_view::npos) {
+        out.error =
+            make_error(scene_code::kMalformedJson, "",
+                       "the text is not valid JSON: a NUL byte at offset " + std::to_string(nul));
+        return out;
+    }
     KeyTracker keys;
     const Json::parser_callback_t track = [&keys](int, Json::parse_event_t event, Json& parsed) {
         if (event == Json::parse_event_t::object_start) {

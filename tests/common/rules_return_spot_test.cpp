@@ -93,5 +93,43 @@ TEST(RulesReturnSpot, SeveralReturnsInOneStrokeNeverOverlap) {
     EXPECT_FALSE(validate_scene(r.state.physics, r.state.bodies).has_value());
 }
 
+// The queen goes back to the centre (../shared/reference/carrom-rules.md), even when own coins
+// come back in the same stroke: they are placed around it.
+TEST(RulesReturnSpot, QueenReturnedWithOwnCoinsTakesTheCentre) {
+    MatchState m = test::broken(RuleSet::Icf);
+    test::pre_pocket(m, 2, 0);                               // an own coin in: the queen may fall
+    const StrokeResult r = test::stroke(m, {4, 0, 6}, true); // striker foul: 4, 6 and queen back
+    const Vec2 centre = r.state.physics.centre();
+    ASSERT_EQ(r.outcome.returned.size(), 4u); // 4, 6, the queen, and one due (coin 2)
+    bool queen_seen = false;
+    for (const ReturnedPiece& back : r.outcome.returned) {
+        const Body& body = r.state.bodies[static_cast<std::size_t>(back.id)];
+        EXPECT_FALSE(body.pocketed) << back.id;
+        EXPECT_EQ(body.pos_px, back.pos_px) << back.id;
+        if (back.id == kQueenId) {
+            queen_seen = true;
+            EXPECT_EQ(back.pos_px, centre);
+        } else {
+            EXPECT_GT(length(back.pos_px - centre), 2.0 * r.state.physics.coin_radius_px - 1e-9)
+                << back.id;
+        }
+    }
+    EXPECT_TRUE(queen_seen);
+    EXPECT_FALSE(test::overlaps_any(r.state));
+    EXPECT_FALSE(validate_scene(r.state.physics, r.state.bodies).has_value());
+}
+
+// Without the queen, several returned pieces are placed in the order they were returned.
+TEST(RulesReturnSpot, FirstReturnedCoinTakesAFreeCentre) {
+    MatchState m = test::broken(RuleSet::Icf);
+    test::pre_pocket(m, 0, 0); // the queen is off the board before the stroke (pending elsewhere)
+    m.queen = QueenState{QueenStatus::Covered, 0};
+    const StrokeResult r = test::stroke(m, {4, 6}, true);
+    ASSERT_GE(r.outcome.returned.size(), 2u);
+    EXPECT_EQ(r.outcome.returned[0].id, 4);
+    EXPECT_EQ(r.outcome.returned[0].pos_px, r.state.physics.centre());
+    EXPECT_FALSE(test::overlaps_any(r.state));
+}
+
 } // namespace
 } // namespace carrom::rules

@@ -50,6 +50,16 @@ TEST(SceneJsonText, RejectsMalformedJson) {
     expect_error("{\"layout\": \"standard\"} x", "malformed_json", "");
 }
 
+// The JSON library stops at a NUL byte; text after it must not be ignored.
+TEST(SceneJsonText, NulByteIsMalformed) {
+    using namespace std::string_literals;
+    expect_error("{\"layout\": \"standard\"}\0 garbage"s, "malformed_json", "");
+    expect_error("{\"layout\": \"standard\"}\0"s, "malformed_json", "");
+    expect_error("{\"layout\": \"stan\0dard\"}"s, "malformed_json", "");
+    const JsonError e = error_of("{\"layout\": \"standard\"}\0 x"s);
+    EXPECT_NE(e.message.find("offset 22"), std::string::npos) << e.message;
+}
+
 TEST(SceneJsonText, InvalidUtf8IsMalformedAndTheMessageStaysPrintable) {
     for (std::string_view text : {"\xff", "{\"a\xff\": 1}", "{\"layout\": \"\xc3\"}"}) {
         const JsonError e = error_of(text);

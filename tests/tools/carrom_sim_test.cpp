@@ -249,6 +249,15 @@ TEST(CarromSim, InvalidUtf8ExitsWithTwo) {
     EXPECT_EQ(e["code"], "malformed_json");
 }
 
+TEST(CarromSim, TextAfterANulByteExitsWithTwo) {
+    const std::string scene = kBreak + std::string(1, '\0') + " garbage";
+    const Json e = expect_bad_input(run_scene(scene));
+    EXPECT_EQ(e["code"], "malformed_json");
+    const std::string path = write_temp("stdin.json", scene);
+    const Json from_stdin = expect_bad_input(run_sim("- < " + path));
+    EXPECT_EQ(from_stdin["code"], "malformed_json");
+}
+
 TEST(CarromSim, MissingFileExitsWithTwo) {
     const Json e = expect_bad_input(run_sim(temp_path("does-not-exist.json")));
     EXPECT_EQ(e["code"], "io_error");

@@ -133,7 +133,35 @@ Stroke begin_stroke(const MatchState& state, int seat, const Shot& shot,
     return s;
 }
 
+namespace {
+
+// Puts the pieces returned this stroke on the board: the queen first, so that it takes the centre
+// (../shared/reference/carrom-rules.md), then the others in the order they were returned, each on
+// the free spot nearest the centre among the pieces already there.
+void place_returned(Stroke& s) {
+    MatchState& st = s.state;
+    std::vector<ReturnedPiece>& returned = s.outcome.returned;
+    for (const ReturnedPiece& back : returned) {
+        piece(st, back.id).pocketed = true; // not yet placed: no obstacle for the others
+    }
+    for (const bool queen : {true, false}) {
+        for (ReturnedPiece& back : returned) {
+            if ((back.id == kQueenId) != queen) {
+                continue;
+            }
+            Body& body = piece(st, back.id);
+            body.pos_px =
+                free_spot_near_centre(st.physics, st.bodies, st.physics.radius(body.kind));
+            body.pocketed = false;
+            back.pos_px = body.pos_px;
+        }
+    }
+}
+
+} // namespace
+
 StrokeResult finish_stroke(Stroke& s, bool extra_stroke) {
+    place_returned(s);
     MatchState& st = s.state;
     ShotOutcome& o = s.outcome;
     o.score_changes.clear();
@@ -167,9 +195,8 @@ void return_piece(Stroke& s, int id, RuleCode reason) {
         st.pocketed.erase(it);
     }
     Body& body = piece(st, id);
-    body.pos_px = free_spot_near_centre(st.physics, st.bodies, st.physics.radius(body.kind));
     body.vel_px_s = {};
-    body.pocketed = false;
+    body.pocketed = false; // back in play at once; its spot is chosen by place_returned
     s.outcome.returned.push_back(ReturnedPiece{id, body.kind, body.pos_px, reason});
 }
 

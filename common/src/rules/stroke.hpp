@@ -25,7 +25,8 @@ struct Stroke {
 // state.pocketed) and fills the outcome's header fields.
 Stroke begin_stroke(const MatchState& state, int seat, const Shot& shot,
                     const StrokePhysics& physics);
-// Sets scores deltas, queen_after, dues, next seat and turn number; returns the result.
+// Places the pieces returned this stroke (the queen first, on the centre when it is free), sets
+// scores deltas, queen_after, dues, next seat and turn number; returns the result.
 StrokeResult finish_stroke(Stroke& s, bool extra_stroke);
 
 int other_team(int team);
@@ -37,7 +38,7 @@ std::vector<int> of_kind(const Stroke& s, BodyKind kind);
 // Pieces of kind off the board (in state.pocketed).
 int count_pocketed(const MatchState& state, BodyKind kind);
 
-// Puts a pocketed piece back on the free spot nearest the centre and records it.
+// Puts a pocketed piece back on the board and records it; finish_stroke chooses its spot.
 void return_piece(Stroke& s, int id, RuleCode reason);
 // Returns the queen (if it is off the board) and sets it OnBoard.
 void return_queen(Stroke& s, RuleCode reason);

@@ -74,7 +74,7 @@ struct SceneSpec {
     std::vector<Body> bodies;
 };
 
-// Parses text with size and depth limits and rejects duplicate keys.
+// Parses text with size and depth limits and rejects duplicate keys and NUL bytes.
 Decoded<nlohmann::json> parse_json_text(std::string_view text,
                                         std::size_t max_bytes = kMaxSceneBytes);
 
