@@ -55,6 +55,14 @@ Parsed parse_text(std::string_view text, std::size_t max_bytes) {
                       "The message is " + std::to_string(text.size()) + " bytes; the limit is " +
                           std::to_string(max_bytes) + "."}};
     }
+    // nlohmann's lexer reads a NUL byte as the end of the input, so text after one would be
+    // ignored; valid JSON never holds a raw NUL (not even inside a string).
+    if (const auto nul = text.find('\0'); nul != std::string_view::npos) {
+        return {{},
+                Error{std::string(code::kMalformedJson),
+                      "The message is not valid JSON (a NUL byte at byte " + std::to_string(nul) +
+                          ")."}};
+    }
     try {
         return {json::parse(text.begin(), text.end()), {}};
     } catch (const json::parse_error& e) {

@@ -196,6 +196,16 @@ TEST(ProtoClient, HugeAndNonFiniteNumbersAreRejected) {
     EXPECT_EQ(error_of(R"({"type":"shoot","turn":0,"x":300,"angle":1e-400,"power":1})"), "");
 }
 
+TEST(ProtoClient, ANulByteAnywhereIsMalformedJson) {
+    using namespace std::string_literals;
+    EXPECT_EQ(error_of("{\"type\":\"ping\",\"nonce\":1}\0garbage"s), "malformed_json");
+    EXPECT_EQ(error_of("{\"type\":\"ping\",\"nonce\":1}\0"s), "malformed_json");
+    EXPECT_EQ(error_of("{\"type\":\"hello\",\"version\":1,\"name\":\"A\0B\"}"s), "malformed_json");
+    const auto decoded = decode_client("{\"type\":\"ping\",\"nonce\":1}\0x"s);
+    EXPECT_EQ(decoded.error.message, "The message is not valid JSON (a NUL byte at byte 25).");
+    EXPECT_EQ(decode_server("{}\0"s).error.code, "malformed_json");
+}
+
 TEST(ProtoClient, HelloNameRules) {
     EXPECT_EQ(error_of(R"({"type":"hello","version":1,"name":""})"), "bad_field");
     EXPECT_EQ(error_of(R"({"type":"hello","version":1,"name":"   "})"), "bad_field");
