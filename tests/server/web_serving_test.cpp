@@ -367,6 +367,7 @@ TEST(WebServingFlags, NoWebAnswersNotFound) {
     EXPECT_EQ(ask(server.port(), "GET", "/").status, 404);
     EXPECT_EQ(ask(server.port(), "GET", "/index.html").status, 404);
     EXPECT_EQ(ask(server.port(), "HEAD", "/js/app.js").status, 404);
+    EXPECT_EQ(ask(server.port(), "POST", "/").status, 404);
     server.expect_serving();
 }
 
