@@ -4,7 +4,7 @@
 //
 //   node scripts/web_report.mjs [--server PATH] [--runs N] [--json]
 //
-// It starts carrom-server (default build/test/server/carrom-server) and serves web/ over HTTP,
+// It starts carrom-server (default build/test/server/carrom-server), which serves the page,
 // opens the page (playwright-core from tests/web, the system chromium, the tests' flags), creates
 // a room against a server bot and breaks at full power with the mouse, in real time. Frame time
 // is, for each requestAnimationFrame callback while pieces move on screen, the time from the
@@ -24,7 +24,6 @@ const opt = (name, fallback) => {
   return i >= 0 ? args[i + 1] : fallback;
 };
 process.env.CARROM_SERVER = path.resolve(opt('--server', process.env.CARROM_SERVER ?? path.join(root, 'build/test/server/carrom-server')));
-process.env.CARROM_WEB_ROOT = process.env.CARROM_WEB_ROOT ?? path.join(root, 'web');
 const runs = Number(opt('--runs', '5'));
 const unthrottled = args.includes('--unthrottled');
 const muted = args.includes('--mute');
@@ -137,7 +136,7 @@ run('web_report', 300000, async (t) => {
     work_p99_ms: round(percentile(pooled.inside, 0.99)),
     idle_p99_ms: round(percentile(pooled.idle, 0.99)),
   };
-  const report = { all, served_by: web.fromServer ? 'carrom-server' : 'python3 -m http.server', viewport: '900x900', chromium_args: 'see tests/web/lib/harness.mjs', runs: results, download };
+  const report = { all, served_by: 'carrom-server', viewport: '900x900', chromium_args: 'see tests/web/lib/harness.mjs', runs: results, download };
   if (args.includes('--json')) {
     console.log(JSON.stringify(report));
   } else {

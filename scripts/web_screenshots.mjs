@@ -17,7 +17,6 @@ const opt = (name, fallback) => {
   return i >= 0 ? args[i + 1] : fallback;
 };
 process.env.CARROM_SERVER = path.resolve(opt('--server', process.env.CARROM_SERVER ?? path.join(root, 'build/test/server/carrom-server')));
-process.env.CARROM_WEB_ROOT = process.env.CARROM_WEB_ROOT ?? path.join(root, 'web');
 const out = path.resolve(opt('--out', path.join(root, 'docs/img')));
 
 const { launchBrowser, pageUrl, run, startServer, startWebServer } = await import(path.join(root, 'tests/web/lib/harness.mjs'));

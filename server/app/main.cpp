@@ -1,6 +1,7 @@
 // carrom-server: the authoritative game server. Flags fall back to CARROM_* environment
 // variables; see docs/server.md.
 #include "carrom/server/server.hpp"
+#include "carrom/server/web_assets.hpp"
 
 #include "bot_brains.hpp"
 
@@ -10,6 +11,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <exception>
+#include <memory>
 
 int main(int argc, char** argv) {
     carrom::server::ServerSettings s;
@@ -17,6 +19,8 @@ int main(int argc, char** argv) {
     std::uint64_t bot_seed = 1;
     int bot_think_ms = 300;
     bool no_bots = false;
+    std::string web_root;
+    bool no_web = false;
     CLI::App app{"carrom-server: authoritative carrom game server (WebSocket + HTTP)"};
     app.option_defaults()->always_capture_default();
     app.add_option("--host", s.host, "Address to listen on (0.0.0.0 serves other machines)")
@@ -84,6 +88,13 @@ int main(int argc, char** argv) {
         ->check(CLI::IsMember({"random", "easy", "medium", "hard"}));
     app.add_flag("--no-bots", no_bots, "Refuse rooms that ask for a bot seat (\"unsupported\")")
         ->envname("CARROM_NO_BOTS");
+    auto* web_root_option =
+        app.add_option("--web-root", web_root,
+                       "Serve the web client from this directory instead of the embedded copy")
+            ->envname("CARROM_WEB_ROOT");
+    app.add_flag("--no-web", no_web, "Do not serve the web client (404)")
+        ->envname("CARROM_NO_WEB")
+        ->excludes(web_root_option);
     app.add_option("--log-level", log_level, "trace, debug, info, warn, error, off")
         ->envname("CARROM_LOG_LEVEL")
         ->check(CLI::IsMember({"trace", "debug", "info", "warn", "error", "off"}));
@@ -91,16 +102,37 @@ int main(int argc, char** argv) {
     (void)carrom::proto::parse(quick_bot_level, s.quick_match_bot_level);
 
     spdlog::set_level(spdlog::level::from_str(log_level));
+    std::shared_ptr<const carrom::server::StaticSite> web;
+    if (!web_root.empty()) {
+        auto load = carrom::server::StaticSite::from_directory(web_root);
+        if (!load.site) {
+            std::fprintf(stderr, "carrom-server: bad_web_root: %s\n", load.error.c_str());
+            return 2;
+        }
+        web = std::make_shared<const carrom::server::StaticSite>(std::move(*load.site));
+    } else if (!no_web) {
+        web = std::make_shared<const carrom::server::StaticSite>(
+            carrom::server::StaticSite::from_files(carrom::server::embedded_web_files()));
+    }
     try {
-        carrom::server::Server server(
-            s, no_bots ? carrom::server::BotFactory{}
-                       : carrom::server::make_strategy_bot_factory(
-                             bot_seed, std::chrono::milliseconds(bot_think_ms)));
+        carrom::server::Server server(s,
+                                      no_bots
+                                          ? carrom::server::BotFactory{}
+                                          : carrom::server::make_strategy_bot_factory(
+                                                bot_seed, std::chrono::milliseconds(bot_think_ms)),
+                                      web);
         const auto port = server.listen();
         std::printf("listening on %s:%u\n", s.host.c_str(), static_cast<unsigned>(port));
         std::fflush(stdout);
         spdlog::info("carrom-server on {}:{} ({} threads, {} Hz snapshots)", s.host, port,
                      s.threads, s.snapshot_hz);
+        if (web) {
+            spdlog::info("web client at http://{}:{}/ ({}: {} files, {} bytes)", s.host, port,
+                         web_root.empty() ? "embedded" : web_root, web->file_count(),
+                         web->total_bytes());
+        } else {
+            spdlog::info("web client off (--no-web)");
+        }
         server.start();
         server.run_until_signal();
         spdlog::info("stopped");

@@ -3,26 +3,76 @@
 #include "server_core.hpp"
 #include "ws_session.hpp"
 
+#include <boost/asio/buffer.hpp>
 #include <boost/beast/core/bind_handler.hpp>
 #include <boost/beast/websocket/rfc6455.hpp>
 
+#include <string_view>
+
 namespace carrom::server {
+namespace {
+
+// The request line and headers together; a longer request line is 414, longer headers 431.
+constexpr std::uint32_t kHeaderLimit = 8192;
+// No endpoint takes a body; a larger one is 413.
+constexpr std::uint64_t kBodyLimit = 1024;
+// How long a closing connection reads and drops what the client still sends.
+constexpr std::chrono::seconds kLinger{2};
+
+std::string_view refusal_sentence(http::status status) {
+    switch (status) {
+    case http::status::payload_too_large:
+        return "Request body too large.\n";
+    case http::status::uri_too_long:
+        return "URI too long.\n";
+    case http::status::request_header_fields_too_large:
+        return "Request header fields too large.\n";
+    default:
+        return "Bad request: it is not a well-formed HTTP/1.1 request.\n";
+    }
+}
+
+} // namespace
 
 HttpSession::HttpSession(ServerCore& core, tcp::socket socket)
     : core_(core), stream_(std::move(socket)) {}
 
 void HttpSession::run() {
+    read_request();
+}
+
+void HttpSession::read_request() {
     parser_.emplace();
-    parser_->header_limit(8192);
-    parser_->body_limit(1024);
+    parser_->header_limit(kHeaderLimit);
+    parser_->body_limit(kBodyLimit);
     stream_.expires_after(to_duration(core_.settings.handshake_timeout_s));
     http::async_read(stream_, buffer_, *parser_,
                      beast::bind_front_handler(&HttpSession::on_read, shared_from_this()));
 }
 
+std::optional<http::status> HttpSession::read_error_status(beast::error_code ec) const {
+    if (ec.category() != http::make_error_code(http::error::bad_target).category() ||
+        ec == http::error::end_of_stream || ec == http::error::partial_message) {
+        return std::nullopt; // timeout, reset, or the client closed
+    }
+    if (ec == http::error::body_limit) {
+        return http::status::payload_too_large;
+    }
+    if (ec == http::error::header_limit) {
+        // No target yet: the request line itself did not end within the limit.
+        return parser_->get().target().empty() ? http::status::uri_too_long
+                                               : http::status::request_header_fields_too_large;
+    }
+    return http::status::bad_request;
+}
+
 void HttpSession::on_read(beast::error_code ec, std::size_t) {
     if (ec) {
-        return; // timeout, garbage or a closed connection
+        if (const auto status = read_error_status(ec)) {
+            core_.metrics.http_requests_total.fetch_add(1, std::memory_order_relaxed);
+            refuse(*status);
+        }
+        return;
     }
     auto request = parser_->release();
     if (beast::websocket::is_upgrade(request)) {
@@ -33,12 +83,15 @@ void HttpSession::on_read(beast::error_code ec, std::size_t) {
     respond(request);
 }
 
-void HttpSession::respond(const http::request<http::string_body>& request) {
-    auto response = std::make_shared<http::response<http::string_body>>();
+void HttpSession::respond(const Request& request) {
+    const auto target = request.target();
+    if (target != "/healthz" && target != "/metrics" && core_.web) {
+        respond_web(request);
+        return;
+    }
+    auto response = std::make_shared<Response>();
     response->version(request.version());
     response->set(http::field::server, "carrom-server");
-    response->keep_alive(false);
-    const auto target = request.target();
     const bool get = request.method() == http::verb::get;
     if (target == "/healthz" || target == "/metrics") {
         if (!get) {
@@ -57,16 +110,77 @@ void HttpSession::respond(const http::request<http::string_body>& request) {
         response->result(http::status::not_found);
         response->body() = "not found\n";
     }
-    if (!response->has_content_length() && response->body().size() > 0 &&
+    if (response->body().size() > 0 &&
         response->find(http::field::content_type) == response->end()) {
         response->set(http::field::content_type, "text/plain");
     }
     response->prepare_payload();
-    http::async_write(stream_, *response,
-                      [self = shared_from_this(), response](beast::error_code, std::size_t) {
-                          beast::error_code ignored;
-                          self->stream_.socket().shutdown(tcp::socket::shutdown_send, ignored);
-                      });
+    if (request.method() == http::verb::head) {
+        response->body().clear(); // the GET's Content-Length, no body
+    }
+    write(std::move(response), false);
+}
+
+void HttpSession::respond_web(const Request& request) {
+    const auto view = [](beast::string_view v) { return std::string_view(v.data(), v.size()); };
+    StaticRequest asked{view(request.method_string()), view(request.target()), std::nullopt};
+    if (const auto it = request.find(http::field::if_none_match); it != request.end()) {
+        asked.if_none_match = view(it->value());
+    }
+    const StaticResponse answer = core_.web->respond(asked);
+    auto response = std::make_shared<Response>();
+    response->version(request.version());
+    response->result(static_cast<unsigned>(answer.status));
+    response->set(http::field::server, "carrom-server");
+    for (const HttpHeader& h : answer.headers) {
+        response->set(h.name, h.value); // Content-Length included (a HEAD's is the GET's)
+    }
+    response->body().assign(answer.body);
+    const bool served = answer.status == 200 || answer.status == 304;
+    write(std::move(response), served && request.keep_alive());
+}
+
+void HttpSession::refuse(http::status status) {
+    const std::string_view sentence = refusal_sentence(status);
+    auto response = std::make_shared<Response>(status, 11);
+    response->set(http::field::server, "carrom-server");
+    response->set(http::field::content_type, "text/plain; charset=utf-8");
+    response->set(http::field::cache_control, "no-store");
+    response->body().assign(sentence);
+    response->prepare_payload();
+    write(std::move(response), false);
+}
+
+void HttpSession::write(std::shared_ptr<Response> response, bool keep_alive) {
+    response->keep_alive(keep_alive);
+    http::async_write(
+        stream_, *response,
+        [self = shared_from_this(), response, keep_alive](beast::error_code ec, std::size_t) {
+            if (ec) {
+                return;
+            }
+            if (keep_alive) {
+                self->read_request();
+            } else {
+                self->close();
+            }
+        });
+}
+
+void HttpSession::close() {
+    beast::error_code ignored;
+    stream_.socket().shutdown(tcp::socket::shutdown_send, ignored);
+    stream_.expires_after(kLinger);
+    drain();
+}
+
+void HttpSession::drain() {
+    stream_.async_read_some(asio::buffer(drained_),
+                            [self = shared_from_this()](beast::error_code ec, std::size_t) {
+                                if (!ec) {
+                                    self->drain();
+                                }
+                            });
 }
 
 } // namespace carrom::server

@@ -20,7 +20,8 @@
 namespace carrom::server {
 
 struct Server::Impl {
-    Impl(ServerSettings settings, BotFactory bots) : core(std::move(settings), std::move(bots)) {}
+    Impl(ServerSettings settings, BotFactory bots, std::shared_ptr<const StaticSite> web)
+        : core(std::move(settings), std::move(bots), std::move(web)) {}
 
     ServerCore core;
     std::shared_ptr<Listener> listener;
@@ -29,8 +30,8 @@ struct Server::Impl {
     bool stopped = false;
 };
 
-Server::Server(ServerSettings settings, BotFactory bots)
-    : impl_(std::make_unique<Impl>(std::move(settings), std::move(bots))) {}
+Server::Server(ServerSettings settings, BotFactory bots, std::shared_ptr<const StaticSite> web)
+    : impl_(std::make_unique<Impl>(std::move(settings), std::move(bots), std::move(web))) {}
 
 Server::~Server() {
     shutdown();

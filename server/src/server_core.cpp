@@ -8,8 +8,9 @@
 
 namespace carrom::server {
 
-ServerCore::ServerCore(ServerSettings s, BotFactory b)
-    : settings(std::move(s)), bots(std::move(b)), ioc(std::max(1, settings.threads)),
+ServerCore::ServerCore(ServerSettings s, BotFactory b, std::shared_ptr<const StaticSite> w)
+    : settings(std::move(s)), bots(std::move(b)), web(std::move(w)),
+      ioc(std::max(1, settings.threads)),
       registry(random, static_cast<std::size_t>(std::max(0, settings.max_rooms))) {}
 
 void ServerCore::add_session(const std::shared_ptr<WsSession>& session) {

@@ -11,6 +11,7 @@
 #include "carrom/server/random.hpp"
 #include "carrom/server/registry.hpp"
 #include "carrom/server/settings.hpp"
+#include "carrom/server/static_site.hpp"
 
 #include <boost/asio/thread_pool.hpp>
 
@@ -28,13 +29,14 @@ class WsSession;
 using SessionRegistry = Registry<RoomActor, std::weak_ptr<WsSession>>;
 
 struct ServerCore {
-    ServerCore(ServerSettings s, BotFactory b);
+    ServerCore(ServerSettings s, BotFactory b, std::shared_ptr<const StaticSite> w);
 
     // Declaration order matters for destruction: objects owned by pending handlers die with
     // ioc and may still touch clock, random and metrics; rooms in the registry own timers that
     // need ioc.
     ServerSettings settings;
     BotFactory bots;
+    std::shared_ptr<const StaticSite> web; // the web client's files; null = none
     room::SteadyClock clock;
     SystemRandom random;
     Metrics metrics;

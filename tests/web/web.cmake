@@ -26,5 +26,5 @@ foreach(test two_pages_match page_vs_bot touch_phone reload_resume lobby_paths)
         LABELS web
         # One browser at a time: each starts several pages, and timings stay honest.
         RESOURCE_LOCK chromium
-        ENVIRONMENT "CARROM_SERVER=$<TARGET_FILE:carrom-server>;CARROM_BOT=$<TARGET_FILE:carrom-bot>;CARROM_WEB_ROOT=${PROJECT_SOURCE_DIR}/web;CARROM_CHROMIUM=${CARROM_CHROMIUM}")
+        ENVIRONMENT "CARROM_SERVER=$<TARGET_FILE:carrom-server>;CARROM_BOT=$<TARGET_FILE:carrom-bot>;CARROM_CHROMIUM=${CARROM_CHROMIUM}")
 endforeach()

@@ -1,10 +1,11 @@
 // What the browser tests share: a real carrom-server (and carrom-bot) started from the build,
-// the web client served over HTTP, the system chromium driven by playwright-core (nothing is
-// downloaded), pages as players with the debug hook `window.carrom`, console error collection,
-// and cleanup of every child process on any exit. Every wait has a deadline.
+// the web client served by that carrom-server (its embedded copy), the system chromium driven by
+// playwright-core (nothing is downloaded), pages as players with the debug hook `window.carrom`,
+// console error collection, and cleanup of every child process on any exit. Every wait has a
+// deadline.
 //
 // Environment (set by tests/web/web.cmake): CARROM_SERVER, CARROM_BOT (paths of the built
-// binaries), CARROM_WEB_ROOT (web/), CARROM_CHROMIUM (default /usr/bin/chromium).
+// binaries), CARROM_CHROMIUM (default /usr/bin/chromium).
 
 import { spawn } from 'node:child_process';
 import { once } from 'node:events';
@@ -13,7 +14,6 @@ import { createInterface } from 'node:readline';
 export const env = {
   server: process.env.CARROM_SERVER,
   bot: process.env.CARROM_BOT,
-  webRoot: process.env.CARROM_WEB_ROOT,
   chromium: process.env.CARROM_CHROMIUM || '/usr/bin/chromium',
 };
 
@@ -83,25 +83,22 @@ export async function startServer(args = []) {
   return { port, ws: `ws://127.0.0.1:${port}/`, child };
 }
 
-// The web client over HTTP: from carrom-server itself when it serves the page at `/` (then the
-// page's WebSocket is its own host), else from python's http.server on an ephemeral port.
-export async function startWebServer(server, root = env.webRoot) {
-  if (server) {
-    const answer = await fetch(`http://127.0.0.1:${server.port}/`).catch(() => null);
-    if (answer && answer.status === 200 && (answer.headers.get('content-type') ?? '').startsWith('text/html')) {
-      return { port: server.port, fromServer: true };
-    }
-  }
-  if (!root) throw new Error('CARROM_WEB_ROOT is not set');
-  const child = await startChild('http.server', 'python3',
-    ['-u', '-m', 'http.server', '0', '--bind', '127.0.0.1', '--directory', root],
-    /Serving HTTP on [\d.]+ port (\d+)/);
-  return { port: Number(child.match[1]), child, fromServer: false };
+// The web client over HTTP from carrom-server itself (the page's WebSocket is then its own
+// host); fails when the server does not answer `GET /` with the page.
+export async function startWebServer(server) {
+  const answer = await fetch(`http://127.0.0.1:${server.port}/`).catch((e) => e);
+  if (answer instanceof Error) throw new Error(`GET / of carrom-server: ${answer.message}`);
+  const type = answer.headers.get('content-type') ?? '';
+  await answer.arrayBuffer();
+  check(answer.status === 200 && type.startsWith('text/html'),
+    `carrom-server does not serve the web client at / (${answer.status}, ${type})`);
+  return { port: server.port };
 }
 
-// The page address: the web client from `web`, talking to the server `server`.
+// The page address: the web client from `web`, talking to the server `server` (another address
+// than the page's own is given in the `ws` query parameter).
 export function pageUrl(web, server, hash = '') {
-  if (web.fromServer && web.port === server.port) return `http://127.0.0.1:${web.port}/${hash}`;
+  if (web.port === server.port) return `http://127.0.0.1:${web.port}/${hash}`;
   return `http://127.0.0.1:${web.port}/index.html?ws=${encodeURIComponent(server.ws)}${hash}`;
 }
 

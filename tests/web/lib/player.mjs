@@ -33,18 +33,18 @@ export class Player {
     return this.page.evaluate(() => window.carrom.state());
   }
 
-  // Waits until fn(state, arg) is true in the page (fn runs there: it sees only its
-  // arguments); returns the state.
+  // Waits until fn(state, arg) is true of the page's state, polled every 50 ms; returns the
+  // state. fn runs here on a copy of that state (it sees only its arguments): the page's
+  // Content-Security-Policy forbids evaluating a function's source in the page.
   async waitFor(what, fn, timeoutMs = 20000, arg = null) {
-    try {
-      await this.page.waitForFunction(([src, a]) => {
-        // eslint-disable-next-line no-new-func
-        const f = new Function('s', 'arg', `return (${src})(s, arg);`);
-        return f(window.carrom.state(), a);
-      }, [fn.toString(), arg], { timeout: timeoutMs, polling: 50 });
-    } catch (e) {
-      const s = await this.state().catch(() => null);
-      throw new Error(`${this.label}: ${what} did not happen within ${timeoutMs} ms (phase ${s?.phase}, session ${s?.session.phase}: ${s?.session.status})`);
+    const deadline = Date.now() + timeoutMs;
+    for (;;) {
+      const s = await this.state().catch(() => null); // null while the page (re)loads
+      if (s && fn(s, arg)) break;
+      if (Date.now() >= deadline) {
+        throw new Error(`${this.label}: ${what} did not happen within ${timeoutMs} ms (phase ${s?.phase}, session ${s?.session.phase}: ${s?.session.status})`);
+      }
+      await new Promise((r) => { setTimeout(r, 50); });
     }
     // Two more frames, so that what the page draws and writes (canvas, HUD) shows it too.
     await this.page.evaluate(() => new Promise((r) => { requestAnimationFrame(() => requestAnimationFrame(r)); }));

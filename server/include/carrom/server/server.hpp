@@ -1,10 +1,12 @@
 #pragma once
-// The network server: a WebSocket endpoint and plain HTTP (GET /healthz, GET /metrics) on one
-// port, several I/O threads, one strand per room and per connection. No Boost in this header.
+// The network server: a WebSocket endpoint and plain HTTP (GET /healthz, GET /metrics and, when
+// given a StaticSite, the web client's files) on one port, several I/O threads, one strand per
+// room and per connection. No Boost in this header.
 
 #include "carrom/server/bot_factory.hpp"
 #include "carrom/server/metrics.hpp"
 #include "carrom/server/settings.hpp"
+#include "carrom/server/static_site.hpp"
 
 #include <cstdint>
 #include <memory>
@@ -14,7 +16,10 @@ namespace carrom::server {
 class Server {
 public:
     // bots: makes server-side bot brains; empty = create_room with a bot is "unsupported".
-    explicit Server(ServerSettings settings, BotFactory bots = {});
+    // web: the files answered to GET and HEAD of any other path than /healthz and /metrics
+    // (docs/server.md, "HTTP"); null = none (404).
+    explicit Server(ServerSettings settings, BotFactory bots = {},
+                    std::shared_ptr<const StaticSite> web = nullptr);
     ~Server(); // stops and joins the threads
     Server(const Server&) = delete;
     Server& operator=(const Server&) = delete;
