@@ -92,8 +92,11 @@ std::optional<proto::Error> Room::join(std::shared_ptr<Peer> peer, proto::Role r
         slot.peer = peer;
         return fill_seat(std::move(slot));
     }
+    // Only the newcomer gets the room state: spectators coming and going send nothing to the
+    // others (their count reaches them with the next room_state), so joining and leaving cannot
+    // flood the players' connections.
     spectators_.push_back(peer);
-    broadcast_room_state();
+    send_to(*peer, room_state(-1));
     send_to(*peer, current_keyframe());
     notify(MembershipChange::Joined, -1, peer->name());
     return std::nullopt;
@@ -162,7 +165,6 @@ void Room::leave(const Peer& peer) {
         const auto before = spectators_.size();
         std::erase_if(spectators_, [&](const auto& s) { return s.get() == &peer; });
         if (spectators_.size() != before) {
-            broadcast_room_state();
             notify(MembershipChange::Left, -1, peer.name());
         }
         return;
@@ -248,13 +250,15 @@ void Room::broadcast(const proto::ServerMessage& message, MessageKind kind, cons
 void Room::broadcast_room_state() {
     for (std::size_t i = 0; i < seats_.size(); ++i) {
         if (seats_[i].peer) {
-            send_to(*seats_[i].peer, room_state(static_cast<int>(i)));
+            seats_[i].peer->send({std::make_shared<const std::string>(
+                                      proto::encode(room_state(static_cast<int>(i)))),
+                                  MessageKind::State});
         }
     }
     if (!spectators_.empty()) {
         auto text = std::make_shared<const std::string>(proto::encode(room_state(-1)));
         for (auto& s : spectators_) {
-            s->send({text, MessageKind::Normal});
+            s->send({text, MessageKind::State});
         }
     }
 }
