@@ -120,7 +120,7 @@ std::optional<proto::Error> Room::resume(std::shared_ptr<Peer> peer) {
     if (was_dropped) {
         broadcast(proto::Event{proto::PlayerReturnedEvent{seat}}, MessageKind::Normal, peer.get());
     }
-    broadcast_room_state();
+    broadcast_room_state(peer.get());
     send_to(*peer, current_keyframe());
     notify(MembershipChange::Returned, seat);
     return std::nullopt;
@@ -148,7 +148,7 @@ std::optional<proto::Error> Room::fill_seat(SeatSlot slot) {
     if (started_now) {
         start_game();
     }
-    broadcast_room_state();
+    broadcast_room_state(free->peer.get());
     if (free->peer) {
         send_to(*free->peer, current_keyframe());
     }
@@ -247,12 +247,13 @@ void Room::broadcast(const proto::ServerMessage& message, MessageKind kind, cons
     }
 }
 
-void Room::broadcast_room_state() {
+void Room::broadcast_room_state(const Peer* joiner) {
     for (std::size_t i = 0; i < seats_.size(); ++i) {
         if (seats_[i].peer) {
-            seats_[i].peer->send({std::make_shared<const std::string>(
-                                      proto::encode(room_state(static_cast<int>(i)))),
-                                  MessageKind::State});
+            seats_[i].peer->send(
+                {std::make_shared<const std::string>(
+                     proto::encode(room_state(static_cast<int>(i)))),
+                 seats_[i].peer.get() == joiner ? MessageKind::Normal : MessageKind::State});
         }
     }
     if (!spectators_.empty()) {

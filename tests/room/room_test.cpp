@@ -100,6 +100,22 @@ TEST_F(RoomTest, ThirdPlayerFindsTheRoomFull) {
     EXPECT_EQ(c->last_room_state().spectators, 1);
 }
 
+// A member's first room state is never superseded in its queue (it must arrive before the
+// join keyframe); later broadcasts may be.
+TEST_F(RoomTest, AJoinersFirstRoomStateIsNeverSuperseded) {
+    seat_both();
+    ASSERT_FALSE(a_->kinds.empty());
+    EXPECT_TRUE(std::holds_alternative<proto::RoomState>(a_->received[0]));
+    EXPECT_EQ(a_->kinds[0], MessageKind::Normal);
+    ASSERT_FALSE(b_->kinds.empty());
+    EXPECT_TRUE(std::holds_alternative<proto::RoomState>(b_->received[0]));
+    EXPECT_EQ(b_->kinds[0], MessageKind::Normal);
+    // a's copy of the state b's arrival broadcast is an ordinary, replaceable one.
+    ASSERT_GE(a_->kinds.size(), 3U); // room state, join keyframe, then b's arrival
+    EXPECT_TRUE(std::holds_alternative<proto::RoomState>(a_->received[2]));
+    EXPECT_EQ(a_->kinds[2], MessageKind::State);
+}
+
 // Spectators coming and going send the others nothing (no room_state of about 3 KB each time):
 // their count reaches the players with the next room_state.
 TEST_F(RoomTest, SpectatorChurnSendsThePlayersNothing) {
