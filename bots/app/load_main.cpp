@@ -53,8 +53,11 @@ std::optional<SpawnedServer> spawn_server(const std::string& binary,
         dup2(out[1], STDOUT_FILENO);
         close(out[0]);
         close(out[1]);
-        std::vector<std::string> args = {binary, "--host",      "127.0.0.1", "--port",
-                                         "0",    "--log-level", "warn"};
+        // Every load client connects from 127.0.0.1.
+        std::vector<std::string> args = {
+            binary,   "--host",      "127.0.0.1", "--port",
+            "0",      "--log-level", "warn",      "--max-connections-per-address",
+            "1000000"};
         args.insert(args.end(), extra.begin(), extra.end());
         std::vector<char*> argv;
         for (auto& a : args) {

@@ -167,8 +167,10 @@ std::string FieldReader::text(std::string_view key, std::size_t min_bytes, std::
         return {};
     }
     if (text->size() < min_bytes || text->size() > max_bytes) {
-        fail(key, "must be " + std::to_string(min_bytes) + " to " + std::to_string(max_bytes) +
-                      " bytes long");
+        fail(key, min_bytes == max_bytes
+                      ? "must be exactly " + std::to_string(min_bytes) + " bytes long"
+                      : "must be " + std::to_string(min_bytes) + " to " +
+                            std::to_string(max_bytes) + " bytes long");
         return {};
     }
     if (has_control_character(*text)) {

@@ -92,8 +92,11 @@ std::optional<proto::Error> Room::join(std::shared_ptr<Peer> peer, proto::Role r
         slot.peer = peer;
         return fill_seat(std::move(slot));
     }
+    // Only the newcomer gets the room state: spectators coming and going send nothing to the
+    // others (their count reaches them with the next room_state), so joining and leaving cannot
+    // flood the players' connections.
     spectators_.push_back(peer);
-    broadcast_room_state();
+    send_to(*peer, room_state(-1));
     send_to(*peer, current_keyframe());
     notify(MembershipChange::Joined, -1, peer->name());
     return std::nullopt;
@@ -117,7 +120,7 @@ std::optional<proto::Error> Room::resume(std::shared_ptr<Peer> peer) {
     if (was_dropped) {
         broadcast(proto::Event{proto::PlayerReturnedEvent{seat}}, MessageKind::Normal, peer.get());
     }
-    broadcast_room_state();
+    broadcast_room_state(peer.get());
     send_to(*peer, current_keyframe());
     notify(MembershipChange::Returned, seat);
     return std::nullopt;
@@ -145,7 +148,7 @@ std::optional<proto::Error> Room::fill_seat(SeatSlot slot) {
     if (started_now) {
         start_game();
     }
-    broadcast_room_state();
+    broadcast_room_state(free->peer.get());
     if (free->peer) {
         send_to(*free->peer, current_keyframe());
     }
@@ -162,7 +165,6 @@ void Room::leave(const Peer& peer) {
         const auto before = spectators_.size();
         std::erase_if(spectators_, [&](const auto& s) { return s.get() == &peer; });
         if (spectators_.size() != before) {
-            broadcast_room_state();
             notify(MembershipChange::Left, -1, peer.name());
         }
         return;
@@ -245,16 +247,19 @@ void Room::broadcast(const proto::ServerMessage& message, MessageKind kind, cons
     }
 }
 
-void Room::broadcast_room_state() {
+void Room::broadcast_room_state(const Peer* joiner) {
     for (std::size_t i = 0; i < seats_.size(); ++i) {
         if (seats_[i].peer) {
-            send_to(*seats_[i].peer, room_state(static_cast<int>(i)));
+            seats_[i].peer->send(
+                {std::make_shared<const std::string>(
+                     proto::encode(room_state(static_cast<int>(i)))),
+                 seats_[i].peer.get() == joiner ? MessageKind::Normal : MessageKind::State});
         }
     }
     if (!spectators_.empty()) {
         auto text = std::make_shared<const std::string>(proto::encode(room_state(-1)));
         for (auto& s : spectators_) {
-            s->send({text, MessageKind::Normal});
+            s->send({text, MessageKind::State});
         }
     }
 }

@@ -216,6 +216,7 @@ void Room::rematch(Peer& peer) {
     start_game();
     bot_turn_taken_ = -1;
     broadcast_room_state();
+    ++seq_; // the new game's board is a new broadcast snapshot
     broadcast(current_keyframe());
     broadcast_turn();
 }

@@ -6,6 +6,7 @@
 #include "bot_brains.hpp"
 
 #include <CLI/CLI.hpp>
+#include <spdlog/sinks/stdout_color_sinks.h>
 #include <spdlog/spdlog.h>
 
 #include <cstdint>
@@ -57,6 +58,10 @@ int main(int argc, char** argv) {
     app.add_option("--max-connections", s.max_connections, "Open WebSocket connections")
         ->envname("CARROM_MAX_CONNECTIONS")
         ->check(CLI::Range(1, 1000000));
+    app.add_option("--max-connections-per-address", s.max_connections_per_address,
+                   "Open WebSocket connections from one client address")
+        ->envname("CARROM_MAX_CONNECTIONS_PER_ADDRESS")
+        ->check(CLI::Range(1, 1000000));
     app.add_option("--max-rooms", s.max_rooms, "Open rooms")
         ->envname("CARROM_MAX_ROOMS")
         ->check(CLI::Range(1, 1000000));
@@ -101,6 +106,9 @@ int main(int argc, char** argv) {
     CLI11_PARSE(app, argc, argv);
     (void)carrom::proto::parse(quick_bot_level, s.quick_match_bot_level);
 
+    // Logs go to stderr: stdout carries only the "listening on" line that scripts read.
+    spdlog::set_default_logger(std::make_shared<spdlog::logger>(
+        "", std::make_shared<spdlog::sinks::stderr_color_sink_mt>()));
     spdlog::set_level(spdlog::level::from_str(log_level));
     std::shared_ptr<const carrom::server::StaticSite> web;
     if (!web_root.empty()) {

@@ -23,6 +23,27 @@ void ServerCore::remove_session(const WsSession* session) {
     sessions.erase(session);
 }
 
+bool ServerCore::add_address(const std::string& address) {
+    std::lock_guard lock(addresses_mutex);
+    int& open = connections_by_address[address];
+    if (open >= settings.max_connections_per_address) {
+        if (open == 0) {
+            connections_by_address.erase(address);
+        }
+        return false;
+    }
+    ++open;
+    return true;
+}
+
+void ServerCore::remove_address(const std::string& address) {
+    std::lock_guard lock(addresses_mutex);
+    auto it = connections_by_address.find(address);
+    if (it != connections_by_address.end() && --it->second <= 0) {
+        connections_by_address.erase(it);
+    }
+}
+
 std::variant<std::shared_ptr<RoomActor>, proto::Error>
 ServerCore::create_room(proto::RuleSet rule_set, const proto::RoomOptions& options) {
     room::RoomConfig config;

@@ -51,6 +51,13 @@ struct ServerCore {
     void add_session(const std::shared_ptr<WsSession>& session);
     void remove_session(const WsSession* session);
 
+    // Open WebSocket connections per client address (settings.max_connections_per_address).
+    std::mutex addresses_mutex;
+    std::unordered_map<std::string, int> connections_by_address;
+    // Counts one more connection from address; false (nothing counted) when it has the maximum.
+    bool add_address(const std::string& address);
+    void remove_address(const std::string& address);
+
     // A new room (counted in metrics, logged), or an error.
     std::variant<std::shared_ptr<RoomActor>, proto::Error>
     create_room(proto::RuleSet rule_set, const proto::RoomOptions& options);

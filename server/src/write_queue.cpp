@@ -10,7 +10,7 @@ std::size_t WriteQueue::in_flight(room::MessageKind kind) const {
 }
 
 void WriteQueue::count(room::MessageKind kind, bool added) {
-    if (kind == room::MessageKind::Normal) {
+    if (kind != room::MessageKind::Snapshot && kind != room::MessageKind::Cue) {
         return;
     }
     std::size_t& counter = kind == room::MessageKind::Snapshot ? snapshots_ : cues_;
@@ -32,6 +32,9 @@ WriteQueue::Push WriteQueue::push(room::Outgoing message) {
     }
     if (message.kind == room::MessageKind::Cue && (behind || waiting_cues() >= cue_backlog_)) {
         return Push::DroppedCue;
+    }
+    if (message.kind == room::MessageKind::State) {
+        drop_waiting_states();
     }
     const std::size_t size = message.text ? message.text->size() : 0;
     if (bytes_ + size > max_bytes_) {
@@ -60,6 +63,28 @@ void WriteQueue::finish_write() {
     count(queue_.front().kind, false);
     queue_.pop_front();
     writing_ = false;
+}
+
+void WriteQueue::drop_waiting_states() {
+    const auto first_waiting = queue_.begin() + (writing_ && !queue_.empty() ? 1 : 0);
+    for (auto it = first_waiting; it != queue_.end();) {
+        if (it->kind == room::MessageKind::State) {
+            bytes_ -= it->text ? it->text->size() : 0;
+            it = queue_.erase(it);
+        } else {
+            ++it;
+        }
+    }
+}
+
+void WriteQueue::drop_waiting() {
+    const std::size_t keep = writing_ && !queue_.empty() ? 1U : 0U;
+    while (queue_.size() > keep) {
+        const std::size_t size = queue_.back().text ? queue_.back().text->size() : 0;
+        bytes_ -= size;
+        count(queue_.back().kind, false);
+        queue_.pop_back();
+    }
 }
 
 } // namespace carrom::server

@@ -25,7 +25,9 @@ std::size_t hard_frame_limit(std::size_t max_message_bytes) {
     return std::max<std::size_t>(max_message_bytes * 4, 65536);
 }
 
-constexpr std::chrono::seconds kKillAfter{3}; // a close that does not finish is cut off
+// A client too slow for its write queue gets this long for the write in flight and the close
+// frame 4003 before its socket is closed.
+constexpr std::chrono::milliseconds kSlowKillAfter{1000};
 
 } // namespace
 
@@ -81,6 +83,19 @@ void WsSession::on_accept(beast::error_code ec) {
         do_read();
         return;
     }
+    beast::error_code endpoint_ec;
+    const auto remote = beast::get_lowest_layer(ws_).socket().remote_endpoint(endpoint_ec);
+    address_ = endpoint_ec ? std::string() : remote.address().to_string();
+    if (!core_.add_address(address_)) {
+        core_.metrics.rejected_connections_total.fetch_add(1, std::memory_order_relaxed);
+        fail(proto::code::kTooManyConnections,
+             "This address has " + std::to_string(core_.settings.max_connections_per_address) +
+                 " connections open already; close one first.",
+             proto::kClosePolicy);
+        do_read();
+        return;
+    }
+    address_counted_ = true;
     hello_timer_.expires_after(to_duration(core_.settings.handshake_timeout_s));
     hello_timer_.async_wait([self = shared_from_this()](beast::error_code timer_ec) {
         if (!timer_ec && !self->hello_done_ && !self->close_code_) {
@@ -389,7 +404,7 @@ void WsSession::send(room::Outgoing message) {
 }
 
 void WsSession::send_now(room::Outgoing message) {
-    if (ended_ || close_started_ || !accepted_) {
+    if (ended_ || close_started_ || too_slow_ || !accepted_) {
         return;
     }
     switch (queue_.push(std::move(message))) {
@@ -403,9 +418,14 @@ void WsSession::send_now(room::Outgoing message) {
         core_.metrics.cues_dropped_total.fetch_add(1, std::memory_order_relaxed);
         break;
     case WriteQueue::Push::Overflow:
+        // Counted once per client: nothing more is queued for it. What waits is dropped so that
+        // the close frame follows the write in flight; a client that does not read even that
+        // within kSlowKillAfter has its socket closed.
+        too_slow_ = true;
         core_.metrics.slow_client_disconnects_total.fetch_add(1, std::memory_order_relaxed);
         spdlog::info("player {}: write queue full, disconnecting", player_id_);
-        beast::get_lowest_layer(ws_).socket().close();
+        queue_.drop_waiting();
+        begin_close(proto::kCloseSlowClient, "too_slow", kSlowKillAfter);
         return;
     }
     do_write();
@@ -435,13 +455,14 @@ void WsSession::shutdown() {
     });
 }
 
-void WsSession::begin_close(int close_code, std::string reason) {
+void WsSession::begin_close(int close_code, std::string reason,
+                            std::chrono::milliseconds deadline) {
     if (close_code_ || ended_) {
         return;
     }
     close_code_ = close_code;
     close_reason_ = std::move(reason);
-    kill_timer_.expires_after(kKillAfter);
+    kill_timer_.expires_after(deadline);
     kill_timer_.async_wait([self = shared_from_this()](beast::error_code ec) {
         if (!ec && !self->ended_) {
             beast::error_code ignored;
@@ -534,6 +555,9 @@ void WsSession::end() {
     }
     core_.metrics.connections.fetch_sub(1, std::memory_order_relaxed);
     core_.remove_session(this);
+    if (address_counted_) {
+        core_.remove_address(address_);
+    }
     if (player_id_ >= 0) {
         core_.registry.cancel_quick_match(player_id_);
     }

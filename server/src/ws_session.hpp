@@ -16,6 +16,7 @@
 #include <boost/beast/websocket.hpp>
 
 #include <atomic>
+#include <chrono>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -25,6 +26,9 @@ namespace carrom::server {
 
 class RoomActor;
 struct ServerCore;
+
+// A close that does not finish within this is cut off (the socket is closed).
+inline constexpr std::chrono::milliseconds kCloseDeadline{3000};
 
 class WsSession final : public room::Peer, public std::enable_shared_from_this<WsSession> {
 public:
@@ -65,7 +69,8 @@ private:
     void send_now(room::Outgoing message);
     void send_error(std::string_view code, std::string message);
     void fail(std::string_view code, std::string message, int close_code);
-    void begin_close(int close_code, std::string reason);
+    void begin_close(int close_code, std::string reason,
+                     std::chrono::milliseconds deadline = kCloseDeadline);
     void do_write();
     void on_write(beast::error_code ec, std::size_t bytes);
     void arm_idle_timer();
@@ -92,6 +97,9 @@ private:
     std::optional<int> close_code_; // a close was requested
     std::string close_reason_;
     bool close_started_ = false;
+    std::string address_;          // the client's IP address
+    bool address_counted_ = false; // counted in ServerCore::connections_by_address
+    bool too_slow_ = false;        // the write queue overflowed: nothing more is queued
     std::int64_t last_activity_ms_ = 0;
 
     std::int64_t player_id_ = -1;

@@ -122,6 +122,7 @@ server::ServerSettings test_settings() {
     settings.handshake_timeout_s = 10.0;
     settings.shutdown_grace_s = 1.0;
     settings.time_scale = kTestTimeScale;
+    settings.max_connections_per_address = 100000; // every test client is on 127.0.0.1
     return settings;
 }
 

@@ -97,7 +97,46 @@ TEST_F(RoomTest, ThirdPlayerFindsTheRoomFull) {
     EXPECT_EQ(error->code, "room_full");
     EXPECT_FALSE(room_.join(c, proto::Role::Spectator));
     EXPECT_EQ(c->last_room_state().you, -1);
+    EXPECT_EQ(c->last_room_state().spectators, 1);
+}
+
+// A member's first room state is never superseded in its queue (it must arrive before the
+// join keyframe); later broadcasts may be.
+TEST_F(RoomTest, AJoinersFirstRoomStateIsNeverSuperseded) {
+    seat_both();
+    ASSERT_FALSE(a_->kinds.empty());
+    EXPECT_TRUE(std::holds_alternative<proto::RoomState>(a_->received[0]));
+    EXPECT_EQ(a_->kinds[0], MessageKind::Normal);
+    ASSERT_FALSE(b_->kinds.empty());
+    EXPECT_TRUE(std::holds_alternative<proto::RoomState>(b_->received[0]));
+    EXPECT_EQ(b_->kinds[0], MessageKind::Normal);
+    // a's copy of the state b's arrival broadcast is an ordinary, replaceable one.
+    ASSERT_GE(a_->kinds.size(), 3U); // room state, join keyframe, then b's arrival
+    EXPECT_TRUE(std::holds_alternative<proto::RoomState>(a_->received[2]));
+    EXPECT_EQ(a_->kinds[2], MessageKind::State);
+}
+
+// Spectators coming and going send the others nothing (no room_state of about 3 KB each time):
+// their count reaches the players with the next room_state.
+TEST_F(RoomTest, SpectatorChurnSendsThePlayersNothing) {
+    seat_both();
+    a_->clear();
+    b_->clear();
+    for (int i = 0; i < 10; ++i) {
+        auto s = std::make_shared<FakePeer>(100 + i, "Watcher");
+        ASSERT_FALSE(room_.join(s, proto::Role::Spectator));
+        EXPECT_EQ(s->all<proto::RoomState>().size(), 1U);
+        EXPECT_EQ(s->all<proto::Snapshot>().size(), 1U);
+        room_.leave(*s);
+    }
+    ASSERT_FALSE(room_.join(watcher_, proto::Role::Spectator));
+    EXPECT_TRUE(a_->received.empty());
+    EXPECT_TRUE(b_->received.empty());
+    EXPECT_EQ(watcher_->last_room_state().spectators, 1);
+    room_.shoot(*a_, break_shot(0));
+    play_out();
     EXPECT_EQ(a_->last_room_state().spectators, 1);
+    EXPECT_EQ(b_->last_room_state().spectators, 1);
 }
 
 TEST_F(RoomTest, JoiningTwiceIsRefused) {
@@ -170,6 +209,8 @@ TEST_F(RoomTest, ShotMessagesCarryTheirDeliveryKinds) {
                              std::holds_alternative<proto::CushionEvent>(*event);
             expected = cue ? MessageKind::Cue : MessageKind::Normal;
             cues += cue ? 1 : 0;
+        } else if (std::holds_alternative<proto::RoomState>(message)) {
+            expected = MessageKind::State; // a newer one supersedes it
         }
         EXPECT_EQ(a_->kinds[i], expected) << "message " << i;
     }
@@ -410,6 +451,52 @@ TEST_F(RoomTest, RematchAfterGameOver) {
     EXPECT_EQ(room_.phase(), proto::Phase::Aiming);
     EXPECT_GT(room_.match().turn_number, old_turn); // old inputs stay stale
     EXPECT_EQ(room_.match().turn_seat, 1);          // the break alternates
+}
+
+// Every snapshot a connection receives has a larger seq than the one before: across a shot,
+// its final keyframe and a rematch's new board; a spectator who joins mid-shot gets a keyframe
+// carrying the seq of the last delta (the state it equals), then the deltas after it.
+TEST_F(RoomTest, SeqRisesOnEveryConnectionAcrossAShotAndARematch) {
+    const auto rising = [](const FakePeer& peer) {
+        const auto snaps = peer.all<proto::Snapshot>();
+        for (std::size_t i = 1; i < snaps.size(); ++i) {
+            if (snaps[i].seq <= snaps[i - 1].seq) {
+                return false;
+            }
+        }
+        return !snaps.empty();
+    };
+    seat_both();
+    room_.shoot(*a_, break_shot(0));
+    clock_.advance_ms(100);
+    room_.tick();
+    const std::int64_t before_join = room_.seq();
+    ASSERT_FALSE(room_.join(watcher_, proto::Role::Spectator));
+    const auto joined = watcher_->all<proto::Snapshot>();
+    ASSERT_EQ(joined.size(), 1U);
+    EXPECT_TRUE(joined[0].keyframe);
+    EXPECT_EQ(joined[0].seq, before_join);
+    play_out();
+    const auto after_join = watcher_->all<proto::Snapshot>();
+    ASSERT_GT(after_join.size(), 1U);
+    EXPECT_EQ(after_join[1].seq, before_join + 1);
+
+    room_.disconnected(*b_);
+    clock_.advance_ms(60000);
+    room_.tick(); // b forfeits: game over
+    ASSERT_EQ(room_.phase(), proto::Phase::GameOver);
+    auto c = std::make_shared<FakePeer>(5, "Cal");
+    ASSERT_FALSE(room_.join(c, proto::Role::Player));
+    const std::int64_t final_seq = a_->all<proto::Snapshot>().back().seq;
+    room_.rematch(*a_);
+    room_.rematch(*c);
+    ASSERT_EQ(room_.phase(), proto::Phase::Aiming);
+    const auto rematch = a_->all<proto::Snapshot>().back();
+    EXPECT_TRUE(rematch.keyframe);
+    EXPECT_GT(rematch.seq, final_seq);
+    EXPECT_TRUE(rising(*a_));
+    EXPECT_TRUE(rising(*watcher_));
+    EXPECT_TRUE(rising(*c));
 }
 
 class ScriptedBrain final : public BotBrain {

@@ -198,6 +198,136 @@ TEST_F(SocketTest, OversizedAndBinaryFramesCloseWithPolicyCodes) {
     EXPECT_EQ(pong->nonce, 5);
 }
 
+// RFC 6455 has the receiver of invalid UTF-8 in a text frame fail the connection, and Beast
+// does so before the server sees the message: close 1007 with no error (docs/protocol.md).
+TEST_F(SocketTest, InvalidUtf8TextFrameClosesWith1007AndNoError) {
+    start();
+    auto bad = connect("Utf");
+    bad->send_text("{\"type\":\"ping\",\"nonce\":1,\"pad\":\"\xff\xfe\"}");
+    EXPECT_EQ(bad->wait_for_close(), 1007);
+    EXPECT_TRUE(bad->logged<proto::Error>().empty());
+
+    auto ok = connect("Ok");
+    ok->send(proto::Ping{7});
+    EXPECT_TRUE(ok->wait_for<proto::Pong>());
+}
+
+// With the default 4096-byte limit a message of up to 65536 bytes is read whole and answered
+// with too_large; one byte more is cut off by the WebSocket layer: close 1009 alone.
+TEST_F(SocketTest, HardFrameCutOffIsMaxOfFourTimesTheLimitAnd64KiB) {
+    start();
+    const std::string head = R"({"type":"ping","nonce":1,"pad":")";
+    const auto padded = [&](std::size_t size) {
+        return head + std::string(size - head.size() - 2, 'x') + "\"}";
+    };
+    auto at = connect("At");
+    ASSERT_EQ(padded(65536).size(), 65536U);
+    at->send_text(padded(65536));
+    EXPECT_EQ(at->wait_for_error(), "too_large");
+    EXPECT_EQ(at->wait_for_close(), proto::kCloseTooBig);
+
+    auto over = connect("Over");
+    (void)over->try_send_text(padded(65537));
+    EXPECT_EQ(over->wait_for_close(), proto::kCloseTooBig);
+    EXPECT_TRUE(over->logged<proto::Error>().empty());
+
+    // The cut-off follows a larger limit: 4 x 20000 bytes.
+    server_.reset();
+    auto settings = test_settings();
+    settings.max_message_bytes = 20000;
+    start(settings);
+    auto big = connect("Big");
+    big->send_text(padded(80000));
+    EXPECT_EQ(big->wait_for_error(), "too_large");
+    EXPECT_EQ(big->wait_for_close(), proto::kCloseTooBig);
+    auto bigger = connect("Bigger");
+    (void)bigger->try_send_text(padded(80001));
+    EXPECT_EQ(bigger->wait_for_close(), proto::kCloseTooBig);
+    EXPECT_TRUE(bigger->logged<proto::Error>().empty());
+}
+
+// A client that stops reading while pongs pile up overflows its write queue: it is counted once
+// as a slow client and, reading again, finds the close frame 4003 after what was in flight.
+TEST_F(SocketTest, SlowClientGetsClose4003AndIsCountedOnce) {
+    auto settings = test_settings();
+    settings.max_queue_bytes = 16384;
+    settings.max_rate = 100000.0;
+    settings.rate_burst = 1000000.0;
+    start(settings);
+    const auto slow_count = [&] { return server_->metrics().slow_client_disconnects_total.load(); };
+    for (int k = 0; k < 3; ++k) {
+        auto slow = std::make_unique<WsTestClient>(port_, 2048);
+        slow->send(proto::Hello{proto::kProtocolVersion, "Slow", std::nullopt});
+        std::int64_t nonce = 0;
+        while (slow_count() == k && nonce < 2000000) {
+            for (int i = 0; i < 200; ++i) {
+                slow->send(proto::Ping{++nonce});
+            }
+        }
+        ASSERT_EQ(slow_count(), k + 1) << "no overflow after " << nonce << " pings";
+        // More input after the overflow neither counts again nor queues anything.
+        for (int i = 0; i < 200; ++i) {
+            if (!slow->try_send_text(proto::encode(proto::ClientMessage{proto::Ping{++nonce}}))) {
+                break;
+            }
+        }
+        EXPECT_EQ(slow->wait_for_close(), proto::kCloseSlowClient);
+        EXPECT_EQ(slow_count(), k + 1);
+    }
+    auto ok = connect("Ok");
+    ok->send(proto::Ping{1});
+    EXPECT_TRUE(ok->wait_for<proto::Pong>());
+}
+
+// Spectators joining and leaving under the rate limit used to send every player a full
+// room_state each time (about 3.4 KB): a player on a slow link was dropped. Now they send the
+// players nothing, and the slow player's match goes on.
+TEST_F(SocketTest, SpectatorChurnLeavesASlowPlayerConnected) {
+    auto settings = test_settings();
+    settings.max_queue_bytes = 16384;
+    start(settings);
+    auto a = connect("Asha");
+    auto b = std::make_unique<WsTestClient>(port_, 2048);
+    b->send(proto::Hello{proto::kProtocolVersion, "Bo", std::nullopt});
+    ASSERT_TRUE(b->wait_for<proto::Welcome>());
+    const std::string code = start_match(*a, *b);
+    std::vector<std::unique_ptr<WsTestClient>> churners;
+    for (int i = 0; i < 5; ++i) {
+        churners.push_back(connect("Watcher"));
+    }
+    // b reads nothing while 5 spectators join and leave 20 times a second each for 2 s.
+    for (int round = 0; round < 40; ++round) {
+        for (auto& c : churners) {
+            c->send(proto::JoinRoom{code, proto::Role::Spectator});
+            ASSERT_TRUE(c->wait_for<proto::RoomState>());
+            c->send(proto::Leave{});
+        }
+        std::this_thread::sleep_for(50ms);
+    }
+    EXPECT_EQ(server_->metrics().slow_client_disconnects_total.load(), 0);
+    b->send(proto::Ping{3});
+    const auto pong = b->wait_for<proto::Pong>();
+    ASSERT_TRUE(pong);
+    EXPECT_EQ(pong->nonce, 3);
+    a->send(proto::Shoot{0, 300.0, kUp, 25.0});
+    EXPECT_TRUE(b->wait_for<proto::ShotResult>(20s));
+    EXPECT_EQ(server_->metrics().slow_client_disconnects_total.load(), 0);
+}
+
+TEST_F(SocketTest, AFixedLengthFieldSaysItsExactLength) {
+    start();
+    auto a = connect("Asha");
+    a->send_text(R"({"type":"join_room","code":"ABCDE"})");
+    const auto error = a->wait_for<proto::Error>();
+    ASSERT_TRUE(error);
+    EXPECT_EQ(error->code, "bad_field");
+    EXPECT_EQ(error->message, "field 'code' must be exactly 6 bytes long.");
+    a->send_text(R"({"type":"hello","version":1,"name":""})");
+    const auto name = a->wait_for<proto::Error>();
+    ASSERT_TRUE(name);
+    EXPECT_NE(name->message.find(" to "), std::string::npos) << name->message;
+}
+
 TEST_F(SocketTest, HelloRules) {
     start();
     WsTestClient early(port_);
@@ -429,6 +559,31 @@ TEST_F(SocketTest, ConnectionAndRoomLimits) {
     ASSERT_TRUE(a->wait_for<proto::RoomState>());
     b->send(proto::CreateRoom{});
     EXPECT_EQ(b->wait_for_error(), "too_many_rooms");
+}
+
+TEST_F(SocketTest, ConnectionsPerAddressAreCapped) {
+    ServerSettings s = test_settings();
+    s.max_connections_per_address = 3;
+    start(s);
+    auto a = connect("Asha");
+    auto b = connect("Bo");
+    auto c = connect("Cy");
+    WsTestClient fourth(port_);
+    EXPECT_EQ(fourth.wait_for_error(), "too_many_connections");
+    EXPECT_EQ(fourth.wait_for_close(), proto::kClosePolicy);
+    // A closed connection frees its place (once the server has seen it end).
+    a->drop();
+    bool welcomed = false;
+    for (int i = 0; i < 50 && !welcomed; ++i) {
+        WsTestClient next(port_);
+        next.send(proto::Hello{proto::kProtocolVersion, "Dee", std::nullopt});
+        const auto reply = next.read();
+        welcomed = reply && std::holds_alternative<proto::Welcome>(*reply);
+        if (!welcomed) {
+            std::this_thread::sleep_for(20ms);
+        }
+    }
+    EXPECT_TRUE(welcomed);
 }
 
 TEST_F(SocketTest, HandshakeAndIdleTimeouts) {

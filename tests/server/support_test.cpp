@@ -35,6 +35,29 @@ TEST(WriteQueue, OneWriteInFlight) {
     EXPECT_EQ(q.queued_bytes(), 0U);
 }
 
+TEST(WriteQueue, ANewerRoomStateReplacesTheWaitingOnes) {
+    WriteQueue q(100, 8);
+    ASSERT_EQ(q.push(text("state0", room::MessageKind::State)), WriteQueue::Push::Queued);
+    ASSERT_TRUE(q.start_write()); // in flight: kept
+    ASSERT_EQ(q.push(text("state1", room::MessageKind::State)), WriteQueue::Push::Queued);
+    ASSERT_EQ(q.push(text("event")), WriteQueue::Push::Queued);
+    // 1000 more room states never overflow a 100-byte queue: each replaces the one waiting.
+    for (int i = 2; i < 1000; ++i) {
+        ASSERT_EQ(q.push(text("state" + std::to_string(i), room::MessageKind::State)),
+                  WriteQueue::Push::Queued);
+    }
+    EXPECT_EQ(q.queued_messages(), 3U);
+    EXPECT_EQ(q.queued_bytes(), 6U + 5U + 8U);
+    q.finish_write();
+    auto next = q.start_write();
+    ASSERT_TRUE(next);
+    EXPECT_EQ(*next->text, "event");
+    q.finish_write();
+    next = q.start_write();
+    ASSERT_TRUE(next);
+    EXPECT_EQ(*next->text, "state999");
+}
+
 TEST(WriteQueue, SnapshotsAreDroppedUnderBackPressure) {
     WriteQueue q(1000, 2);
     EXPECT_EQ(q.push(text("s0", room::MessageKind::Snapshot)), WriteQueue::Push::Queued);

@@ -25,10 +25,15 @@ namespace websocket = beast::websocket;
 
 class WsTestClient {
 public:
-    explicit WsTestClient(std::uint16_t port) : ws_(ioc_) {
-        asio::ip::tcp::resolver resolver(ioc_);
-        beast::get_lowest_layer(ws_).connect(
-            asio::ip::tcp::endpoint(asio::ip::make_address("127.0.0.1"), port));
+    // receive_buffer: SO_RCVBUF in bytes before connecting (a small one makes a slow reader
+    // whose unread data the kernels hold little of); 0 keeps the system's default.
+    explicit WsTestClient(std::uint16_t port, int receive_buffer = 0) : ws_(ioc_) {
+        auto& socket = beast::get_lowest_layer(ws_).socket();
+        socket.open(asio::ip::tcp::v4());
+        if (receive_buffer > 0) {
+            socket.set_option(asio::socket_base::receive_buffer_size(receive_buffer));
+        }
+        socket.connect(asio::ip::tcp::endpoint(asio::ip::make_address("127.0.0.1"), port));
         ws_.handshake("127.0.0.1", "/");
     }
 
@@ -36,6 +41,13 @@ public:
     void send_text(const std::string& text) {
         ws_.text(true);
         ws_.write(asio::buffer(text));
+    }
+    // Sends a text frame; false when the server already cut the connection.
+    bool try_send_text(const std::string& text) {
+        beast::error_code ec;
+        ws_.text(true);
+        ws_.write(asio::buffer(text), ec);
+        return !ec;
     }
     void send_binary(const std::string& bytes) {
         ws_.binary(true);

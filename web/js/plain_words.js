@@ -56,6 +56,7 @@ const ERROR_WORDS = {
   version_mismatch: 'This page and the server speak different protocol versions. Reload the page.',
   bad_token: 'Your seat could not be resumed: the grace period is over.',
   server_full: 'The server is full. Try again in a moment.',
+  too_many_connections: 'Too many connections from your address: close another tab or window.',
   too_many_rooms: 'The server has no room for another match. Try again later.',
   rate_limited: 'Too many messages: slow down.',
   shutting_down: 'The server is shutting down.',

@@ -30,6 +30,8 @@ inline constexpr std::string_view kAlreadyHello = "already_hello";
 inline constexpr std::string_view kBadToken = "bad_token"; // resume token unknown/expired
 inline constexpr std::string_view kRateLimited = "rate_limited";
 inline constexpr std::string_view kServerFull = "server_full"; // max connections reached
+inline constexpr std::string_view kTooManyConnections =
+    "too_many_connections"; // max connections from one client address reached
 inline constexpr std::string_view kTooManyRooms = "too_many_rooms";
 inline constexpr std::string_view kHandshakeTimeout = "handshake_timeout";
 inline constexpr std::string_view kIdleTimeout = "idle_timeout";

@@ -13,6 +13,7 @@ enum class MessageKind : std::uint8_t {
     Snapshot, // a delta snapshot: may be dropped under back-pressure (then a keyframe follows)
     Cue,      // only useful while fresh (a collision's sound, the opponent's aim): dropped, with
               // no keyframe, while the client is behind; never counted as a snapshot
+    State,    // a broadcast room_state: a newer one replaces one still waiting to be sent
 };
 
 struct Outgoing {

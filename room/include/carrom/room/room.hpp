@@ -102,7 +102,9 @@ private:
 
     void broadcast(const proto::ServerMessage& message, MessageKind kind = MessageKind::Normal,
                    const Peer* except = nullptr);
-    void broadcast_room_state();
+    // Each member's room state; a newer one may replace it in a slow member's queue, except the
+    // copy of `joiner`, which just entered: its first message in the room is always a room state.
+    void broadcast_room_state(const Peer* joiner = nullptr);
     // The turn event for the current turn, to everyone.
     void broadcast_turn();
     void send_to(Peer& peer, const proto::ServerMessage& message);

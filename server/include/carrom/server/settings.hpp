@@ -21,6 +21,7 @@ struct ServerSettings {
     double handshake_timeout_s = 10.0;    // WebSocket upgrade + hello
     double idle_timeout_s = 60.0;         // nothing received (keep-alive pings at half of it)
     int max_connections = 10000;
+    int max_connections_per_address = 32; // open WebSocket connections from one client address
     int max_rooms = 5000;
     double grace_s = 60.0;                 // dropped seat kept this long
     double shot_clock_s = 20.0;            // default per stroke; 0 = off

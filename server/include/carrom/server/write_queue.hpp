@@ -18,7 +18,8 @@ public:
     // client its snapshots. A cue is dropped while the client is that far behind, or while
     // `cue_backlog` cues already wait (a cascade of collisions in one instant). Once queued
     // bytes would exceed max_bytes the queue overflows (the session disconnects the slow
-    // client).
+    // client). A room state replaces every room state still waiting: the newer one describes the
+    // whole room, so superseded states neither pile up nor push a player over the bound.
     WriteQueue(std::size_t max_bytes, std::size_t snapshot_backlog, std::size_t cue_backlog = 64);
 
     enum class Push { Queued, DroppedSnapshot, DroppedCue, Overflow };
@@ -28,6 +29,9 @@ public:
     std::optional<room::Outgoing> start_write();
     // The in-flight write finished.
     void finish_write();
+    // Forgets every message not yet in flight (a session closing a slow client keeps only the
+    // write in progress, so that the close frame follows it).
+    void drop_waiting();
 
     bool writing() const { return writing_; }
     bool empty() const { return queue_.empty() && !writing_; }
@@ -40,6 +44,8 @@ public:
 private:
     // 1 when the message in flight is of this kind, else 0.
     std::size_t in_flight(room::MessageKind kind) const;
+    // Forgets the room states not yet in flight (a newer one is being queued).
+    void drop_waiting_states();
     // Counts a queued (added) or finished (removed) message in snapshots_ or cues_.
     void count(room::MessageKind kind, bool added);
 

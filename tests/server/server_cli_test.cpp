@@ -1,0 +1,58 @@
+// The carrom-server executable as scripts see it: stdout holds only the "listening on" line,
+// logs go to stderr (docs/server.md).
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <string>
+
+namespace carrom::server {
+namespace {
+
+struct CommandRun {
+    int exit = -1;
+    std::string out;
+};
+
+// A command line run through the shell: its standard output and exit status.
+CommandRun run_command(const std::string& command) {
+    CommandRun ran;
+    FILE* pipe = popen(command.c_str(), "r");
+    if (!pipe) {
+        return ran;
+    }
+    char buffer[4096];
+    std::size_t n = 0;
+    while ((n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0) {
+        ran.out.append(buffer, n);
+    }
+    const int status = pclose(pipe);
+    ran.exit = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return ran;
+}
+
+TEST(ServerCli, StdoutHoldsOnlyTheListeningLineAndLogsGoToStderr) {
+    const std::string err_path =
+        ::testing::TempDir() + "carrom_server_cli_" + std::to_string(getpid()) + ".err";
+    // info level logs at start, on the signal and at the end; timeout sends SIGTERM after 1 s.
+    const CommandRun ran =
+        run_command(std::string("timeout -s TERM 1 ") + CARROM_SERVER_PATH +
+                    " --host 127.0.0.1 --port 0 --log-level info 2> " + err_path);
+    EXPECT_EQ(ran.exit, 124) << ran.out; // stopped by timeout's SIGTERM
+    EXPECT_TRUE(std::regex_match(ran.out, std::regex("listening on 127\\.0\\.0\\.1:[0-9]+\n")))
+        << ran.out;
+    std::ifstream err_file(err_path);
+    std::stringstream err;
+    err << err_file.rdbuf();
+    EXPECT_NE(err.str().find("carrom-server on 127.0.0.1:"), std::string::npos) << err.str();
+    EXPECT_NE(err.str().find("stopped"), std::string::npos) << err.str();
+    std::remove(err_path.c_str());
+}
+
+} // namespace
+} // namespace carrom::server
