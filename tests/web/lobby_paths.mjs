@@ -66,7 +66,9 @@ run('web.lobby_paths', 120000, async (t) => {
   const zoe = await Player.open(zoeContext, 'Zoe', pageUrl(web, server, `#/room/${code}`), t.errors);
   const z = await zoe.waitFor('watching the full room', (s) => s.inRoom && s.you === -1);
   check(z.code === code && z.hash === `#/watch/${code}`, `watching ${z.code} at ${z.hash}`);
-  const seen = await a.waitFor('a spectator counted', (s) => s.phase === 'aiming');
+  const seen = await a.waitFor('the match under way', (s) => s.phase === 'aiming');
   check(seen.seats[0].name === 'Asha' && seen.seats[1].name === 'Ravi', 'the seats are unchanged');
-  check((await a.page.textContent('#room-info')).includes('1 spectator'), 'the HUD counts the spectator');
+  // A spectator's arrival sends the players nothing (docs/protocol.md, room_state.spectators):
+  // the spectator's own room_state, built after the arrival, counts it.
+  check((await zoe.page.textContent('#room-info')).includes('1 spectator'), "the spectator's HUD counts the spectator");
 });
