@@ -1,5 +1,6 @@
 #include "app.hpp"
 
+#include "auto_player.hpp"
 #include "board_painter.hpp"
 #include "carrom/client/aim_controller.hpp"
 #include "carrom/client/board_report.hpp"
@@ -95,7 +96,11 @@ public:
           geometry_(make_board_geometry(physics_)), model_(physics_), aim_(physics_),
           board_painter_(geometry_), hud_(font), lobby_(font),
           sound_(!options.mute && options.bench_frames == 0 && options.screenshot_path.empty()),
-          session_(make_factory(), options.name) {}
+          session_(make_factory(), options.name) {
+        if (options.autoplay) {
+            auto_player_.emplace(*options.autoplay, 1);
+        }
+    }
 
     int run();
 
@@ -128,6 +133,9 @@ private:
     bool screenshot_due(int frame) const;
     int finish_screenshot();
     void announce_room();
+    void autoplay();
+    bool final_state_due() const;
+    int write_final_state();
     ScreenMapping mapping() const {
         return make_mapping(layout_.board, physics_.board_size_px, model_.flipped());
     }
@@ -158,6 +166,9 @@ private:
     std::optional<Vec2> aim_striker_drawn_; // a striker being placed, drawn this frame
     std::string announced_room_;            // the room code last printed on stdout
     bool rematch_asked_ = false;            // sent `rematch` for the game that is over
+    std::optional<AutoPlayer> auto_player_; // --autoplay
+    std::optional<proto::RoomState> room_;  // the newest room state (what --autoplay plays from)
+    int auto_turn_ = -1;                    // the turn --autoplay last aimed in
 };
 
 void App::handle_event(const sf::Event& e) {
@@ -278,6 +289,9 @@ void App::update(double now) {
         }
         if (std::holds_alternative<proto::ShotResult>(m)) {
             ++shots_seen_;
+        }
+        if (const auto* room = std::get_if<proto::RoomState>(&m)) {
+            room_ = *room;
         }
         model_.handle(m, now);
     }
@@ -419,6 +433,46 @@ void App::draw(double now) {
     }
 }
 
+// --autoplay: one queued mouse event per frame; on our turn, at rest, with the striker idle and
+// the room state of this turn, the strategy aims (again, differently, when the last gesture of
+// this turn made no shot or the server refused it).
+void App::autoplay() {
+    if (!auto_player_) {
+        return;
+    }
+    if (auto event = auto_player_->next_event()) {
+        handle_event(*event);
+        return;
+    }
+    const MatchView& v = model_.view();
+    if (aim_.phase() != AimPhase::Idle || !room_ || room_->turn != v.turn ||
+        room_->phase != proto::Phase::Aiming || shot_sent_turn_ == v.turn) {
+        return;
+    }
+    if (auto_turn_ == v.turn) {
+        auto_player_->refused();
+    }
+    auto_turn_ = v.turn;
+    auto_player_->aim(*room_, aim_.striker_x(), aim_.baseline(), mapping(), physics_);
+}
+
+bool App::final_state_due() const {
+    return !options_.final_state_path.empty() && model_.view().in_room &&
+           model_.view().phase == proto::Phase::GameOver && model_.view().result &&
+           !model_.animating();
+}
+
+int App::write_final_state() {
+    std::ofstream out(options_.final_state_path);
+    out << final_state_json(model_.view(), model_.board_now()) << "\n";
+    if (!out) {
+        std::cerr << "carrom-client: could not write " << options_.final_state_path << "\n";
+        return 1;
+    }
+    std::cout << "final state " << options_.final_state_path << std::endl;
+    return 0;
+}
+
 // "room CODE" on stdout once per room, for scripts that start a second player (or a bot) with
 // that code.
 void App::announce_room() {
@@ -539,8 +593,14 @@ int App::run() {
         }
         const double now = clock_.now();
         update(now);
+        autoplay();
         draw(now);
         ++frame;
+        if (final_state_due()) {
+            const int code = write_final_state();
+            window_.close();
+            return code;
+        }
         if (screenshot_due(frame)) {
             const int code = finish_screenshot();
             window_.close();

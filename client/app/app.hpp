@@ -3,6 +3,7 @@
 // benchmark.
 
 #include "carrom/client/client_session.hpp"
+#include "carrom/proto/types.hpp"
 
 #include <optional>
 #include <string>
@@ -30,6 +31,12 @@ struct AppOptions {
     std::string report_path; // with a screenshot: what it shows as JSON (board_report.hpp)
     double timeout_s = 0.0;  // > 0: exit with code 3 if still running after this many seconds
     int bench_frames = 0;    // > 0: render that many demo frames and print frame times as JSON
+    // Plays our turns with the bots library's strategy at this level, through the mouse input
+    // path (auto_player.hpp).
+    std::optional<proto::BotLevel> autoplay;
+    // Non-empty: when the game is over and drawn at rest, write its final state there as JSON
+    // (board_report.hpp) and exit with code 0.
+    std::string final_state_path;
 };
 
 // Runs until the window closes; returns the process exit code.

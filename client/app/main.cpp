@@ -83,6 +83,13 @@ int main(int argc, char** argv) {
     cli.add_option("--bench-frames", options.bench_frames,
                    "Render this many frames of the demo break and print frame times as JSON")
         ->check(CLI::Range(1, 1000000));
+    std::string autoplay;
+    cli.add_option("--autoplay", autoplay,
+                   "Play your turns unattended with the server bots' strategy at this level "
+                   "(random, easy, medium, hard), through the mouse input a player uses");
+    cli.add_option("--final-state", options.final_state_path,
+                   "When the game is over and drawn at rest, write its final state (room, "
+                   "winner, reason, scores, pieces) as JSON to this file and exit");
     CLI11_PARSE(cli, argc, argv);
 
     carrom::proto::RuleSet rules{};
@@ -118,6 +125,14 @@ int main(int argc, char** argv) {
     if (!vs_bot.empty() && !carrom::proto::parse(vs_bot, bot_level)) {
         std::cerr << "carrom-client: --vs-bot must be random, easy, medium or hard\n";
         return 2;
+    }
+    if (!autoplay.empty()) {
+        carrom::proto::BotLevel level{};
+        if (!carrom::proto::parse(autoplay, level)) {
+            std::cerr << "carrom-client: --autoplay must be random, easy, medium or hard\n";
+            return 2;
+        }
+        options.autoplay = level;
     }
     RoomRequest request;
     request.rule_set = rules;

@@ -4,6 +4,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+
 namespace carrom::client {
 
 std::string board_report_json(const MatchView& view, const std::vector<RenderedBody>& bodies,
@@ -43,6 +45,34 @@ std::string board_report_json(const MatchView& view, const std::vector<RenderedB
     } else {
         j["overlay"] = nullptr;
     }
+    return j.dump();
+}
+
+std::string final_state_json(const MatchView& view, const std::vector<BodyState>& board) {
+    nlohmann::json j;
+    j["room"] = view.code;
+    j["you"] = view.you;
+    j["winner"] = view.result ? view.result->winner : view.winner;
+    j["reason"] = view.result ? view.result->reason : std::string();
+    nlohmann::json scores = nlohmann::json::array();
+    if (view.result) {
+        for (const int s : view.result->scores) {
+            scores.push_back(s);
+        }
+    }
+    j["scores"] = scores;
+    std::vector<BodyState> sorted = board;
+    std::sort(sorted.begin(), sorted.end(),
+              [](const BodyState& a, const BodyState& b) { return a.id < b.id; });
+    nlohmann::json list = nlohmann::json::array();
+    for (const BodyState& b : sorted) {
+        list.push_back({{"id", b.id},
+                        {"kind", std::string(proto::body_kind_name(b.kind))},
+                        {"x", b.pos_px.x},
+                        {"y", b.pos_px.y},
+                        {"pocketed", b.pocketed}});
+    }
+    j["bodies"] = list;
     return j.dump();
 }
 

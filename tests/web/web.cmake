@@ -28,3 +28,14 @@ foreach(test two_pages_match page_vs_bot touch_phone reload_resume lobby_paths)
         RESOURCE_LOCK chromium
         ENVIRONMENT "CARROM_SERVER=$<TARGET_FILE:carrom-server>;CARROM_BOT=$<TARGET_FILE:carrom-bot>;CARROM_CHROMIUM=${CARROM_CHROMIUM}")
 endforeach()
+
+# A page against carrom-client (the desktop client, `--autoplay`, under `xvfb-run -a` when the
+# test's environment has no DISPLAY): the same final state on both sides.
+if(TARGET carrom-client)
+    add_test(NAME web.client_match COMMAND ${CARROM_NODE} ${web_dir}/client_match.mjs)
+    set_tests_properties(web.client_match PROPERTIES
+        TIMEOUT 100
+        LABELS web
+        RESOURCE_LOCK chromium
+        ENVIRONMENT "CARROM_SERVER=$<TARGET_FILE:carrom-server>;CARROM_CLIENT=$<TARGET_FILE:carrom-client>;CARROM_CHROMIUM=${CARROM_CHROMIUM}")
+endif()

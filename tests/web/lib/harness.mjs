@@ -4,8 +4,8 @@
 // console error collection, and cleanup of every child process on any exit. Every wait has a
 // deadline.
 //
-// Environment (set by tests/web/web.cmake): CARROM_SERVER, CARROM_BOT (paths of the built
-// binaries), CARROM_CHROMIUM (default /usr/bin/chromium).
+// Environment (set by tests/web/web.cmake): CARROM_SERVER, CARROM_BOT, CARROM_CLIENT (paths of
+// the built binaries), CARROM_CHROMIUM (default /usr/bin/chromium).
 
 import { spawn } from 'node:child_process';
 import { once } from 'node:events';
@@ -14,6 +14,7 @@ import { createInterface } from 'node:readline';
 export const env = {
   server: process.env.CARROM_SERVER,
   bot: process.env.CARROM_BOT,
+  client: process.env.CARROM_CLIENT,
   chromium: process.env.CARROM_CHROMIUM || '/usr/bin/chromium',
 };
 

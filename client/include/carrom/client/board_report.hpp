@@ -1,7 +1,7 @@
 #pragma once
-// What a screenshot shows, as JSON written next to the PNG: the room, the turn and phase, the
-// window layout and every drawn piece in board px and in window px. Tests compare it with what
-// the server reported and with the pixels of the PNG.
+// What a screenshot shows (and a game's final state), as JSON written next to the PNG: the room,
+// the turn and phase, the window layout and every drawn piece in board px and in window px. Tests
+// compare it with what the server reported and with the pixels of the PNG.
 
 #include "carrom/client/interpolation_buffer.hpp"
 #include "carrom/client/match_model.hpp"
@@ -26,5 +26,11 @@ struct ReportContext {
 // (id -1: the striker being placed), "overlay" {x, y, w, h} or null}.
 std::string board_report_json(const MatchView& view, const std::vector<RenderedBody>& bodies,
                               const ScreenMapping& mapping, const ReportContext& context);
+
+// The final state of a game (carrom-client --final-state), one JSON object (one line): {"room",
+// "you", "winner" (seat, -1 a draw), "reason" (game_end's), "scores" [per seat, game_end's],
+// "bodies" [{"id", "kind", "x", "y" (board px, as the server sent them), "pocketed"}] of the
+// newest board in id order}.
+std::string final_state_json(const MatchView& view, const std::vector<BodyState>& board);
 
 } // namespace carrom::client

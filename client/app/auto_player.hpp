@@ -1,0 +1,46 @@
+#pragma once
+// --autoplay LEVEL: plays our turns unattended with the bots library's strategy (the server
+// bots' choice: greedy search at the skill level easy, medium or hard, or random). It chooses
+// only the shot a player would aim, from the room state the server sent; the shot is made with
+// the mouse events a player would make (press in the baseline band and slide the striker to its
+// x, then press on the striker and pull back), handled by the same input path, so the aim
+// controller checks it as any other and the server checks it as any other shot.
+
+#include "carrom/bots/strategy.hpp"
+#include "carrom/client/screen_mapping.hpp"
+#include "carrom/config.hpp"
+#include "carrom/proto/server_messages.hpp"
+#include "carrom/proto/types.hpp"
+
+#include <SFML/Window/Event.hpp>
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <vector>
+
+namespace carrom::client::app {
+
+class AutoPlayer {
+public:
+    AutoPlayer(proto::BotLevel level, std::uint64_t seed);
+
+    // Chooses the shot for our seat in `room` (our turn, the board at rest, the striker idle at
+    // striker_x on `baseline`) and queues the mouse events (window px through `mapping`) that
+    // slide the striker to the chosen x and shoot it.
+    void aim(const proto::RoomState& room, double striker_x, Baseline baseline,
+             const ScreenMapping& mapping, const PhysicsConfig& physics);
+    // The next queued event, one per frame (so the window shows the aim as it is made).
+    std::optional<sf::Event> next_event();
+    bool busy() const { return next_ < events_.size(); }
+    // The last gesture made no shot (the aim controller or the server refused it): the next
+    // choice for the same state differs.
+    void refused() { strategy_->shot_refused(); }
+
+private:
+    std::unique_ptr<bots::Strategy> strategy_;
+    std::vector<sf::Event> events_;
+    std::size_t next_ = 0;
+};
+
+} // namespace carrom::client::app
