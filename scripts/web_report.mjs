@@ -2,11 +2,12 @@
 // Figures of the web client for docs/web.md: the frame time while a break plays in headless
 // Chromium at 900 x 900, and what the page downloads.
 //
-//   node scripts/web_report.mjs [--server PATH] [--runs N] [--json]
+//   node scripts/web_report.mjs [--server PATH] [--web-root DIR] [--runs N] [--mute] [--json]
 //
-// It starts carrom-server (default build/test/server/carrom-server), which serves the page,
-// opens the page (playwright-core from tests/web, the system chromium, the tests' flags), creates
-// a room against a server bot and breaks at full power with the mouse, in real time. Frame time
+// It starts carrom-server (default build/test/server/carrom-server), which serves the page (its
+// embedded copy, or the files of --web-root DIR), opens the page (playwright-core from tests/web,
+// the system chromium, the tests' flags), creates a room against a server bot and breaks at full
+// power with the mouse, in real time. Frame time
 // is, for each requestAnimationFrame callback while pieces move on screen, the time from the
 // callback's timestamp (the frame's start) to the end of the page's work in it; the interval
 // between timestamps is reported too. Download: every response of a fresh load (no cache), as
@@ -27,6 +28,7 @@ process.env.CARROM_SERVER = path.resolve(opt('--server', process.env.CARROM_SERV
 const runs = Number(opt('--runs', '5'));
 const unthrottled = args.includes('--unthrottled');
 const muted = args.includes('--mute');
+const webRoot = opt('--web-root', null);
 
 const { launchBrowser, pageUrl, run, startServer, startWebServer, check } = await import(path.join(root, 'tests/web/lib/harness.mjs'));
 const { Player } = await import(path.join(root, 'tests/web/lib/player.mjs'));
@@ -57,6 +59,49 @@ function shareScheduling() {
   }
 }
 
+// CPU time (user + system, ms) of the browser's processes (every chromium descendant of this
+// process) by pid: {name: the process type (browser, renderer, gpu-process, utility:audio, ...),
+// ms}.
+function browserCpu() {
+  const tick = 1000 / 100; // USER_HZ
+  const parent = new Map();
+  const info = new Map();
+  for (const entry of fs.readdirSync('/proc')) {
+    if (!/^\d+$/.test(entry)) continue;
+    try {
+      const stat = fs.readFileSync(`/proc/${entry}/stat`, 'utf8');
+      const fields = stat.slice(stat.lastIndexOf(')') + 2).split(' ');
+      parent.set(Number(entry), Number(fields[1]));
+      const cmd = fs.readFileSync(`/proc/${entry}/cmdline`, 'utf8').split(/[\0 ]/);
+      const type = cmd.find((a) => a.startsWith('--type='))?.slice(7) ?? 'browser';
+      const service = cmd.find((a) => a.startsWith('--utility-sub-type='))?.slice(19).replace(/\.mojom\.\w+$/, '');
+      info.set(Number(entry), { name: service ? `${type}:${service}` : type, ms: (Number(fields[11]) + Number(fields[12])) * tick, exe: cmd[0] });
+    } catch {
+      // gone meanwhile
+    }
+  }
+  const out = new Map();
+  for (const [pid, i] of info) {
+    let p = parent.get(pid);
+    let under = false;
+    while (p && p > 1) {
+      if (p === process.pid) { under = true; break; }
+      p = parent.get(p);
+    }
+    if (!under || !/chrom/.test(i.exe)) continue;
+    out.set(pid, i);
+  }
+  return out;
+}
+// By process type, of the processes alive at both ends.
+const cpuSince = (before) => {
+  const d = {};
+  for (const [pid, i] of browserCpu()) {
+    if (before.has(pid)) d[i.name] = (d[i.name] ?? 0) + Math.round(i.ms - before.get(pid).ms);
+  }
+  return d;
+};
+
 const percentile = (values, p) => {
   if (values.length === 0) return NaN;
   const v = [...values].sort((a, b) => a - b);
@@ -65,7 +110,8 @@ const percentile = (values, p) => {
 const round = (x) => Math.round(x * 100) / 100;
 
 run('web_report', 300000, async (t) => {
-  const server = await startServer(['--shot-clock', '0', '--bot-think-ms', '100']);
+  const server = await startServer(['--shot-clock', '0', '--bot-think-ms', '100',
+    ...(webRoot ? ['--web-root', path.resolve(webRoot)] : [])]);
   const web = await startWebServer(server);
   // Unthrottled frames: the interval between rAF timestamps is then the whole frame's cost.
   const extra = unthrottled ? ['--disable-frame-rate-limit', '--disable-gpu-vsync'] : [];
@@ -97,9 +143,20 @@ run('web_report', 300000, async (t) => {
     const s = await p.waitFor('our break', (st) => st.inRoom && st.myTurn && !st.animating && st.aim.phase === 'idle', 20000);
     if (muted) await p.press('#mute');
     await p.page.evaluate(() => window.carrom.clearFrameTimes());
+    const cpuBefore = browserCpu();
     await p.shoot(breakShot(s.aim.y));
-    await p.waitFor('the break on screen', (st) => st.animating, 10000);
-    await p.waitFor('the break over', (st, turn) => st.turn !== turn, 30000, s.turn);
+    // While frames are timed, the page is looked at only through its cheap progress() hook, 4
+    // times a second (window.carrom.state() costs the page a layout and a copy of everything).
+    const progress = async (what, fn) => {
+      const deadline = Date.now() + 30000;
+      while (!fn(await p.page.evaluate(() => window.carrom.progress()))) {
+        check(Date.now() < deadline, `${what} did not happen within 30 s`);
+        await new Promise((r) => { setTimeout(r, 250); });
+      }
+    };
+    await progress('the break on screen', (st) => st.animating);
+    await progress('the break over', (st) => st.turn !== s.turn);
+    const cpu = cpuSince(cpuBefore);
     // The break only: the frames where it moves on screen (the bot's reply is another turn).
     const log = await p.page.evaluate(() => window.carrom.frameTimes());
     const frames = log.filter((f) => f.moving && f.turn === s.turn);
@@ -111,6 +168,7 @@ run('web_report', 300000, async (t) => {
     pooled.inside.push(...inside);
     pooled.idle.push(...idle);
     const after = await p.state();
+    check(muted || after.audio === 'running', `the page's sound is on (audio ${after.audio})`);
     results.push({
       frames: frames.length,
       seconds: round((frames[frames.length - 1].ts - frames[0].ts) / 1000),
@@ -125,6 +183,9 @@ run('web_report', 300000, async (t) => {
       work_p99_ms: round(percentile(inside, 0.99)),
       interval_p50_ms: round(percentile(intervals, 0.5)),
       interval_p99_ms: round(percentile(intervals, 0.99)),
+      browser_cpu_ms: cpu,
+      audio: muted ? 'muted' : after.audio,
+      sounds: after.sounds,
     });
     await context.close();
   }
@@ -140,8 +201,8 @@ run('web_report', 300000, async (t) => {
   if (args.includes('--json')) {
     console.log(JSON.stringify(report));
   } else {
-    console.log('run | frames moving | frame p50 | frame p99 | max | callback p50 / p99 | rAF interval p50 / p99 | idle page p50 / p99 | paints | wood');
-    results.forEach((r, i) => console.log(`${i + 1} | ${r.frames} in ${r.seconds} s | ${r.p50_ms} ms | ${r.p99_ms} ms | ${r.max_ms} ms | ${r.work_p50_ms} / ${r.work_p99_ms} ms | ${r.interval_p50_ms} / ${r.interval_p99_ms} ms | ${r.idle_p50_ms} / ${r.idle_p99_ms} ms | ${r.board_paints} | ${r.wood_ms} ms`));
+    console.log('run | frames moving | frame p50 | frame p99 | max | callback p50 / p99 | rAF interval p50 / p99 | idle page p50 / p99 | paints | wood | sound | browser CPU in the break by process type');
+    results.forEach((r, i) => console.log(`${i + 1} | ${r.frames} in ${r.seconds} s | ${r.p50_ms} ms | ${r.p99_ms} ms | ${r.max_ms} ms | ${r.work_p50_ms} / ${r.work_p99_ms} ms | ${r.interval_p50_ms} / ${r.interval_p99_ms} ms | ${r.idle_p50_ms} / ${r.idle_p99_ms} ms | ${r.board_paints} | ${r.wood_ms} ms | ${r.audio}, ${r.sounds} cues | browser CPU ${JSON.stringify(r.browser_cpu_ms)} ms`));
     console.log(`all ${runs} runs: ${all.frames} frames, frame p50 ${all.p50_ms} ms, p99 ${all.p99_ms} ms, max ${all.max_ms} ms; page's work p99 ${all.work_p99_ms} ms; idle page p99 ${all.idle_p99_ms} ms`);
     console.log(`files served by ${report.served_by}`);
     console.log(`download: ${download.files} files, ${download.bodyBytes} bytes of bodies, ${download.transferBytes} bytes transferred (uncompressed)`);

@@ -353,7 +353,8 @@ class App {
       aim: { phase: this.aim.phase, x: this.aim.x, y: this.aim.striker().y, legal: this.aim.placement.legal },
       shotSentTurn: this.shotSentTurn, shots: this.model.shots, lastShot: this.model.lastShot,
       frames: this.renderer.frames, paints: this.renderer.painter.paints, woodMs: this.renderer.painter.woodMs, resizes: this.resizes.slice(), sounds: this.sound.played,
-      muted: this.sound.muted, hash: window.location.hash,
+      muted: this.sound.muted, audio: this.sound.context ? this.sound.context.state : 'none',
+      hash: window.location.hash,
     };
   }
 
@@ -371,5 +372,7 @@ window.carrom = Object.freeze({
   toClient: (x, y) => app.toClient(x, y),
   frameTimes: () => app.frameLog.slice(),
   clearFrameTimes: () => { app.frameLog.length = 0; },
+  // A cheap look (no layout, three fields) for a caller that polls while frames are timed.
+  progress: () => ({ turn: app.model.view.turn, phase: app.model.view.phase, animating: app.model.animating() }),
 });
 app.start();
