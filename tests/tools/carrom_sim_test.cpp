@@ -1,17 +1,15 @@
 // Runs the built carrom-sim binary (CARROM_SIM_PATH) on small scenes and checks its JSON output,
 // its errors and its exit codes.
 
+#include "support/command_run.hpp"
+#include "support/read_file.hpp"
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include <sys/wait.h>
-
-#include <array>
 #include <cmath>
-#include <cstdio>
 #include <fstream>
 #include <set>
-#include <sstream>
 #include <string>
 
 namespace {
@@ -36,31 +34,12 @@ std::string write_temp(const std::string& name, const std::string& text) {
     return path;
 }
 
-std::string read_file(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::stringstream buffer;
-    buffer << in.rdbuf();
-    return buffer.str();
-}
-
 // Runs `carrom-sim <args>` through the shell; stderr goes to a temp file.
 SimRun run_sim(const std::string& args) {
     const std::string err_path = temp_path("stderr.txt");
     const std::string command = std::string(CARROM_SIM_PATH) + " " + args + " 2>" + err_path;
-    SimRun run;
-    FILE* pipe = popen(command.c_str(), "r");
-    if (pipe == nullptr) {
-        return run;
-    }
-    std::array<char, 4096> buffer{};
-    std::size_t got = 0;
-    while ((got = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0) {
-        run.out.append(buffer.data(), got);
-    }
-    const int status = pclose(pipe);
-    run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    run.err = read_file(err_path);
-    return run;
+    const carrom::test_support::CommandRun ran = carrom::test_support::run_command(command);
+    return {ran.exit, ran.out, carrom::test_support::read_file(err_path)};
 }
 
 SimRun run_scene(const std::string& scene, const std::string& flags = "") {

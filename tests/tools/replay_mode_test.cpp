@@ -5,17 +5,14 @@
 #include "proto/journal_support.hpp"
 
 #include "carrom/proto/journal_json.hpp"
+#include "support/command_run.hpp"
+#include "support/read_file.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include <sys/wait.h>
-
-#include <array>
 #include <cmath>
-#include <cstdio>
 #include <fstream>
-#include <sstream>
 #include <string>
 
 namespace carrom::proto {
@@ -41,30 +38,11 @@ std::string write_temp(const std::string& text) {
     return path;
 }
 
-std::string read_file(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::stringstream buffer;
-    buffer << in.rdbuf();
-    return buffer.str();
-}
-
 SimRun run_sim(const std::string& args) {
     const std::string err_path = temp_path("stderr.txt");
     const std::string command = std::string(CARROM_SIM_PATH) + " " + args + " 2>" + err_path;
-    SimRun run;
-    FILE* pipe = popen(command.c_str(), "r");
-    if (pipe == nullptr) {
-        return run;
-    }
-    std::array<char, 4096> buffer{};
-    std::size_t got = 0;
-    while ((got = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0) {
-        run.out.append(buffer.data(), got);
-    }
-    const int status = pclose(pipe);
-    run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    run.err = read_file(err_path);
-    return run;
+    const test_support::CommandRun ran = test_support::run_command(command);
+    return {ran.exit, ran.out, test_support::read_file(err_path)};
 }
 
 SimRun replay_journal(const MatchJournal& journal) {
