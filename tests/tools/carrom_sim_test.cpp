@@ -1,8 +1,7 @@
 // Runs the built carrom-sim binary (CARROM_SIM_PATH) on small scenes and checks its JSON output,
 // its errors and its exit codes.
 
-#include "support/command_run.hpp"
-#include "support/read_file.hpp"
+#include "tools/sim_run.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -16,30 +15,14 @@ namespace {
 
 using Json = nlohmann::json;
 
-struct SimRun {
-    int exit_code = -1;
-    std::string out;
-    std::string err;
-};
-
-// Unique per test, so that tests run in parallel processes do not share files.
-std::string temp_path(const std::string& name) {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    return ::testing::TempDir() + "carrom_sim_test_" + info->name() + "_" + name;
-}
+using carrom::sim_testing::run_sim;
+using carrom::sim_testing::SimRun;
+using carrom::sim_testing::temp_path;
 
 std::string write_temp(const std::string& name, const std::string& text) {
     const std::string path = temp_path(name);
     std::ofstream(path, std::ios::binary) << text;
     return path;
-}
-
-// Runs `carrom-sim <args>` through the shell; stderr goes to a temp file.
-SimRun run_sim(const std::string& args) {
-    const std::string err_path = temp_path("stderr.txt");
-    const std::string command = std::string(CARROM_SIM_PATH) + " " + args + " 2>" + err_path;
-    const carrom::test_support::CommandRun ran = carrom::test_support::run_command(command);
-    return {ran.exit, ran.out, carrom::test_support::read_file(err_path)};
 }
 
 SimRun run_scene(const std::string& scene, const std::string& flags = "") {

@@ -5,8 +5,7 @@
 #include "proto/journal_support.hpp"
 
 #include "carrom/proto/journal_json.hpp"
-#include "support/command_run.hpp"
-#include "support/read_file.hpp"
+#include "tools/sim_run.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -20,29 +19,14 @@ namespace {
 
 using Json = nlohmann::json;
 
-struct SimRun {
-    int exit_code = -1;
-    std::string out;
-    std::string err;
-};
-
-// Unique per test, so that tests run in parallel processes do not share files.
-std::string temp_path(const std::string& name) {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    return ::testing::TempDir() + "carrom_replay_test_" + info->name() + "_" + name;
-}
+using sim_testing::run_sim;
+using sim_testing::SimRun;
+using sim_testing::temp_path;
 
 std::string write_temp(const std::string& text) {
     const std::string path = temp_path("journal.json");
     std::ofstream(path, std::ios::binary) << text;
     return path;
-}
-
-SimRun run_sim(const std::string& args) {
-    const std::string err_path = temp_path("stderr.txt");
-    const std::string command = std::string(CARROM_SIM_PATH) + " " + args + " 2>" + err_path;
-    const test_support::CommandRun ran = test_support::run_command(command);
-    return {ran.exit, ran.out, test_support::read_file(err_path)};
 }
 
 SimRun replay_journal(const MatchJournal& journal) {

@@ -3,6 +3,7 @@
 
 #include "support/command_run.hpp"
 #include "support/read_file.hpp"
+#include "tools/sim_run.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -21,10 +22,7 @@ struct RulesRun {
     Json err;
 };
 
-std::string temp_path(const std::string& name) {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    return ::testing::TempDir() + "rules_mode_test_" + info->name() + "_" + name;
-}
+using carrom::sim_testing::temp_path;
 
 RulesRun run_rules(const Json& input) {
     const std::string in_path = temp_path("in.json");
