@@ -2,8 +2,6 @@
 
 #include <gtest/gtest.h>
 
-#include <cstdio>
-#include <sys/wait.h>
 #include <thread>
 
 namespace carrom::integration {
@@ -207,22 +205,6 @@ void ManualClient::drain(std::chrono::milliseconds quiet) {
             history_.push_back(std::move(m));
         }
     }
-}
-
-CommandRun run_command(const std::string& command) {
-    CommandRun ran;
-    FILE* pipe = popen(command.c_str(), "r");
-    if (!pipe) {
-        return ran;
-    }
-    char buffer[4096];
-    std::size_t n = 0;
-    while ((n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0) {
-        ran.out.append(buffer, n);
-    }
-    const int status = pclose(pipe);
-    ran.exit = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return ran;
 }
 
 } // namespace carrom::integration

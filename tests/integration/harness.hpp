@@ -8,6 +8,8 @@
 #include "carrom/net/connection.hpp"
 #include "carrom/server/server.hpp"
 
+#include "support/command_run.hpp"
+
 #include <chrono>
 #include <memory>
 #include <optional>
@@ -22,13 +24,9 @@ inline constexpr double kTestTimeScale = 25.0;
 // Settings for tests: 127.0.0.1, ephemeral port, 2 I/O threads, no shot clock, fast playback.
 server::ServerSettings test_settings();
 
-// A command line run through the shell: its standard output and exit status (-1 when it did not
-// exit normally or could not be started).
-struct CommandRun {
-    int exit = -1;
-    std::string out;
-};
-CommandRun run_command(const std::string& command);
+// A command line run through the shell: its standard output and exit status (tests/support/).
+using test_support::CommandRun;
+using test_support::run_command;
 
 class TestServer {
 public:

@@ -1,39 +1,21 @@
 // The carrom-server executable as scripts see it: stdout holds only the "listening on" line,
 // logs go to stderr (docs/server.md).
+#include "support/command_run.hpp"
+#include "support/read_file.hpp"
+
 #include <gtest/gtest.h>
 
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <cstdio>
-#include <fstream>
-#include <sstream>
 #include <string>
 
 namespace carrom::server {
 namespace {
 
-struct CommandRun {
-    int exit = -1;
-    std::string out;
-};
-
-// A command line run through the shell: its standard output and exit status.
-CommandRun run_command(const std::string& command) {
-    CommandRun ran;
-    FILE* pipe = popen(command.c_str(), "r");
-    if (!pipe) {
-        return ran;
-    }
-    char buffer[4096];
-    std::size_t n = 0;
-    while ((n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0) {
-        ran.out.append(buffer, n);
-    }
-    const int status = pclose(pipe);
-    ran.exit = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return ran;
-}
+using test_support::CommandRun;
+using test_support::read_file;
+using test_support::run_command;
 
 // "listening on 127.0.0.1:PORT\n" and nothing else. (No std::regex: g++ 12 warns in its
 // std::function at -O1 with the sanitizers, and warnings are errors.)
@@ -56,11 +38,9 @@ TEST(ServerCli, StdoutHoldsOnlyTheListeningLineAndLogsGoToStderr) {
                     " --host 127.0.0.1 --port 0 --log-level info 2> " + err_path);
     EXPECT_EQ(ran.exit, 124) << ran.out; // stopped by timeout's SIGTERM
     EXPECT_TRUE(is_listening_line(ran.out)) << ran.out;
-    std::ifstream err_file(err_path);
-    std::stringstream err;
-    err << err_file.rdbuf();
-    EXPECT_NE(err.str().find("carrom-server on 127.0.0.1:"), std::string::npos) << err.str();
-    EXPECT_NE(err.str().find("stopped"), std::string::npos) << err.str();
+    const std::string err = read_file(err_path);
+    EXPECT_NE(err.find("carrom-server on 127.0.0.1:"), std::string::npos) << err;
+    EXPECT_NE(err.find("stopped"), std::string::npos) << err;
     std::remove(err_path.c_str());
 }
 

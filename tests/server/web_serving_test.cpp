@@ -5,6 +5,7 @@
 #include "carrom/proto/server_messages.hpp"
 #include "client/child_process.hpp"
 #include "server/ws_test_client.hpp"
+#include "support/read_file.hpp"
 
 #include <gtest/gtest.h>
 
@@ -31,6 +32,7 @@ namespace {
 using namespace std::chrono_literals;
 using client::testing::ChildProcess;
 using Clock = std::chrono::steady_clock;
+using test_support::read_file;
 
 struct HttpAnswer {
     int status = 0;
@@ -150,13 +152,6 @@ HttpAnswer ask_raw(std::uint16_t port, const std::string& bytes) {
         return {};
     }
     return answers.front();
-}
-
-std::string read_file(const std::filesystem::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream out;
-    out << in.rdbuf();
-    return out.str();
 }
 
 std::filesystem::path web_dir() {

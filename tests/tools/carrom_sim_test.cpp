@@ -1,66 +1,28 @@
 // Runs the built carrom-sim binary (CARROM_SIM_PATH) on small scenes and checks its JSON output,
 // its errors and its exit codes.
 
+#include "tools/sim_run.hpp"
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include <sys/wait.h>
-
-#include <array>
 #include <cmath>
-#include <cstdio>
 #include <fstream>
 #include <set>
-#include <sstream>
 #include <string>
 
 namespace {
 
 using Json = nlohmann::json;
 
-struct SimRun {
-    int exit_code = -1;
-    std::string out;
-    std::string err;
-};
-
-// Unique per test, so that tests run in parallel processes do not share files.
-std::string temp_path(const std::string& name) {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    return ::testing::TempDir() + "carrom_sim_test_" + info->name() + "_" + name;
-}
+using carrom::sim_testing::run_sim;
+using carrom::sim_testing::SimRun;
+using carrom::sim_testing::temp_path;
 
 std::string write_temp(const std::string& name, const std::string& text) {
     const std::string path = temp_path(name);
     std::ofstream(path, std::ios::binary) << text;
     return path;
-}
-
-std::string read_file(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::stringstream buffer;
-    buffer << in.rdbuf();
-    return buffer.str();
-}
-
-// Runs `carrom-sim <args>` through the shell; stderr goes to a temp file.
-SimRun run_sim(const std::string& args) {
-    const std::string err_path = temp_path("stderr.txt");
-    const std::string command = std::string(CARROM_SIM_PATH) + " " + args + " 2>" + err_path;
-    SimRun run;
-    FILE* pipe = popen(command.c_str(), "r");
-    if (pipe == nullptr) {
-        return run;
-    }
-    std::array<char, 4096> buffer{};
-    std::size_t got = 0;
-    while ((got = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0) {
-        run.out.append(buffer.data(), got);
-    }
-    const int status = pclose(pipe);
-    run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    run.err = read_file(err_path);
-    return run;
 }
 
 SimRun run_scene(const std::string& scene, const std::string& flags = "") {

@@ -1,16 +1,16 @@
 // `carrom-sim --rules` end to end: a match state plus a shot in, the outcome and new state out;
 // bad input and refused moves give {"error": {...}} on stderr and exit code 2.
 
+#include "support/command_run.hpp"
+#include "support/read_file.hpp"
+#include "tools/sim_run.hpp"
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include <array>
 #include <cmath>
-#include <cstdio>
 #include <fstream>
-#include <sstream>
 #include <string>
-#include <sys/wait.h>
 
 namespace {
 
@@ -22,10 +22,7 @@ struct RulesRun {
     Json err;
 };
 
-std::string temp_path(const std::string& name) {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    return ::testing::TempDir() + "rules_mode_test_" + info->name() + "_" + name;
-}
+using carrom::sim_testing::temp_path;
 
 RulesRun run_rules(const Json& input) {
     const std::string in_path = temp_path("in.json");
@@ -33,23 +30,11 @@ RulesRun run_rules(const Json& input) {
     std::ofstream(in_path, std::ios::binary) << input.dump();
     const std::string command =
         std::string(CARROM_SIM_PATH) + " --rules < " + in_path + " 2>" + err_path;
+    const carrom::test_support::CommandRun ran = carrom::test_support::run_command(command);
     RulesRun run;
-    FILE* pipe = popen(command.c_str(), "r");
-    if (pipe == nullptr) {
-        return run;
-    }
-    std::string out;
-    std::array<char, 4096> buffer{};
-    std::size_t got = 0;
-    while ((got = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0) {
-        out.append(buffer.data(), got);
-    }
-    const int status = pclose(pipe);
-    run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    std::stringstream err;
-    err << std::ifstream(err_path).rdbuf();
-    run.out = Json::parse(out, nullptr, false);
-    run.err = Json::parse(err.str(), nullptr, false);
+    run.exit_code = ran.exit;
+    run.out = Json::parse(ran.out, nullptr, false);
+    run.err = Json::parse(carrom::test_support::read_file(err_path), nullptr, false);
     return run;
 }
 
