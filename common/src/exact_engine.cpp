@@ -41,9 +41,26 @@ namespace {
 enum class Next : std::uint8_t { None, Pair, Cushion, Pocket, Stop };
 
 // Events are keyed by u = e^(-k t), which decreases with time: a prediction made at `now` for
-// travel factor s has u = u_now (1 - k s), with no logarithm. The earliest event has the
-// largest key; kNoEvent is below every real key (real keys are > 0).
-constexpr double kNoEvent = -1.0;
+// travel factor s has u = u_now (1 - k s), with no logarithm. Below kTravelKeyDampingPerS the
+// keys are -S instead, S = (1 - e^(-k t)) / k the travel factor since t = 0 (S = t when k = 0):
+// a prediction has key -(S_now + u_now s). u resolves time only to about 1e-16 / k s, which is
+// too coarse for small k (and nothing at k = 0); S resolves it to the rounding of S itself.
+// Either way the earliest event has the largest key; kNoEvent is below every real key.
+constexpr double kNoEvent = -std::numeric_limits<double>::infinity();
+
+// Damping rates below this (1/s) key events by the travel factor S (see above). At and above it
+// the keys are u, whose time resolution (1e-16 / k s) is then finer than 1e-15 s.
+constexpr double kTravelKeyDampingPerS = 0.1;
+
+// The work bound of one run besides max_events: after this many pair tests (SimStats::pair_tests,
+// about 50 ns each) the run ends as at max_events, flagged truncated. No shot on the standard
+// layout comes near it (a break makes about 4,000).
+constexpr int kMaxPairTests = 1 << 23;
+
+// The longest travel factor a moving body's path box is drawn for when keys are travel factors,
+// s: enough to cross any board at 1e-3 px/s; the box is clamped to the cushion range, which the
+// path cannot leave before its next event.
+constexpr double kLongestBoxTravelS = 1e12;
 
 struct Prediction {
     double key = kNoEvent;
@@ -92,8 +109,9 @@ struct ExactEngine::Impl {
     explicit Impl(const PhysicsConfig& c);
 
     PhysicsConfig config;
-    double k = 0.0;     // damping, 1/s
-    double inv_k = 0.0; // s
+    double k = 0.0;           // damping, 1/s
+    double inv_k = 0.0;       // s (infinite when k = 0)
+    bool travel_keys = false; // k < kTravelKeyDampingPerS: keys are -S (see kNoEvent)
     std::array<Vec2, 4> pockets{};
     std::array<Box, 4> pocket_boxes{};
     // A path box with x0 > pocket_gap.x0 and x1 < pocket_gap.x1 (or the same in y) lies between
@@ -153,17 +171,29 @@ struct ExactEngine::Impl {
     std::vector<double> solve_inv_mass; // 0 for bodies pinned by the stop rule at this instant
     detail::ContactSolver solver;
 
-    // The current time is u_now = e^(-k now). `now` (s) is derived from it only when an event or
-    // segment is recorded or the run ends (now_stale: not yet derived since the last advance).
-    double now = 0.0;   // s
-    double u_now = 1.0; // e^(-k now)
+    // The current time is u_now = e^(-k now) (with travel_keys: travel_now = S(now)). `now` (s)
+    // is derived from it only when an event or segment is recorded or the run ends (now_stale:
+    // not yet derived since the last advance).
+    double now = 0.0;        // s
+    double u_now = 1.0;      // e^(-k now)
+    double travel_now = 0.0; // S(now) = (1 - e^(-k now)) / k, s; kept only with travel_keys
     bool now_stale = false;
     double time_now() {
         if (now_stale) {
-            now = -std::log(u_now) * inv_k;
+            if (!travel_keys) {
+                now = -std::log(u_now) * inv_k;
+            } else {
+                // t = -ln(1 - k S) / k = S (-ln(1 - x) / x), x = k S, which is 1 at x = 0.
+                const double x = k * travel_now;
+                now = x == 0.0 ? travel_now : travel_now * (-std::log1p(-x) / x);
+            }
             now_stale = false;
         }
         return now;
+    }
+    // The key of the time at which the travel factor from now is s (s >= 0).
+    double key_after(double s) const {
+        return travel_keys ? -(travel_now + u_now * s) : u_now * (1.0 - k * s);
     }
     SimOptions options;
     SimResult result;
@@ -215,6 +245,7 @@ struct ExactEngine::Impl {
 ExactEngine::Impl::Impl(const PhysicsConfig& c) : config(c) {
     k = c.damping_per_s;
     inv_k = 1.0 / k;
+    travel_keys = k < kTravelKeyDampingPerS;
     pockets = c.pocket_centres();
     for (std::size_t p = 0; p < pockets.size(); ++p) {
         const double r = c.pocket_radius_px;
@@ -306,6 +337,7 @@ void ExactEngine::Impl::load(std::span<const Body> bodies) {
     }
     now = 0.0;
     u_now = 1.0;
+    travel_now = 0.0;
     now_stale = false;
     result.bodies.assign(bodies.begin(), bodies.end());
     result.events.clear();
@@ -340,8 +372,13 @@ void ExactEngine::Impl::refresh(std::size_t i) {
     box_dirty[i] = 1;
     const double r = radius[i];
     Vec2 end = p;
-    if (now_moving) {
+    if (now_moving && !travel_keys) {
         end += v * ((1.0 - config.stop_speed_px_s / sp) * inv_k); // the stop, stop_s(i)
+    } else if (now_moving) {
+        // The stop may be far away or never come (k = 0): the box ends where the path leaves
+        // the cushion range, which it cannot before its next event.
+        end += v * std::min((1.0 - config.stop_speed_px_s / sp) * inv_k, kLongestBoxTravelS);
+        end = {std::clamp(end.x, lo[i], hi[i]), std::clamp(end.y, lo[i], hi[i])};
     }
     const double x0 = std::min(p.x, end.x) - r;
     const double y0 = std::min(p.y, end.y) - r;
@@ -389,13 +426,24 @@ void ExactEngine::Impl::pocket_body(std::size_t i, int pocket) {
     refresh(i);
 }
 
-// Moves every body to the time whose key is u (u <= u_now).
-void ExactEngine::Impl::advance(double u) {
-    if (u >= u_now) {
-        return;
+// Moves every body to the time whose key is `key` (a time not before now).
+void ExactEngine::Impl::advance(double key) {
+    double decay = 0.0; // e^(-k dt)
+    double s = 0.0;     // (1 - e^(-k dt)) / k, s
+    if (!travel_keys) {
+        if (key >= u_now) {
+            return;
+        }
+        decay = key / u_now;
+        s = (1.0 - decay) * inv_k;
+    } else {
+        // key = -(S_now + u_now s): S(now + dt) = S_now + e^(-k now) (1 - e^(-k dt)) / k.
+        if (-key <= travel_now) {
+            return;
+        }
+        s = (-key - travel_now) / u_now;
+        decay = 1.0 - k * s;
     }
-    const double decay = u / u_now;         // e^(-k dt)
-    const double s = (1.0 - decay) * inv_k; // (1 - e^(-k dt)) / k
     // Raw pointers: the stores cannot alias the vectors themselves, so nothing is reloaded.
     Vec2* const p = pos.data();
     Vec2* const v = vel.data();
@@ -428,7 +476,12 @@ void ExactEngine::Impl::advance(double u) {
             move(static_cast<std::size_t>(mi));
         }
     }
-    u_now = u;
+    if (!travel_keys) {
+        u_now = key;
+    } else {
+        u_now *= decay;
+        travel_now = -key;
+    }
     now_stale = true;
 }
 
@@ -516,7 +569,10 @@ void ExactEngine::Impl::predict(std::size_t i) {
             }
         }
     }
-    best.key = best.kind == Next::None ? kNoEvent : u_now * (1.0 - k * best_s);
+    if (best_s == kNever) {
+        best.kind = Next::None; // no stop either (k = 0): nothing ever happens to body i
+    }
+    best.key = best.kind == Next::None ? kNoEvent : key_after(best_s);
     set_next(i, best);
 }
 
@@ -1171,7 +1227,11 @@ void ExactEngine::Impl::settle_initial_state(std::uint64_t unchanged) {
 }
 
 void ExactEngine::Impl::run_events() {
-    const double u_until = std::exp(-k * options.until_s); // 0 when there is no end time
+    // The key of the end time: 0 (or -infinity with travel keys) when there is no end time.
+    double key_until = std::exp(-k * options.until_s);
+    if (travel_keys) {
+        key_until = -travel_factor_s(k, options.until_s);
+    }
     std::vector<int>& seeds = event_seeds;
     long pops = 0;
     while (!next.empty()) {
@@ -1203,8 +1263,8 @@ void ExactEngine::Impl::run_events() {
             break;
         }
         const Prediction event = next[first];
-        if (event.key < u_until) {
-            advance(u_until);
+        if (event.key < key_until) {
+            advance(key_until);
             now = options.until_s; // exact, rather than recomputed from the key
             now_stale = false;
             return;
@@ -1212,7 +1272,8 @@ void ExactEngine::Impl::run_events() {
         // Every pop normally emits at least one event; the pop count guards the bound even if
         // rounding ever made a predicted event a no-op.
         ++pops;
-        if (result.stats.events >= config.max_events || pops > 4L * config.max_events) {
+        if (result.stats.events >= config.max_events || pops > 4L * config.max_events ||
+            result.stats.pair_tests >= kMaxPairTests) {
             result.truncated = true;
             for (std::size_t i = 0; i < pos.size(); ++i) {
                 if (moving[i]) {
