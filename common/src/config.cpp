@@ -34,7 +34,7 @@ std::optional<ConfigError> validate_config(const PhysicsConfig& c) {
         require(positive(c.striker_radius_px), "striker_radius_px", "must be a finite number > 0"),
         require(positive(c.coin_mass), "coin_mass", "must be a finite number > 0"),
         require(positive(c.striker_mass), "striker_mass", "must be a finite number > 0"),
-        require(positive(c.damping_per_s), "damping_per_s", "must be a finite number > 0"),
+        require(non_negative(c.damping_per_s), "damping_per_s", "must be a finite number >= 0"),
         require(positive(c.stop_speed_px_s), "stop_speed_px_s", "must be a finite number > 0"),
         require(unit_interval(c.cushion_restitution), "cushion_restitution", "must be in [0, 1]"),
         require(unit_interval(c.disc_restitution), "disc_restitution", "must be in [0, 1]"),

@@ -41,9 +41,26 @@ namespace {
 enum class Next : std::uint8_t { None, Pair, Cushion, Pocket, Stop };
 
 // Events are keyed by u = e^(-k t), which decreases with time: a prediction made at `now` for
-// travel factor s has u = u_now (1 - k s), with no logarithm. The earliest event has the
-// largest key; kNoEvent is below every real key (real keys are > 0).
-constexpr double kNoEvent = -1.0;
+// travel factor s has u = u_now (1 - k s), with no logarithm. Below kTravelKeyDampingPerS the
+// keys are -S instead, S = (1 - e^(-k t)) / k the travel factor since t = 0 (S = t when k = 0):
+// a prediction has key -(S_now + u_now s). u resolves time only to about 1e-16 / k s, which is
+// too coarse for small k (and nothing at k = 0); S resolves it to the rounding of S itself.
+// Either way the earliest event has the largest key; kNoEvent is below every real key.
+constexpr double kNoEvent = -std::numeric_limits<double>::infinity();
+
+// Damping rates below this (1/s) key events by the travel factor S (see above). At and above it
+// the keys are u, whose time resolution (1e-16 / k s) is then finer than 1e-15 s.
+constexpr double kTravelKeyDampingPerS = 0.1;
+
+// The work bound of one run besides max_events: after this many pair tests (SimStats::pair_tests,
+// about 50 ns each) the run ends as at max_events, flagged truncated. No shot on the standard
+// layout comes near it (a break makes about 4,000).
+constexpr int kMaxPairTests = 1 << 23;
+
+// The longest travel factor a moving body's path box is drawn for when keys are travel factors,
+// s: enough to cross any board at 1e-3 px/s; the box is clamped to the cushion range, which the
+// path cannot leave before its next event.
+constexpr double kLongestBoxTravelS = 1e12;
 
 struct Prediction {
     double key = kNoEvent;
@@ -57,8 +74,13 @@ struct Box {
 };
 
 // Rounds of impacts at one instant after which the remaining cascade is solved as one plastic
-// contact group (the remedy for zero-time inelastic collapse; docs/physics.md).
-constexpr int kRoundsBeforeCollapse = 16;
+// contact group (the remedy for zero-time inelastic collapse; docs/physics.md): the larger of
+// kRoundsBeforeCollapse and kCollapseRoundsPerBodySquared m^2, m the bodies the cascade has
+// reached. A straight row of m touching bodies struck at one end converges in about 4.3 m^2
+// rounds for e from 0.5 to 1 (ExactCradle), well inside the bound; a true zero-time collapse
+// never converges and is ended by it.
+constexpr long kRoundsBeforeCollapse = 16;
+constexpr long kCollapseRoundsPerBodySquared = 8;
 
 // Where pocketed bodies are kept, px: far enough that no distance or box test ever passes.
 constexpr Vec2 kFarAway{1e30, 1e30};
@@ -92,8 +114,9 @@ struct ExactEngine::Impl {
     explicit Impl(const PhysicsConfig& c);
 
     PhysicsConfig config;
-    double k = 0.0;     // damping, 1/s
-    double inv_k = 0.0; // s
+    double k = 0.0;           // damping, 1/s
+    double inv_k = 0.0;       // s (infinite when k = 0)
+    bool travel_keys = false; // k < kTravelKeyDampingPerS: keys are -S (see kNoEvent)
     std::array<Vec2, 4> pockets{};
     std::array<Box, 4> pocket_boxes{};
     // A path box with x0 > pocket_gap.x0 and x1 < pocket_gap.x1 (or the same in y) lies between
@@ -153,17 +176,29 @@ struct ExactEngine::Impl {
     std::vector<double> solve_inv_mass; // 0 for bodies pinned by the stop rule at this instant
     detail::ContactSolver solver;
 
-    // The current time is u_now = e^(-k now). `now` (s) is derived from it only when an event or
-    // segment is recorded or the run ends (now_stale: not yet derived since the last advance).
-    double now = 0.0;   // s
-    double u_now = 1.0; // e^(-k now)
+    // The current time is u_now = e^(-k now) (with travel_keys: travel_now = S(now)). `now` (s)
+    // is derived from it only when an event or segment is recorded or the run ends (now_stale:
+    // not yet derived since the last advance).
+    double now = 0.0;        // s
+    double u_now = 1.0;      // e^(-k now)
+    double travel_now = 0.0; // S(now) = (1 - e^(-k now)) / k, s; kept only with travel_keys
     bool now_stale = false;
     double time_now() {
         if (now_stale) {
-            now = -std::log(u_now) * inv_k;
+            if (!travel_keys) {
+                now = -std::log(u_now) * inv_k;
+            } else {
+                // t = -ln(1 - k S) / k = S (-ln(1 - x) / x), x = k S, which is 1 at x = 0.
+                const double x = k * travel_now;
+                now = x == 0.0 ? travel_now : travel_now * (-std::log1p(-x) / x);
+            }
             now_stale = false;
         }
         return now;
+    }
+    // The key of the time at which the travel factor from now is s (s >= 0).
+    double key_after(double s) const {
+        return travel_keys ? -(travel_now + u_now * s) : u_now * (1.0 - k * s);
     }
     SimOptions options;
     SimResult result;
@@ -215,6 +250,7 @@ struct ExactEngine::Impl {
 ExactEngine::Impl::Impl(const PhysicsConfig& c) : config(c) {
     k = c.damping_per_s;
     inv_k = 1.0 / k;
+    travel_keys = k < kTravelKeyDampingPerS;
     pockets = c.pocket_centres();
     for (std::size_t p = 0; p < pockets.size(); ++p) {
         const double r = c.pocket_radius_px;
@@ -306,6 +342,7 @@ void ExactEngine::Impl::load(std::span<const Body> bodies) {
     }
     now = 0.0;
     u_now = 1.0;
+    travel_now = 0.0;
     now_stale = false;
     result.bodies.assign(bodies.begin(), bodies.end());
     result.events.clear();
@@ -340,8 +377,13 @@ void ExactEngine::Impl::refresh(std::size_t i) {
     box_dirty[i] = 1;
     const double r = radius[i];
     Vec2 end = p;
-    if (now_moving) {
+    if (now_moving && !travel_keys) {
         end += v * ((1.0 - config.stop_speed_px_s / sp) * inv_k); // the stop, stop_s(i)
+    } else if (now_moving) {
+        // The stop may be far away or never come (k = 0): the box ends where the path leaves
+        // the cushion range, which it cannot before its next event.
+        end += v * std::min((1.0 - config.stop_speed_px_s / sp) * inv_k, kLongestBoxTravelS);
+        end = {std::clamp(end.x, lo[i], hi[i]), std::clamp(end.y, lo[i], hi[i])};
     }
     const double x0 = std::min(p.x, end.x) - r;
     const double y0 = std::min(p.y, end.y) - r;
@@ -389,13 +431,24 @@ void ExactEngine::Impl::pocket_body(std::size_t i, int pocket) {
     refresh(i);
 }
 
-// Moves every body to the time whose key is u (u <= u_now).
-void ExactEngine::Impl::advance(double u) {
-    if (u >= u_now) {
-        return;
+// Moves every body to the time whose key is `key` (a time not before now).
+void ExactEngine::Impl::advance(double key) {
+    double decay = 0.0; // e^(-k dt)
+    double s = 0.0;     // (1 - e^(-k dt)) / k, s
+    if (!travel_keys) {
+        if (key >= u_now) {
+            return;
+        }
+        decay = key / u_now;
+        s = (1.0 - decay) * inv_k;
+    } else {
+        // key = -(S_now + u_now s): S(now + dt) = S_now + e^(-k now) (1 - e^(-k dt)) / k.
+        if (-key <= travel_now) {
+            return;
+        }
+        s = (-key - travel_now) / u_now;
+        decay = 1.0 - k * s;
     }
-    const double decay = u / u_now;         // e^(-k dt)
-    const double s = (1.0 - decay) * inv_k; // (1 - e^(-k dt)) / k
     // Raw pointers: the stores cannot alias the vectors themselves, so nothing is reloaded.
     Vec2* const p = pos.data();
     Vec2* const v = vel.data();
@@ -428,7 +481,12 @@ void ExactEngine::Impl::advance(double u) {
             move(static_cast<std::size_t>(mi));
         }
     }
-    u_now = u;
+    if (!travel_keys) {
+        u_now = key;
+    } else {
+        u_now *= decay;
+        travel_now = -key;
+    }
     now_stale = true;
 }
 
@@ -516,7 +574,10 @@ void ExactEngine::Impl::predict(std::size_t i) {
             }
         }
     }
-    best.key = best.kind == Next::None ? kNoEvent : u_now * (1.0 - k * best_s);
+    if (best_s == kNever) {
+        best.kind = Next::None; // no stop either (k = 0): nothing ever happens to body i
+    }
+    best.key = best.kind == Next::None ? kNoEvent : key_after(best_s);
     set_next(i, best);
 }
 
@@ -875,7 +936,8 @@ void ExactEngine::Impl::mark_touched(std::size_t i) {
 // simultaneous impacts until no touching contact approaches; then the stop rule for bodies left
 // below the stop speed (they are pinned for the rest of the instant, and bodies still pushing
 // into them are resolved against them). Bounded: each round either ends the cascade, or after
-// kRoundsBeforeCollapse rounds the cluster is solved plastically; each stop pass pins at least
+// max(kRoundsBeforeCollapse, kCollapseRoundsPerBodySquared m^2) rounds (m the bodies reached)
+// the cluster is solved plastically; each stop pass pins at least
 // one more body.
 void ExactEngine::Impl::process_instant(std::span<const int> seeds) {
     ++instant_stamp;
@@ -884,14 +946,16 @@ void ExactEngine::Impl::process_instant(std::span<const int> seeds) {
     for (int s : seeds) {
         mark_touched(static_cast<std::size_t>(s));
     }
-    int rounds = 0;
+    long rounds = 0;
     if (use_near && seeds.size() == 2 &&
         isolated_pair_round(static_cast<std::size_t>(seeds[0]),
                             static_cast<std::size_t>(seeds[1]))) {
         rounds = 1;
     }
     const double stop2 = config.stop_speed_px_s * config.stop_speed_px_s;
-    const int max_rounds = (kRoundsBeforeCollapse + 2) * (static_cast<int>(pos.size()) + 1);
+    const auto bodies = static_cast<long>(pos.size()) + 1;
+    const long max_rounds =
+        (kRoundsBeforeCollapse + 2) * bodies + kCollapseRoundsPerBodySquared * bodies * bodies;
     while (!frontier.empty() && rounds < max_rounds) {
         const bool collected = use_near && ((frontier.size() == 2 && collect_isolated_pair()) ||
                                             (frontier.size() == 1 && collect_lone_body()));
@@ -916,7 +980,9 @@ void ExactEngine::Impl::process_instant(std::span<const int> seeds) {
         }
         ++rounds;
         ++result.stats.contact_rounds;
-        if (rounds > kRoundsBeforeCollapse) {
+        const auto reached = static_cast<long>(touched.size());
+        if (rounds >
+            std::max(kRoundsBeforeCollapse, kCollapseRoundsPerBodySquared * reached * reached)) {
             collect_cluster();
             ++result.stats.collapse_solves;
         }
@@ -1171,7 +1237,11 @@ void ExactEngine::Impl::settle_initial_state(std::uint64_t unchanged) {
 }
 
 void ExactEngine::Impl::run_events() {
-    const double u_until = std::exp(-k * options.until_s); // 0 when there is no end time
+    // The key of the end time: 0 (or -infinity with travel keys) when there is no end time.
+    double key_until = std::exp(-k * options.until_s);
+    if (travel_keys) {
+        key_until = -travel_factor_s(k, options.until_s);
+    }
     std::vector<int>& seeds = event_seeds;
     long pops = 0;
     while (!next.empty()) {
@@ -1203,8 +1273,8 @@ void ExactEngine::Impl::run_events() {
             break;
         }
         const Prediction event = next[first];
-        if (event.key < u_until) {
-            advance(u_until);
+        if (event.key < key_until) {
+            advance(key_until);
             now = options.until_s; // exact, rather than recomputed from the key
             now_stale = false;
             return;
@@ -1212,7 +1282,8 @@ void ExactEngine::Impl::run_events() {
         // Every pop normally emits at least one event; the pop count guards the bound even if
         // rounding ever made a predicted event a no-op.
         ++pops;
-        if (result.stats.events >= config.max_events || pops > 4L * config.max_events) {
+        if (result.stats.events >= config.max_events || pops > 4L * config.max_events ||
+            result.stats.pair_tests >= kMaxPairTests) {
             result.truncated = true;
             for (std::size_t i = 0; i < pos.size(); ++i) {
                 if (moving[i]) {

@@ -22,6 +22,9 @@
 namespace carrom {
 namespace {
 
+// The work bound of one run: about a second of pair tests.
+constexpr long kMaxFixedStepPairTests = 1L << 26;
+
 struct StepContext {
     const PhysicsConfig& config;
     const FixedStepOptions& options;
@@ -163,9 +166,17 @@ FixedStepResult simulate_fixed_step(const PhysicsConfig& config, std::span<const
     }
     const double horizon = std::min(options.until_s, options.max_time_s);
     StepContext ctx{config, options, result};
+    // The work bound: every step tests every pair, so the steps are limited to keep the pair
+    // tests of one run within kMaxFixedStepPairTests.
+    const auto n = static_cast<long>(bodies.size());
+    const long max_steps = std::max(kMaxFixedStepPairTests / std::max(n * (n - 1) / 2, 1L), 1L);
     const double k = config.damping_per_s;
     const double full_damping = std::exp(-k * dt);
     while (any_moving(result.bodies) && ctx.t_s < horizon) {
+        if (result.steps >= max_steps) {
+            result.truncated = true;
+            break;
+        }
         const double next = static_cast<double>(result.steps + 1) * dt;
         // Land exactly on the horizon instead of overshooting it (within a rounding slack).
         const bool last = next >= horizon - 1e-9 * dt;

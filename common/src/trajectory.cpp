@@ -6,6 +6,10 @@
 namespace carrom {
 
 double travel_factor_s(double damping_per_s, double dt_s) {
+    // The limit at k = 0 is dt; a subnormal k gives dt too (e^(-k dt) rounds to 1 - k dt).
+    if (damping_per_s == 0.0) {
+        return dt_s;
+    }
     return -std::expm1(-damping_per_s * dt_s) / damping_per_s;
 }
 

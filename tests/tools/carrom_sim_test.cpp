@@ -234,6 +234,54 @@ TEST(CarromSim, BadFlagsExitWithTwo) {
     }
 }
 
+// 64 coins on a grid, moving in all directions, with no damping, elastic contacts and pockets
+// too small to reach: nothing ever stops.
+std::string endless_scene(int max_events) {
+    Json bodies = Json::array();
+    for (int i = 0; i < 64; ++i) {
+        const double angle = 0.7 * i;
+        bodies.push_back({{"id", i},
+                          {"kind", "black"},
+                          {"pos", {80 + 62 * (i / 8), 80 + 62 * (i % 8)}},
+                          {"vel", {900 * std::cos(angle), 900 * std::sin(angle)}}});
+    }
+    return Json{{"config",
+                 {{"damping_per_s", 0},
+                  {"cushion_restitution", 1},
+                  {"disc_restitution", 1},
+                  {"pocket_radius_px", 0.001},
+                  {"max_events", max_events}}},
+                {"bodies", bodies}}
+        .dump();
+}
+
+TEST(CarromSim, MaxEventsAboveTheBoundIsOutOfRange) {
+    const std::string scene =
+        R"({"config":{"damping_per_s":1e-300,"cushion_restitution":1,"disc_restitution":1,)"
+        R"("max_events":100000000},"layout":"standard","shot":{"x":300,"angle":-1.2,"power":25}})";
+    const Json e = expect_bad_input(run_scene(scene));
+    EXPECT_EQ(e["code"], "out_of_range");
+    EXPECT_EQ(e["path"], "config.max_events");
+}
+
+TEST(CarromSim, EndlessExactSceneStopsAtTheWorkBound) {
+    const SimRun run = run_scene(endless_scene(500000), "--no-events");
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    const Json out = parse(run.out);
+    EXPECT_EQ(out["truncated"], true);
+    EXPECT_GE(out["stats"]["pair_tests"].get<int>(), 1 << 23);
+    EXPECT_LT(out["stats"]["events"].get<int>(), 500000);
+}
+
+TEST(CarromSim, EndlessFixedStepSceneStopsAtTheWorkBound) {
+    const SimRun run = run_scene(endless_scene(1000), "--integrator fixed --dt 1e-6 --no-events");
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    const Json out = parse(run.out);
+    EXPECT_EQ(out["truncated"], true);
+    EXPECT_EQ(out["stats"]["steps"], (1L << 26) / (64 * 63 / 2));
+    EXPECT_LT(out["end_time_s"].get<double>(), 1.0);
+}
+
 TEST(CarromSim, HelpExitsWithZero) {
     const SimRun run = run_sim("--help");
     EXPECT_EQ(run.exit_code, 0);

@@ -90,7 +90,7 @@ RunOutput run_fixed(const proto::SceneSpec& scene, const RunOptions& options) {
              {"dt_s", options.frame_dt_s / options.substeps},
              {"substeps", options.substeps},
              {"end_time_s", result.end_time_s},
-             {"truncated", !options.at_s && still_moving(result.bodies)},
+             {"truncated", result.truncated || (!options.at_s && still_moving(result.bodies))},
              {"bodies", proto::bodies_to_json(result.bodies)},
              {"pocketed", proto::pocketed_ids_to_json(result.bodies)},
              {"stats", {{"steps", result.steps}, {"events", result.events.size()}}}};

@@ -38,7 +38,9 @@ struct SimResult {
     std::vector<Event> events; // in time order; simultaneous ones in a fixed order
     Trajectory trajectory;     // when requested
     double end_time_s = 0.0;   // time of the last event (or until_s)
-    bool truncated = false;    // max_events reached: remaining bodies were stopped in place
+    // max_events or the work bound (2^23 pair tests, docs/physics.md) reached: the remaining
+    // bodies were stopped in place.
+    bool truncated = false;
     SimStats stats;
     // Filled whatever SimOptions::record_events says (cheap summaries for callers that need
     // no event list, such as the rules inside a bot's search):

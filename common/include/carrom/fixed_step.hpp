@@ -30,6 +30,9 @@ struct FixedStepResult {
     std::vector<Event> events;
     double end_time_s = 0.0;
     long steps = 0;
+    // The work bound was reached (2^26 pair tests, at most max(2^26 / (n (n - 1) / 2), 1) steps
+    // for n bodies): the bodies are left as they were, possibly moving.
+    bool truncated = false;
 };
 
 FixedStepResult simulate_fixed_step(const PhysicsConfig& config, std::span<const Body> bodies,
