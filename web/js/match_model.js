@@ -165,7 +165,7 @@ export class MatchModel {
     }
     // A keyframe at t = 0 is the board at rest (a join, a resume or a new game before the turn's
     // shot): the shot's own t = 0 comes later, when it is played, so it fixes no offset.
-    const atRest = m.keyframe && m.t === 0;
+    const atRest = m.keyframe && m.t <= 0;
     let offset = atRest ? this.continuousNow(localS) : this.turnOffsets.get(m.turn);
     if (offset === undefined) {
       offset = this.continuousNow(localS) - m.t;
