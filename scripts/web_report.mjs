@@ -186,6 +186,7 @@ run('web_report', 300000, async (t) => {
       browser_cpu_ms: cpu,
       audio: muted ? 'muted' : after.audio,
       sounds: after.sounds,
+      cues: after.cues,
     });
     await context.close();
   }
@@ -202,7 +203,7 @@ run('web_report', 300000, async (t) => {
     console.log(JSON.stringify(report));
   } else {
     console.log('run | frames moving | frame p50 | frame p99 | max | callback p50 / p99 | rAF interval p50 / p99 | idle page p50 / p99 | paints | wood | sound | browser CPU in the break by process type');
-    results.forEach((r, i) => console.log(`${i + 1} | ${r.frames} in ${r.seconds} s | ${r.p50_ms} ms | ${r.p99_ms} ms | ${r.max_ms} ms | ${r.work_p50_ms} / ${r.work_p99_ms} ms | ${r.interval_p50_ms} / ${r.interval_p99_ms} ms | ${r.idle_p50_ms} / ${r.idle_p99_ms} ms | ${r.board_paints} | ${r.wood_ms} ms | ${r.audio}, ${r.sounds} cues | browser CPU ${JSON.stringify(r.browser_cpu_ms)} ms`));
+    results.forEach((r, i) => console.log(`${i + 1} | ${r.frames} in ${r.seconds} s | ${r.p50_ms} ms | ${r.p99_ms} ms | ${r.max_ms} ms | ${r.work_p50_ms} / ${r.work_p99_ms} ms | ${r.interval_p50_ms} / ${r.interval_p99_ms} ms | ${r.idle_p50_ms} / ${r.idle_p99_ms} ms | ${r.board_paints} | ${r.wood_ms} ms | ${r.audio}, ${r.sounds} sounds for ${r.cues.heard} cues (${r.cues.merged} merged, ${r.cues.late} late) | browser CPU ${JSON.stringify(r.browser_cpu_ms)} ms`));
     console.log(`all ${runs} runs: ${all.frames} frames, frame p50 ${all.p50_ms} ms, p99 ${all.p99_ms} ms, max ${all.max_ms} ms; page's work p99 ${all.work_p99_ms} ms; idle page p99 ${all.idle_p99_ms} ms`);
     console.log(`files served by ${report.served_by}`);
     console.log(`download: ${download.files} files, ${download.bodyBytes} bytes of bodies, ${download.transferBytes} bytes transferred (uncompressed)`);

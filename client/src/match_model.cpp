@@ -177,20 +177,27 @@ void MatchModel::on_snapshot(const proto::Snapshot& m, double local_s) {
     if (!m.keyframe) {
         view_.phase = proto::Phase::Moving;
     }
-    auto offset = turn_offsets_.find(m.turn);
-    if (offset == turn_offsets_.end()) {
-        offset = turn_offsets_.emplace(m.turn, continuous_now(local_s) - m.t_s).first;
-        while (turn_offsets_.size() > kTurnsKept) {
-            turn_offsets_.erase(turn_offsets_.begin());
-        }
-        std::erase_if(pending_cues_, [&](PendingCue& p) {
-            if (p.turn != m.turn) {
-                return false;
+    // A keyframe at t = 0 is the board at rest (a join, a resume or a new game before the turn's
+    // shot): the shot's own t = 0 comes later, when it is played, so it fixes no offset.
+    const bool at_rest = m.keyframe && m.t_s <= 0.0;
+    double offset = at_rest ? continuous_now(local_s) : 0.0;
+    if (!at_rest) {
+        auto it = turn_offsets_.find(m.turn);
+        if (it == turn_offsets_.end()) {
+            it = turn_offsets_.emplace(m.turn, continuous_now(local_s) - m.t_s).first;
+            while (turn_offsets_.size() > kTurnsKept) {
+                turn_offsets_.erase(turn_offsets_.begin());
             }
-            p.cue.time_s = offset->second + p.t_s;
-            cues_.push(p.cue);
-            return true;
-        });
+            std::erase_if(pending_cues_, [&](PendingCue& p) {
+                if (p.turn != m.turn) {
+                    return false;
+                }
+                p.cue.time_s = it->second + p.t_s;
+                cues_.push(p.cue);
+                return true;
+            });
+        }
+        offset = it->second;
     }
     const std::vector<BodyState> before = board_now();
     auto previous_pos = [&](int id) {
@@ -200,7 +207,7 @@ void MatchModel::on_snapshot(const proto::Snapshot& m, double local_s) {
     };
     Snapshot s;
     s.seq = next_seq_++;
-    s.time_s = offset->second + m.t_s;
+    s.time_s = offset + m.t_s;
     s.keyframe = m.keyframe;
     for (const proto::SnapshotBody& b : m.bodies) {
         s.bodies.push_back({b.id, kind_of(b.id), b.pos_px, b.vel_px_s, false});

@@ -151,6 +151,48 @@ TEST(MatchModel, PhysicsEventsBecomeSoundsWhenTheirTimeIsRendered) {
     EXPECT_EQ(all[1].kind, SoundKind::Pocket);
 }
 
+TEST(MatchModel, AShotLongAfterTheJoinKeyframeSoundsWhenItIsRendered) {
+    MatchModel m{PhysicsConfig{}};
+    m.handle(room(), 0.0);
+    // The join keyframe: turn 4 at rest, t = 0. The turn's shot starts 5 s later.
+    proto::Snapshot join;
+    join.seq = 1;
+    join.turn = 4;
+    join.keyframe = true;
+    join.bodies = {{19, {300, 520}, {}}};
+    m.handle(join, 0.01);
+    for (double t = 0.0; t < 5.0; t += 1.0 / 60.0) {
+        m.render(t);
+    }
+    m.handle(proto::Event{proto::CollisionEvent{4, 0.1, 19, 1, 900.0}}, 5.12);
+    m.handle(proto::Event{proto::PocketEvent{4, 0.5, 1, 3}}, 5.52);
+    std::vector<SoundCue> all;
+    std::int64_t seq = 2;
+    for (int k = 0; k <= 60; ++k) {
+        const double t = k / 60.0;
+        proto::Snapshot s;
+        s.seq = seq++;
+        s.turn = 4;
+        s.t_s = t;
+        s.bodies = {{19, {300, 520 - 600 * t}, {0, -600}}};
+        m.handle(s, 5.02 + t);
+        m.render(5.025 + t);
+        for (const SoundCue& c : m.take_sounds()) {
+            all.push_back(c);
+        }
+    }
+    for (int k = 1; k <= 30; ++k) {
+        m.render(6.02 + k / 60.0);
+        for (const SoundCue& c : m.take_sounds()) {
+            all.push_back(c);
+        }
+    }
+    ASSERT_EQ(all.size(), 2u); // none dropped as late
+    EXPECT_EQ(all[0].kind, SoundKind::Click);
+    EXPECT_EQ(all[1].kind, SoundKind::Pocket);
+    EXPECT_NEAR(all[1].time_s - all[0].time_s, 0.4, 1e-9);
+}
+
 TEST(MatchModel, ShotResultUpdatesScoresAndSaysWhatHappened) {
     MatchModel m{PhysicsConfig{}};
     m.handle(room(), 0.0);

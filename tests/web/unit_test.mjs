@@ -414,3 +414,48 @@ test('the model places each shot on one timeline and ends the game with its reas
   assert.equal(m.view.phase, 'game_over');
   assert.equal(m.view.gameEnd.sentence, 'Ravi wins the game (the opponent left)');
 });
+
+test('a shot played long after the join keyframe sounds every cue once, when rendered', () => {
+  const m = new MatchModel();
+  m.handle(roomState({ you: 0, to_play: 0 }), 10);
+  // The join keyframe: turn 7 at rest, t = 0.
+  m.handle({ type: 'snapshot', seq: 1, turn: 7, t: 0, keyframe: true, bodies: [[0, 300, 300, 0, 0], [19, 300, 500, 0, 0]], pocketed: [1] }, 10.01);
+  for (let local = 10; local < 15; local += 1 / 60) m.render(local);
+  // The break, 5 s later: its events come just before the snapshot that covers them; the
+  // two coins of a straight break are hit at the same time.
+  const events = [
+    { kind: 'collision', t: 0.09, a: 19, b: 9, impulse: 1300 },
+    { kind: 'collision', t: 0.09, a: 19, b: 10, impulse: 1200 },
+    { kind: 'collision', t: 0.2, a: 9, b: 4, impulse: 600 },
+    { kind: 'cushion', t: 0.5, a: 4, b: 2, impulse: 300 },
+    { kind: 'pocket', t: 0.8, a: 4, b: 1 },
+  ];
+  const played = [];
+  let seq = 2;
+  let sent = 0;
+  for (let k = 0; k <= 60; k += 1) {
+    const t = k / 60;
+    const local = 15 + t + 0.02;
+    while (sent < events.length && events[sent].t <= t) {
+      m.handle({ type: 'event', turn: 7, ...events[sent++] }, local);
+    }
+    m.handle({ type: 'snapshot', seq: seq++, turn: 7, t, keyframe: false, bodies: [[19, 300, 500 - 600 * t, 0, -600]], pocketed: [] }, local);
+    const rendered = m.render(local + 0.005) && m.lastRender;
+    for (const c of m.takeSounds()) played.push({ ...c, rendered });
+  }
+  for (let k = 1; k <= 30; k += 1) {
+    m.render(16.02 + k / 60);
+    for (const c of m.takeSounds()) played.push({ ...c, rendered: m.lastRender });
+  }
+  assert.equal(m.cuesHeard, 5);
+  assert.equal(m.cues.late, 0);
+  assert.equal(m.cuesMerged, 1); // the two clicks at 0.09 s are one sound, the louder
+  assert.deepEqual(played.map((c) => c.kind), ['click', 'click', 'cushion', 'pocket']);
+  const start = m.turnOffsets.get(7);
+  played.forEach((c, i) => {
+    const t = [0.09, 0.2, 0.5, 0.8][i];
+    near(c.time - start, t, 1e-9); // on the shot's own timeline
+    assert.ok(c.rendered >= c.time && c.rendered - c.time < 0.05, `cue at ${t} s played ${c.rendered - c.time} s after`);
+  });
+  near(played[0].volume, loudnessFromImpulse(1300), 1e-12);
+});

@@ -295,13 +295,7 @@ class App {
     this.bodies = v.inRoom ? this.model.render(now) : [];
     const animating = v.inRoom && this.model.animating();
     this.syncAim(now);
-    // One sound of each kind per frame, the loudest: a break's burst of clicks in the same
-    // 16 ms is heard as one click, and the audio thread is spared dozens of voices.
-    const loudest = {};
-    for (const cue of this.model.takeSounds()) {
-      if (!loudest[cue.kind] || cue.volume > loudest[cue.kind].volume) loudest[cue.kind] = cue;
-    }
-    for (const cue of Object.values(loudest)) this.sound.play(cue);
+    for (const cue of this.model.takeSounds()) this.sound.play(cue);
     const o = this.overlays();
     const key = [v.inRoom, this.model.version, this.aim.phase, this.aim.x, this.aim.pointer.x,
       this.aim.pointer.y, o.placing?.striker.x, this.renderer.side, this.model.flipped()].join('|');
@@ -353,6 +347,7 @@ class App {
       aim: { phase: this.aim.phase, x: this.aim.x, y: this.aim.striker().y, legal: this.aim.placement.legal },
       shotSentTurn: this.shotSentTurn, shots: this.model.shots, lastShot: this.model.lastShot,
       frames: this.renderer.frames, paints: this.renderer.painter.paints, woodMs: this.renderer.painter.woodMs, resizes: this.resizes.slice(), sounds: this.sound.played,
+      cues: { heard: this.model.cuesHeard, late: this.model.cues.late, merged: this.model.cuesMerged },
       muted: this.sound.muted, audio: this.sound.context ? this.sound.context.state : 'none',
       hash: window.location.hash,
     };

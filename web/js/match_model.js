@@ -4,8 +4,10 @@
 // short messages for the player.
 //
 // Snapshot and event times are seconds since the start of their shot, so each shot's times are
-// placed on one continuous timeline: the first snapshot of a turn starts where the local clock
-// (less the base network transit) is when it arrives. Physics events of a turn whose first
+// placed on one continuous timeline: the first snapshot of a shot starts where the local clock
+// (less the base network transit) is when it arrives. A keyframe at t = 0 (the board at rest, on
+// a join, a resume or a new game) is placed there too but fixes nothing: the turn's shot starts
+// its own t = 0 only when it is played, maybe minutes later. Physics events of a turn whose first
 // snapshot has not arrived yet wait for it. Local times in s (performance.now() / 1000).
 
 import { makeBoardGeometry, PHYSICS } from './board_geometry.js';
@@ -62,6 +64,8 @@ export class MatchModel {
     this.kinds = new Map();
     this.turnOffsets = new Map(); // turn -> continuous time of the shot's t = 0
     this.pendingCues = [];
+    this.cuesHeard = 0; // audible physics events received (collision, cushion, pocket)
+    this.cuesMerged = 0; // cues played as one with another of their kind at the same time
     this.lastProtoSeq = null;
     this.nextSeq = 1;
     this.lastRender = 0;
@@ -159,7 +163,10 @@ export class MatchModel {
       this.view.phase = 'moving';
       this.version += 1;
     }
-    let offset = this.turnOffsets.get(m.turn);
+    // A keyframe at t = 0 is the board at rest (a join, a resume or a new game before the turn's
+    // shot): the shot's own t = 0 comes later, when it is played, so it fixes no offset.
+    const atRest = m.keyframe && m.t <= 0;
+    let offset = atRest ? this.continuousNow(localS) : this.turnOffsets.get(m.turn);
     if (offset === undefined) {
       offset = this.continuousNow(localS) - m.t;
       this.turnOffsets.set(m.turn, offset);
@@ -189,6 +196,7 @@ export class MatchModel {
 
   cue(turn, t, kind, volume) {
     if (volume <= 0) return;
+    this.cuesHeard += 1;
     const offset = this.turnOffsets.get(turn);
     if (offset === undefined) {
       this.pendingCues.push({ turn, t, cue: { time: 0, kind, volume } });
@@ -294,10 +302,18 @@ export class MatchModel {
     return bodies;
   }
 
+  // The cues due since the last call, each once; cues of one kind at the same event time (within
+  // 1 ms: a straight break hits two mirrored coins at once) are one sound, the loudest.
   takeSounds() {
-    const out = this.due;
+    const sounds = new Map();
+    for (const cue of this.due) {
+      const key = `${cue.kind}|${Math.round(cue.time * 1000)}`;
+      const same = sounds.get(key);
+      if (same) this.cuesMerged += 1;
+      if (!same || cue.volume > same.volume) sounds.set(key, cue);
+    }
     this.due = [];
-    return out;
+    return [...sounds.values()];
   }
 
   // True while a shot is still being played on screen.

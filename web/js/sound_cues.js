@@ -14,6 +14,7 @@ export class SoundCueQueue {
   constructor(capacity = 512) {
     this.capacity = capacity;
     this.cues = [];
+    this.late = 0; // cues dropped as late
   }
 
   push(cue) {
@@ -31,6 +32,7 @@ export class SoundCueQueue {
     const due = [];
     while (n < this.cues.length && this.cues[n].time <= renderTime) {
       if (renderTime - this.cues[n].time <= stale) due.push(this.cues[n]);
+      else this.late += 1;
       n += 1;
     }
     this.cues.splice(0, n);

@@ -5,7 +5,9 @@
 // deadline.
 //
 // Environment (set by tests/web/web.cmake): CARROM_SERVER, CARROM_BOT, CARROM_CLIENT (paths of
-// the built binaries), CARROM_CHROMIUM (default /usr/bin/chromium).
+// the built binaries), CARROM_CHROMIUM (default /usr/bin/chromium); CARROM_WEB_ROOT, when set,
+// makes every carrom-server serve that directory (`--web-root`) instead of its embedded copy, to
+// test an edit of web/ without a rebuild.
 
 import { spawn } from 'node:child_process';
 import { once } from 'node:events';
@@ -16,6 +18,7 @@ export const env = {
   bot: process.env.CARROM_BOT,
   client: process.env.CARROM_CLIENT,
   chromium: process.env.CARROM_CHROMIUM || '/usr/bin/chromium',
+  webRoot: process.env.CARROM_WEB_ROOT,
 };
 
 export const CHROMIUM_ARGS = [
@@ -79,7 +82,8 @@ export async function startChild(label, command, args, ready, timeoutMs = 15000)
 export async function startServer(args = []) {
   if (!env.server) throw new Error('CARROM_SERVER is not set');
   const child = await startChild('carrom-server', env.server,
-    ['--host', '127.0.0.1', '--port', '0', ...args], /listening on [\d.]+:(\d+)/);
+    ['--host', '127.0.0.1', '--port', '0', ...(env.webRoot ? ['--web-root', env.webRoot] : []), ...args],
+    /listening on [\d.]+:(\d+)/);
   const port = Number(child.match[1]);
   return { port, ws: `ws://127.0.0.1:${port}/`, child };
 }
