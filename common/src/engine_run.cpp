@@ -116,7 +116,6 @@ void ExactEngine::Impl::load(std::span<const Body> bodies) {
     }
     now = 0.0;
     u_now = 1.0;
-    travel_now = 0.0;
     now_stale = false;
     result.bodies.assign(bodies.begin(), bodies.end());
     result.events.clear();
@@ -253,11 +252,9 @@ void ExactEngine::Impl::remember_resting_layout() {
 }
 
 void ExactEngine::Impl::run_events() {
-    // The key of the end time: 0 (or -infinity with travel keys) when there is no end time.
+    // The key of the end time: 0 when there is no end time. With travel keys it is measured
+    // from now, so it is recomputed for each event.
     double key_until = std::exp(-k * options.until_s);
-    if (travel_keys) {
-        key_until = -travel_factor_s(k, options.until_s);
-    }
     std::vector<int>& seeds = event_seeds;
     long pops = 0;
     while (!next.empty()) {
@@ -266,6 +263,9 @@ void ExactEngine::Impl::run_events() {
             break;
         }
         const Prediction event = next[first];
+        if (travel_keys) {
+            key_until = -(u_now * travel_factor_s(k, options.until_s - now));
+        }
         if (event.key < key_until) {
             advance(key_until);
             now = options.until_s; // exact, rather than recomputed from the key

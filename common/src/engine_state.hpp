@@ -48,9 +48,11 @@ enum class Next : std::uint8_t { None, Pair, Cushion, Pocket, Stop };
 
 // Events are keyed by u = e^(-k t), which decreases with time: a prediction made at `now` for
 // travel factor s has u = u_now (1 - k s), with no logarithm. Below kTravelKeyDampingPerS the
-// keys are -S instead, S = (1 - e^(-k t)) / k the travel factor since t = 0 (S = t when k = 0):
-// a prediction has key -(S_now + u_now s). u resolves time only to about 1e-16 / k s, which is
-// too coarse for small k (and nothing at k = 0); S resolves it to the rounding of S itself.
+// keys are -(S - S_now) instead, S = (1 - e^(-k t)) / k the travel factor since t = 0 (S = t
+// when k = 0), measured from the current time: a prediction has key -u_now s, and every advance
+// adds the travel it moved to every key. u resolves time only to about 1e-16 / k s, which is too
+// coarse for small k (and nothing at k = 0); relative travel factors resolve it to the rounding
+// of the time to the event, however long the run has lasted.
 // Either way the earliest event has the largest key; kNoEvent is below every real key.
 inline constexpr double kNoEvent = -std::numeric_limits<double>::infinity();
 
@@ -162,30 +164,21 @@ struct ExactEngine::Impl {
     std::size_t earliest() const;
     void advance(double key);
 
-    // The current time is u_now = e^(-k now) (with travel_keys: travel_now = S(now)). `now` (s)
-    // is derived from it only when an event or segment is recorded or the run ends (now_stale:
-    // not yet derived since the last advance).
-    double now = 0.0;        // s
-    double u_now = 1.0;      // e^(-k now)
-    double travel_now = 0.0; // S(now) = (1 - e^(-k now)) / k, s; kept only with travel_keys
+    // The current time is u_now = e^(-k now). `now` (s) is derived from it only when an event or
+    // segment is recorded or the run ends (now_stale: not yet derived since the last advance).
+    // With travel_keys, advance keeps `now` current itself (the sum of the steps' times).
+    double now = 0.0;   // s
+    double u_now = 1.0; // e^(-k now)
     bool now_stale = false;
     double time_now() {
         if (now_stale) {
-            if (!travel_keys) {
-                now = -std::log(u_now) * inv_k;
-            } else {
-                // t = -ln(1 - k S) / k = S (-ln(1 - x) / x), x = k S, which is 1 at x = 0.
-                const double x = k * travel_now;
-                now = x == 0.0 ? travel_now : travel_now * (-std::log1p(-x) / x);
-            }
+            now = -std::log(u_now) * inv_k;
             now_stale = false;
         }
         return now;
     }
     // The key of the time at which the travel factor from now is s (s >= 0).
-    double key_after(double s) const {
-        return travel_keys ? -(travel_now + u_now * s) : u_now * (1.0 - k * s);
-    }
+    double key_after(double s) const { return travel_keys ? -(u_now * s) : u_now * (1.0 - k * s); }
     // Travel factor s at which body i (moving) falls to the stop speed.
     double stop_s(std::size_t i) const { return (1.0 - config.stop_speed_px_s / speed[i]) * inv_k; }
 

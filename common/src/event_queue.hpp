@@ -51,11 +51,11 @@ inline void ExactEngine::Impl::advance(double key) {
         decay = key / u_now;
         s = (1.0 - decay) * inv_k;
     } else {
-        // key = -(S_now + u_now s): S(now + dt) = S_now + e^(-k now) (1 - e^(-k dt)) / k.
-        if (-key <= travel_now) {
+        // key = -(S(now + dt) - S(now)) = -e^(-k now) (1 - e^(-k dt)) / k = -u_now s.
+        if (key >= 0.0) {
             return;
         }
-        s = (-key - travel_now) / u_now;
+        s = -key / u_now;
         decay = 1.0 - k * s;
     }
     // Raw pointers: the stores cannot alias the vectors themselves, so nothing is reloaded.
@@ -92,11 +92,23 @@ inline void ExactEngine::Impl::advance(double key) {
     }
     if (!travel_keys) {
         u_now = key;
-    } else {
-        u_now *= decay;
-        travel_now = -key;
+        now_stale = true;
+        return;
     }
-    now_stale = true;
+    u_now *= decay;
+    // dt = -ln(1 - k s) / k = s (-ln(1 - x) / x), x = k s, which is 1 at x = 0 (and for a
+    // subnormal x, where log1p(-x) == -x).
+    const double x = k * s;
+    now += x == 0.0 ? s : s * (-std::log1p(-x) / x);
+    // Keys are measured from now: every one moves up by the travel just made (-key). A key
+    // of kNoEvent stays -infinity.
+    double* const kp = keys.data();
+    for (std::size_t i = 0; i < keys.size(); ++i) {
+        kp[i] -= key;
+    }
+    for (detail::Prediction& prediction : next) {
+        prediction.key -= key;
+    }
 }
 
 } // namespace carrom
