@@ -45,8 +45,9 @@ async function stopChild(child) {
 }
 
 // Starts a child in its own process group; resolves when a stdout or stderr line matches `ready`.
-export async function startChild(label, command, args, ready, timeoutMs = 15000) {
-  const child = spawn(command, args, { detached: true, stdio: ['ignore', 'pipe', 'pipe'] });
+// `childEnv` replaces the child's environment (default: this process's).
+export async function startChild(label, command, args, ready, timeoutMs = 15000, childEnv = process.env) {
+  const child = spawn(command, args, { detached: true, stdio: ['ignore', 'pipe', 'pipe'], env: childEnv });
   children.add(child);
   child.exited = new Promise((res) => { child.on('exit', (code, signal) => res(code ?? signal)); });
   child.on('exit', () => children.delete(child));
