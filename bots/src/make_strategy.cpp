@@ -9,6 +9,25 @@ namespace {
 constexpr int kSamplingCandidates = 200; // per decision (about 2 ms on one core)
 } // namespace
 
+std::unique_ptr<Strategy> make_level_strategy(proto::BotLevel level, std::uint64_t seed) {
+    GreedyOptions greedy;
+    greedy.seed = seed;
+    switch (level) {
+    case proto::BotLevel::Random:
+        return std::make_unique<RandomStrategy>(seed);
+    case proto::BotLevel::Easy:
+        greedy.level = SkillLevel::Easy;
+        break;
+    case proto::BotLevel::Medium:
+        greedy.level = SkillLevel::Medium;
+        break;
+    case proto::BotLevel::Hard:
+        greedy.level = SkillLevel::Hard;
+        break;
+    }
+    return std::make_unique<GreedyStrategy>(greedy);
+}
+
 std::vector<std::string> strategy_names() {
     return {"random", "scripted", "sampling", "greedy"};
 }

@@ -1,8 +1,6 @@
 #include "auto_player.hpp"
 
-#include "carrom/bots/greedy_strategy.hpp"
 #include "carrom/bots/match_view.hpp"
-#include "carrom/bots/random_strategy.hpp"
 #include "carrom/client/aim_controller.hpp"
 #include "carrom/scene.hpp"
 
@@ -12,25 +10,6 @@
 
 namespace carrom::client::app {
 namespace {
-
-std::unique_ptr<bots::Strategy> make_strategy(proto::BotLevel level, std::uint64_t seed) {
-    bots::GreedyOptions options;
-    options.seed = seed;
-    switch (level) {
-    case proto::BotLevel::Random:
-        return std::make_unique<bots::RandomStrategy>(seed);
-    case proto::BotLevel::Easy:
-        options.level = bots::SkillLevel::Easy;
-        break;
-    case proto::BotLevel::Medium:
-        options.level = bots::SkillLevel::Medium;
-        break;
-    case proto::BotLevel::Hard:
-        options.level = bots::SkillLevel::Hard;
-        break;
-    }
-    return std::make_unique<bots::GreedyStrategy>(options);
-}
 
 sf::Event mouse(sf::Event::EventType type, const ScreenMapping& mapping, Vec2 board_px) {
     const Vec2 s = mapping.to_screen(board_px);
@@ -49,7 +28,7 @@ sf::Event mouse(sf::Event::EventType type, const ScreenMapping& mapping, Vec2 bo
 } // namespace
 
 AutoPlayer::AutoPlayer(proto::BotLevel level, std::uint64_t seed)
-    : strategy_(make_strategy(level, seed)) {}
+    : strategy_(bots::make_level_strategy(level, seed)) {}
 
 std::optional<sf::Event> AutoPlayer::next_event() {
     if (!busy()) {

@@ -13,20 +13,6 @@ namespace carrom::server {
 
 namespace {
 
-std::optional<bots::SkillLevel> skill_of(proto::BotLevel level) {
-    switch (level) {
-    case proto::BotLevel::Easy:
-        return bots::SkillLevel::Easy;
-    case proto::BotLevel::Medium:
-        return bots::SkillLevel::Medium;
-    case proto::BotLevel::Hard:
-        return bots::SkillLevel::Hard;
-    case proto::BotLevel::Random:
-        break;
-    }
-    return std::nullopt;
-}
-
 // A bot that queued longer than its budget still thinks this long (its first candidates).
 constexpr std::chrono::milliseconds kLeastThink{10};
 
@@ -67,16 +53,7 @@ BotFactory make_strategy_bot_factory(std::uint64_t seed, std::chrono::millisecon
     auto next_seed = std::make_shared<std::atomic<std::uint64_t>>(seed);
     return [next_seed, think](proto::BotLevel level) -> std::shared_ptr<room::BotBrain> {
         const std::uint64_t bot_seed = next_seed->fetch_add(1);
-        std::unique_ptr<bots::Strategy> strategy;
-        if (const auto skill = skill_of(level)) {
-            bots::GreedyOptions options;
-            options.level = *skill;
-            options.seed = bot_seed;
-            strategy = std::make_unique<bots::GreedyStrategy>(options);
-        } else {
-            strategy = std::make_unique<bots::RandomStrategy>(bot_seed);
-        }
-        return std::make_shared<StrategyBrain>(std::move(strategy), think);
+        return std::make_shared<StrategyBrain>(bots::make_level_strategy(level, bot_seed), think);
     };
 }
 

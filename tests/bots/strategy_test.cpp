@@ -154,5 +154,13 @@ TEST(MakeStrategy, KnownNamesAndAClearErrorOtherwise) {
               "Unknown strategy 'genius' (known: random, scripted, sampling, greedy).");
 }
 
+// The protocol's bot levels: random plays at random, the others search (the greedy strategy).
+TEST(MakeStrategy, BotLevelsOfTheProtocol) {
+    EXPECT_EQ(make_level_strategy(proto::BotLevel::Random, 1)->name(), "random");
+    for (auto level : {proto::BotLevel::Easy, proto::BotLevel::Medium, proto::BotLevel::Hard}) {
+        EXPECT_EQ(make_level_strategy(level, 1)->name(), "greedy");
+    }
+}
+
 } // namespace
 } // namespace carrom::bots

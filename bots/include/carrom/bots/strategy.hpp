@@ -3,6 +3,7 @@
 // rules' MatchState (plain data), so the same strategy plays in carrom-bot over the network, in
 // tests, or inside the server (issue 7's search strategies implement this same interface).
 
+#include "carrom/proto/types.hpp"
 #include "carrom/rules/match_state.hpp"
 #include "carrom/scene.hpp"
 
@@ -57,5 +58,8 @@ struct StrategyOptions {
 std::variant<std::unique_ptr<Strategy>, std::string> make_strategy(const StrategyOptions& options);
 // The names make_strategy knows.
 std::vector<std::string> strategy_names();
+// The strategy of a bot level of the protocol, as the server's bots play it: random, or greedy
+// at the easy, medium or hard skill level.
+std::unique_ptr<Strategy> make_level_strategy(proto::BotLevel level, std::uint64_t seed);
 
 } // namespace carrom::bots
