@@ -214,7 +214,8 @@ private:
         const bool text = ws_.got_text();
         const auto data = buffer_.cdata();
         const std::string_view frame(static_cast<const char*>(data.data()), data.size());
-        auto decoded = text ? proto::decode_server(frame) : proto::Decoded<proto::ServerMessage>{};
+        auto decoded =
+            text ? proto::decode_server(frame) : proto::DecodedMessage<proto::ServerMessage>{};
         buffer_.consume(buffer_.size());
         {
             std::lock_guard lock(mutex_);

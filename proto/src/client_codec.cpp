@@ -148,7 +148,7 @@ void decode_body(FieldReader& r, Ping& m) {
     m.nonce = r.integer("nonce", 0, kMaxNonce);
 }
 
-template <class M> Decoded<ClientMessage> decode_as(const json& value) {
+template <class M> DecodedMessage<ClientMessage> decode_as(const json& value) {
     FieldReader reader(value, "");
     M message;
     decode_body(reader, message);
@@ -159,7 +159,7 @@ template <class M> Decoded<ClientMessage> decode_as(const json& value) {
 }
 
 template <std::size_t I = 0>
-Decoded<ClientMessage> decode_index(std::size_t index, const json& value) {
+DecodedMessage<ClientMessage> decode_index(std::size_t index, const json& value) {
     if constexpr (I < std::variant_size_v<ClientMessage>) {
         if (index == I) {
             return decode_as<std::variant_alternative_t<I, ClientMessage>>(value);
@@ -182,7 +182,7 @@ json to_json(const ClientMessage& message) {
     return out;
 }
 
-Decoded<ClientMessage> client_from_json(const json& value) {
+DecodedMessage<ClientMessage> client_from_json(const json& value) {
     const auto type = detail::message_type(value);
     if (!type.ok()) {
         return {std::nullopt, type.error};

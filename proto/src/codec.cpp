@@ -88,7 +88,7 @@ std::string encode(const ServerMessage& message) {
     return dump(to_json(message));
 }
 
-Decoded<ClientMessage> decode_client(std::string_view text, std::size_t max_bytes) {
+DecodedMessage<ClientMessage> decode_client(std::string_view text, std::size_t max_bytes) {
     Parsed parsed = parse_text(text, max_bytes);
     if (!parsed.error.code.empty()) {
         return {std::nullopt, std::move(parsed.error)};
@@ -96,7 +96,7 @@ Decoded<ClientMessage> decode_client(std::string_view text, std::size_t max_byte
     return client_from_json(parsed.value);
 }
 
-Decoded<ServerMessage> decode_server(std::string_view text, std::size_t max_bytes) {
+DecodedMessage<ServerMessage> decode_server(std::string_view text, std::size_t max_bytes) {
     Parsed parsed = parse_text(text, max_bytes);
     if (!parsed.error.code.empty()) {
         return {std::nullopt, std::move(parsed.error)};

@@ -448,7 +448,7 @@ void decode_body(FieldReader& r, Pong& m) {
     m.server_time_ms = r.integer("server_time_ms", 0, kMaxTimeMs);
 }
 
-template <class M> Decoded<ServerMessage> decode_as(const json& value) {
+template <class M> DecodedMessage<ServerMessage> decode_as(const json& value) {
     FieldReader reader(value, "");
     M message;
     decode_body(reader, message);
@@ -459,7 +459,7 @@ template <class M> Decoded<ServerMessage> decode_as(const json& value) {
 }
 
 template <std::size_t I = 0>
-Decoded<ServerMessage> decode_index(std::size_t index, const json& value) {
+DecodedMessage<ServerMessage> decode_index(std::size_t index, const json& value) {
     if constexpr (I < std::variant_size_v<ServerMessage>) {
         if (index == I) {
             return decode_as<std::variant_alternative_t<I, ServerMessage>>(value);
@@ -486,7 +486,7 @@ json to_json(const ServerMessage& message) {
     return out;
 }
 
-Decoded<ServerMessage> server_from_json(const json& value) {
+DecodedMessage<ServerMessage> server_from_json(const json& value) {
     const auto type = detail::message_type(value);
     if (!type.ok()) {
         return {std::nullopt, type.error};

@@ -19,7 +19,9 @@
 
 namespace carrom::proto {
 
-template <class T> struct Decoded {
+// A decoded wire message or the protocol error that refused it. (Documents and scenes decode
+// to scene_json.hpp's Decoded, which carries a JsonError instead.)
+template <class T> struct DecodedMessage {
     std::optional<T> message; // set on success
     Error error;              // set on failure (code non-empty)
     bool ok() const { return message.has_value(); }
@@ -29,10 +31,10 @@ template <class T> struct Decoded {
 std::string encode(const ClientMessage& message);
 std::string encode(const ServerMessage& message);
 
-Decoded<ClientMessage> decode_client(std::string_view text,
-                                     std::size_t max_bytes = kMaxClientMessageBytes);
-Decoded<ServerMessage> decode_server(std::string_view text,
-                                     std::size_t max_bytes = kMaxServerMessageBytes);
+DecodedMessage<ClientMessage> decode_client(std::string_view text,
+                                            std::size_t max_bytes = kMaxClientMessageBytes);
+DecodedMessage<ServerMessage> decode_server(std::string_view text,
+                                            std::size_t max_bytes = kMaxServerMessageBytes);
 
 // Builds an error message's text directly (for paths that must not fail).
 std::string encode_error(std::string_view code, std::string_view message);

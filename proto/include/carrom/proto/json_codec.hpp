@@ -12,7 +12,7 @@ nlohmann::json to_json(const ClientMessage& message);
 nlohmann::json to_json(const ServerMessage& message);
 
 // Validating decoders from an already-parsed value (never throw).
-Decoded<ClientMessage> client_from_json(const nlohmann::json& value);
-Decoded<ServerMessage> server_from_json(const nlohmann::json& value);
+DecodedMessage<ClientMessage> client_from_json(const nlohmann::json& value);
+DecodedMessage<ServerMessage> server_from_json(const nlohmann::json& value);
 
 } // namespace carrom::proto
