@@ -91,28 +91,61 @@ private:
             if (ec) {
                 return fail(lost_text(ec));
             }
-            http::async_read(stream_, buffer_, parser_,
-                             [this](beast::error_code e, std::size_t) { on_read(e); });
+            http::async_read_header(stream_, buffer_, parser_,
+                                    [this](beast::error_code e, std::size_t) { on_header(e); });
         });
     }
 
-    void on_read(beast::error_code ec) {
-        if (ec == http::error::body_limit ||
-            (!ec && parser_.get().body().size() > limits_.max_body_bytes)) {
-            return fail(url_.authority() + " sent more than " + size_text(limits_.max_body_bytes) +
-                        " for " + url_.target + ".");
+    // The parser's own body limit is set too, but the body is also read piece by piece and
+    // measured here, so that no answer (with a length, chunked, or until the end of the stream)
+    // is held beyond the limit plus one read.
+    bool over_limit() const {
+        const auto length = parser_.content_length();
+        return (length && *length > limits_.max_body_bytes) ||
+               parser_.get().body().size() > limits_.max_body_bytes;
+    }
+
+    void too_large() {
+        fail(url_.authority() + " sent more than " + size_text(limits_.max_body_bytes) + " for " +
+             url_.target + ".");
+    }
+
+    void on_header(beast::error_code ec) {
+        if (ec == http::error::body_limit) {
+            return too_large();
         }
         if (ec) {
             return fail(lost_text(ec));
         }
-        auto& response = parser_.get();
-        const unsigned status = response.result_int();
-        if (status != 200) {
-            return fail(url_.authority() + url_.target + " answered " + std::to_string(status) +
-                        " " + std::string(response.reason().data(), response.reason().size()) +
-                        ".");
+        const auto& response = parser_.get();
+        if (response.result_int() != 200) { // the body (an error page) is not needed
+            return fail(url_.authority() + url_.target + " answered " +
+                        std::to_string(response.result_int()) + " " +
+                        std::string(response.reason().data(), response.reason().size()) + ".");
         }
-        result_ = HttpResponse{status, std::move(response.body())};
+        if (over_limit()) {
+            return too_large();
+        }
+        read_body();
+    }
+
+    void read_body() {
+        if (parser_.is_done()) {
+            return done();
+        }
+        http::async_read_some(stream_, buffer_, parser_, [this](beast::error_code ec, std::size_t) {
+            if (ec == http::error::body_limit || (!ec && over_limit())) {
+                return too_large();
+            }
+            if (ec) {
+                return fail(lost_text(ec));
+            }
+            read_body();
+        });
+    }
+
+    void done() {
+        result_ = HttpResponse{parser_.get().result_int(), std::move(parser_.get().body())};
         beast::error_code ignored;
         stream_.socket().shutdown(tcp::socket::shutdown_both, ignored);
     }
