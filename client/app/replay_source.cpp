@@ -61,8 +61,9 @@ std::variant<ReplayModel, std::string> load_replay(const std::string& source) {
     auto loaded = ReplayModel::load_text(std::get<0>(text));
     if (auto* error = std::get_if<proto::JsonError>(&loaded)) {
         std::ostringstream line;
-        line << source << ": " << (error->path.empty() ? "" : error->path + ": ") << error->message
-             << " (" << error->code << ")";
+        line << (source == "-" ? "standard input" : source) << ": "
+             << (error->path.empty() ? "" : error->path + ": ") << error->message << " ("
+             << error->code << ")";
         return Result{std::in_place_index<1>, line.str()};
     }
     return Result{std::in_place_index<0>, std::get<ReplayModel>(std::move(loaded))};

@@ -125,9 +125,9 @@ void ReplayView::handle(const sf::Event& e) {
     }
 }
 
-// The HUD follows the replay: where what is shown changes, the room state of that moment; for
-// every input whose motion ended since (in play or jumped over forwards), first the shot result
-// and the rule events (fouls, queen, dues, board and game end) a spectator received then.
+// The HUD follows the replay: where what is shown changes, the room state of that moment; when
+// an input's motion ended since (in play or jumped over forwards), first the shot result and the
+// rule events (fouls, queen, dues, board and game end) a spectator received then.
 void ReplayView::sync_hud(double now) {
     const double t = replay_.time_s();
     const Shown shown = shown_at(t);
@@ -135,15 +135,17 @@ void ReplayView::sync_hud(double now) {
         return;
     }
     const auto done = [](const Shown& s) { return s.part == 2 ? s.turn + 1 : s.turn; };
-    if (shown_) {
-        for (std::size_t i = done(*shown_); i < done(shown); ++i) {
-            for (const proto::ServerMessage& m : replay_.outcome_messages(i)) {
-                hud_model_.handle(m, now);
-            }
+    if (!shown_) { // the first frame: from the start (--replay-at may open the replay anywhere)
+        hud_model_.handle(replay_.room_state_at(0.0), now);
+    }
+    // Only the newest outcome's messages when several were jumped over (the room state carries
+    // the scores; older messages would only bury the board).
+    if (done(shown) > (shown_ ? done(*shown_) : 0)) {
+        for (const proto::ServerMessage& m : replay_.outcome_messages(done(shown) - 1)) {
+            hud_model_.handle(m, now);
         }
     }
     hud_model_.handle(replay_.room_state_at(t), now);
-    hud_model_.render(now); // the coins each seat has left
     shown_ = shown;
 }
 
@@ -171,6 +173,7 @@ void ReplayView::draw(double now) {
         }
     }
     board_painter_.draw_pieces(window_, blitter_, m, bodies);
+    hud_model_.render(now); // only for the coins each seat has left (the pieces are the replay's)
     hud_.draw(window_, blitter_, layout_, hud_model_,
               ConnectionLine{status(), replay_.mismatches() == 0, std::nullopt}, now);
     const Rect& b = layout_.board;

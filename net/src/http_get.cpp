@@ -173,6 +173,9 @@ private:
 
 std::variant<WsUrl, std::string> parse_http_url(std::string_view url) {
     constexpr std::string_view kScheme = "http://";
+    if (url.substr(0, 8) == "https://") {
+        return "The address " + quoted(url) + " uses https, which is not supported: use http://.";
+    }
     if (url.substr(0, kScheme.size()) != kScheme) {
         return "The address " + quoted(url) + " must start with http://.";
     }

@@ -150,6 +150,19 @@ TEST(ReplayCli, AJournalFilePlaysToTheEndAndWritesItsReplayedFinalState) {
     expect_final_state(final_state, short_journal());
 }
 
+// --replay-at past the end opens the replay finished: the same final state, game_end's reason
+// included (the outcomes jumped over reach the HUD too).
+TEST(ReplayCli, OpenedAtTheEndItWritesTheSameFinalState) {
+    TempDir dir("end");
+    write_file(dir.path / "match.json", proto::journal_to_json(short_journal()).dump());
+    const fs::path final_state = dir.path / "final.json";
+    const ClientRun run = run_client({"--replay", (dir.path / "match.json").string(), "--replay-at",
+                                      "100000", "--final-state", final_state.string(), "--timeout",
+                                      "60", "--width", "400", "--height", "400"});
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    expect_final_state(final_state, short_journal());
+}
+
 TEST(ReplayCli, AJournalFromAServersHttpPortPlaysTheSame) {
     TempDir dir("url");
     write_file(dir.path / "index.html", "<!doctype html><title>carrom</title>");
@@ -271,7 +284,7 @@ TEST(HttpGetErrors, ARefusedConnectionAndASilentListenerAreSentences) {
 
     got = net::http_get("https://127.0.0.1/x", {});
     ASSERT_TRUE(std::holds_alternative<std::string>(got));
-    EXPECT_NE(std::get<std::string>(got).find("must start with http://"), std::string::npos);
+    EXPECT_NE(std::get<std::string>(got).find("https, which is not supported"), std::string::npos);
 }
 
 TEST(HttpGetErrors, AddressesParseWithPort80ByDefault) {
@@ -286,6 +299,7 @@ TEST(HttpGetErrors, AddressesParseWithPort80ByDefault) {
     EXPECT_EQ(std::get<net::WsUrl>(url).port, 7777);
     EXPECT_EQ(std::get<net::WsUrl>(url).target, "/");
     EXPECT_TRUE(std::holds_alternative<std::string>(net::parse_http_url("http://:80/")));
+    EXPECT_TRUE(std::holds_alternative<std::string>(net::parse_http_url("ws://h:80/")));
     EXPECT_TRUE(std::holds_alternative<std::string>(net::parse_http_url("http://h:99999/")));
 }
 
