@@ -201,6 +201,17 @@ TEST(ReplayCli, JournalsItCannotReplayExitTwoWithOneLine) {
                    proto::check_versions(other.created)->message);
 
     expect_refused({"--replay", (dir.path / "missing.json").string()}, "cannot read");
+    // "-": standard input.
+    {
+        ChildProcess client({"/bin/sh", "-c",
+                             std::string(CARROM_CLIENT_PATH) + " --replay - < " +
+                                 (dir.path / "broken.json").string()});
+        EXPECT_EQ(client.wait_exit(Clock::now() + 30s).value_or(-1), 2);
+        const auto& err = client.lines(ChildProcess::Stream::Err);
+        ASSERT_EQ(err.size(), 1U);
+        EXPECT_EQ(err[0].rfind("carrom-client: standard input: ", 0), 0U) << err[0];
+        EXPECT_NE(err[0].find("(malformed_json)"), std::string::npos) << err[0];
+    }
     expect_refused({"--replay", "http://127.0.0.1:1/m-0001"}, "connection refused");
 }
 
