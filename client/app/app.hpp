@@ -37,6 +37,10 @@ struct AppOptions {
     // Non-empty: when the game is over and drawn at rest, write its final state there as JSON
     // (board_report.hpp) and exit with code 0.
     std::string final_state_path;
+    // carrom-client --replay (replay_view.hpp): the playback speed (0.25 to 4) and, if >= 0, the
+    // replay time to start at, paused.
+    double replay_speed = 1.0;
+    double replay_at_s = -1.0;
 };
 
 // Runs until the window closes; returns the process exit code.

@@ -7,6 +7,8 @@
 
 #include "app.hpp"
 #include "network_link.hpp"
+#include "replay_source.hpp"
+#include "replay_view.hpp"
 
 #include "carrom/proto/limits.hpp"
 #include "carrom/proto/types.hpp"
@@ -90,7 +92,36 @@ int main(int argc, char** argv) {
     cli.add_option("--final-state", options.final_state_path,
                    "When the game is over and drawn at rest, write its final state (room, "
                    "winner, reason, scores, pieces) as JSON to this file and exit");
+    std::string replay;
+    auto* replay_opt = cli.add_option(
+        "--replay", replay,
+        "Play back a match journal: http://HOST:PORT/matches/ID, a file, or - for stdin");
+    replay_opt->excludes(create_flag)
+        ->excludes(join_opt)
+        ->excludes(spectate_opt)
+        ->excludes(quick_flag)
+        ->excludes(vs_bot_opt);
+    cli.add_option("--replay-speed", options.replay_speed, "Replay speed, 0.25 to 4")
+        ->capture_default_str()
+        ->check(CLI::Range(0.25, 4.0));
+    cli.add_option("--replay-at", options.replay_at_s,
+                   "Start the replay paused at this replay time, seconds")
+        ->check(CLI::Range(0.0, 1e9));
     CLI11_PARSE(cli, argc, argv);
+
+    if (!replay.empty()) {
+        auto loaded = carrom::client::app::load_replay(replay);
+        if (auto* problem = std::get_if<std::string>(&loaded)) {
+            std::cerr << "carrom-client: " << *problem << "\n";
+            return 2;
+        }
+        auto& model = std::get<carrom::client::ReplayModel>(loaded);
+        if (model.mismatches() > 0) {
+            std::cerr << "carrom-client: warning: " << model.mismatches()
+                      << " input(s) of the journal replay to another state than it recorded\n";
+        }
+        return carrom::client::app::run_replay(options, std::move(model));
+    }
 
     carrom::proto::RuleSet rules{};
     if (!carrom::proto::parse(rule_set, rules)) {

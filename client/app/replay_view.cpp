@@ -1,0 +1,277 @@
+#include "replay_view.hpp"
+
+#include "blitter.hpp"
+#include "board_painter.hpp"
+#include "carrom/client/board_report.hpp"
+#include "carrom/client/match_model.hpp"
+#include "carrom/client/screen_mapping.hpp"
+#include "draw_util.hpp"
+#include "font.hpp"
+#include "hud_painter.hpp"
+#include "text.hpp"
+
+#include <SFML/Graphics.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <optional>
+
+namespace carrom::client::app {
+
+namespace {
+
+std::string speed_text(double speed) {
+    char text[16];
+    std::snprintf(text, sizeof text, "%gx", speed);
+    return text;
+}
+
+class ReplayView {
+public:
+    ReplayView(const AppOptions& options, ReplayModel model, const sf::Font& font)
+        : options_(options), replay_(std::move(model)), physics_(replay_.created().physics),
+          hud_model_(physics_), board_painter_(make_board_geometry(physics_)), hud_(font) {
+        replay_.set_speed(options.replay_speed);
+        if (options.replay_at_s >= 0.0) {
+            replay_.seek(options.replay_at_s);
+            replay_.pause();
+        }
+    }
+
+    int run();
+
+private:
+    // What the HUD shows changes at these points: an input's lead, its motion, its rest board.
+    struct Shown {
+        std::size_t turn = 0;
+        int part = 0; // 0 lead, 1 motion, 2 rest, 3 the replay's end
+        bool operator==(const Shown&) const = default;
+    };
+    Shown shown_at(double t) const;
+    void handle(const sf::Event& e);
+    void sync_hud(double now);
+    void draw(double now);
+    std::string status() const;
+    int write_final_state();
+    bool save_screenshot();
+
+    AppOptions options_;
+    ReplayModel replay_;
+    PhysicsConfig physics_;
+    MatchModel hud_model_; // the HUD's view, fed what a spectator would have been told
+    Blitter blitter_;
+    BoardPainter board_painter_;
+    HudPainter hud_;
+    sf::RenderWindow window_;
+    ScreenLayout layout_;
+    std::optional<Shown> shown_;
+};
+
+ReplayView::Shown ReplayView::shown_at(double t) const {
+    if (replay_.turns().empty() || t >= replay_.duration_s()) {
+        return {replay_.turns().size(), 3};
+    }
+    const std::size_t i = replay_.turn_at(t);
+    const ReplayTurn& turn = replay_.turns()[i];
+    return {i, t < turn.motion_s ? 0 : (t < turn.rest_s ? 1 : 2)};
+}
+
+void ReplayView::handle(const sf::Event& e) {
+    if (e.type == sf::Event::Closed) {
+        window_.close();
+        return;
+    }
+    if (e.type == sf::Event::Resized) {
+        const float w = static_cast<float>(e.size.width);
+        const float h = static_cast<float>(e.size.height);
+        window_.setView(sf::View(sf::FloatRect(0.0f, 0.0f, w, h)));
+        layout_ = make_layout(w, h);
+        return;
+    }
+    if (e.type != sf::Event::KeyPressed) {
+        return;
+    }
+    switch (e.key.code) {
+    case sf::Keyboard::Space:
+        replay_.toggle_play();
+        break;
+    case sf::Keyboard::Right:
+        replay_.next_turn();
+        break;
+    case sf::Keyboard::Left:
+        replay_.previous_turn();
+        break;
+    case sf::Keyboard::Up:
+    case sf::Keyboard::Add:
+    case sf::Keyboard::Equal:
+        replay_.faster();
+        break;
+    case sf::Keyboard::Down:
+    case sf::Keyboard::Subtract:
+    case sf::Keyboard::Hyphen:
+        replay_.slower();
+        break;
+    case sf::Keyboard::Home:
+        replay_.restart();
+        break;
+    case sf::Keyboard::Escape:
+        window_.close();
+        break;
+    default:
+        break;
+    }
+}
+
+// The HUD follows the replay: where what is shown changes, the room state of that moment; when
+// an input's motion ended since (in play or jumped over forwards), first the shot result and the
+// rule events (fouls, queen, dues, board and game end) a spectator received then.
+void ReplayView::sync_hud(double now) {
+    const double t = replay_.time_s();
+    const Shown shown = shown_at(t);
+    if (shown_ && *shown_ == shown) {
+        return;
+    }
+    const auto done = [](const Shown& s) { return s.part == 2 ? s.turn + 1 : s.turn; };
+    if (!shown_) { // the first frame: from the start (--replay-at may open the replay anywhere)
+        hud_model_.handle(replay_.room_state_at(0.0), now);
+    }
+    // Only the newest outcome's messages when several were jumped over (the room state carries
+    // the scores; older messages would only bury the board).
+    if (done(shown) > (shown_ ? done(*shown_) : 0)) {
+        for (const proto::ServerMessage& m : replay_.outcome_messages(done(shown) - 1)) {
+            hud_model_.handle(m, now);
+        }
+    }
+    hud_model_.handle(replay_.room_state_at(t), now);
+    shown_ = shown;
+}
+
+std::string ReplayView::status() const {
+    std::string text = "Replay  \xc2\xb7  Stroke " + std::to_string(replay_.stroke_number()) +
+                       " / " + std::to_string(replay_.stroke_count()) + "  \xc2\xb7  " +
+                       speed_text(replay_.speed());
+    if (replay_.finished()) {
+        text += "  \xc2\xb7  End";
+    } else if (!replay_.playing()) {
+        text += "  \xc2\xb7  Paused";
+    }
+    return text;
+}
+
+void ReplayView::draw(double now) {
+    const ScreenMapping m = make_mapping(layout_.board, physics_.board_size_px, false);
+    const Rect band{0.0, layout_.top_bar.h, layout_.top_bar.w,
+                    layout_.bottom_bar.y - layout_.top_bar.h};
+    board_painter_.draw_board(window_, blitter_, m, band);
+    std::vector<RenderedBody> bodies;
+    for (const Body& b : replay_.bodies()) {
+        if (!b.pocketed) {
+            bodies.push_back(RenderedBody{b.id, b.kind, b.pos_px, 1.0, 1.0, false});
+        }
+    }
+    board_painter_.draw_pieces(window_, blitter_, m, bodies);
+    hud_model_.render(now); // only for the coins each seat has left (the pieces are the replay's)
+    hud_.draw(window_, blitter_, layout_, hud_model_,
+              ConnectionLine{status(), replay_.mismatches() == 0, std::nullopt}, now);
+    const Rect& b = layout_.board;
+    const auto size = static_cast<unsigned>(std::clamp(b.h * 0.022, 11.0, 18.0));
+    hud_.texts().draw(window_,
+                      "Space play/pause  \xc2\xb7  Left/Right stroke  \xc2\xb7  Up/Down speed  "
+                      "\xc2\xb7  Home restart",
+                      size, f(b.x + b.w / 2.0), f(b.y + b.h - size * 1.2), sf::Color(242, 232, 214),
+                      Align::Centre);
+}
+
+int ReplayView::write_final_state() {
+    std::ofstream out(options_.final_state_path);
+    out << final_state_json(hud_model_.view(), hud_model_.board_now()) << "\n";
+    if (!out) {
+        std::cerr << "carrom-client: could not write " << options_.final_state_path << "\n";
+        return 1;
+    }
+    std::cout << "final state " << options_.final_state_path << std::endl;
+    return 0;
+}
+
+bool ReplayView::save_screenshot() {
+    sf::Texture shot;
+    const sf::Vector2u size = window_.getSize();
+    if (!shot.create(size.x, size.y)) {
+        return false;
+    }
+    shot.update(window_);
+    return shot.copyToImage().saveToFile(options_.screenshot_path);
+}
+
+int ReplayView::run() {
+    window_.create(sf::VideoMode(options_.width, options_.height), "Carrom (replay)",
+                   sf::Style::Default, sf::ContextSettings(0, 0, options_.msaa));
+    if (!window_.isOpen()) {
+        std::cerr << "carrom-client: could not open a window (is DISPLAY set?)\n";
+        return 1;
+    }
+    window_.setVerticalSyncEnabled(true);
+    window_.setFramerateLimit(144);
+    const sf::Vector2u size = window_.getSize();
+    window_.setView(sf::View(sf::FloatRect(0.0f, 0.0f, f(size.x), f(size.y))));
+    layout_ = make_layout(size.x, size.y);
+    using Clock = std::chrono::steady_clock;
+    const auto started = Clock::now();
+    auto last = started;
+    int frame = 0;
+    while (window_.isOpen()) {
+        sf::Event event;
+        while (window_.pollEvent(event)) {
+            handle(event);
+        }
+        const auto now_tp = Clock::now();
+        replay_.advance(std::chrono::duration<double>(now_tp - last).count());
+        last = now_tp;
+        const double now = std::chrono::duration<double>(now_tp - started).count();
+        sync_hud(now);
+        draw(now);
+        ++frame;
+        if (!options_.final_state_path.empty() && replay_.finished()) {
+            const int code = write_final_state();
+            window_.close();
+            return code;
+        }
+        if (!options_.screenshot_path.empty() && frame >= options_.frames) {
+            const bool saved = save_screenshot();
+            window_.close();
+            if (!saved) {
+                std::cerr << "carrom-client: could not save " << options_.screenshot_path << "\n";
+                return 1;
+            }
+            std::cout << "saved " << options_.screenshot_path << std::endl;
+            return 0;
+        }
+        if (options_.timeout_s > 0.0 &&
+            std::chrono::duration<double>(now_tp - started).count() > options_.timeout_s) {
+            std::cerr << "carrom-client: gave up after " << options_.timeout_s << " s (replay at "
+                      << replay_.time_s() << " of " << replay_.duration_s() << " s)\n";
+            window_.close();
+            return 3;
+        }
+        window_.display();
+    }
+    return 0;
+}
+
+} // namespace
+
+int run_replay(const AppOptions& options, ReplayModel model) {
+    sf::Font font;
+    std::string error;
+    if (!load_font(font, error)) {
+        std::cerr << "carrom-client: " << error << "\n";
+        return 2;
+    }
+    ReplayView view(options, std::move(model), font);
+    return view.run();
+}
+
+} // namespace carrom::client::app
