@@ -1,6 +1,6 @@
 #pragma once
 // Bodies rounded as the server's shot stream rounds them (proto::quantise: 0.01 px and 0.01 px/s),
-// without the wire codec's header (whose Decoded clashes with scene_json.hpp's).
+// so that a replay shows what a live client was sent.
 
 #include "carrom/body.hpp"
 
