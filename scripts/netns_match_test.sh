@@ -75,7 +75,7 @@ ip -n "$ns_bots" link set "$veth_bots" up
 
 # The server, listening on its veth address only.
 ip netns exec "$ns_server" timeout "$limit" "$server_bin" --host "$server_ip" --port 0 \
-    --shot-clock 0 --log-level warn > "$work/server.out" 2> "$work/server.err" &
+    --shot-clock 0 --data none --log-level warn > "$work/server.out" 2> "$work/server.err" &
 server_pid=$!
 port=""
 for _ in $(seq 1 100); do

@@ -23,7 +23,7 @@ log_dir=$(mktemp -d)
 cleanup() { kill $(jobs -p) 2>/dev/null || true; wait 2>/dev/null || true; }
 trap cleanup EXIT
 
-"$bin/server/carrom-server" --host 127.0.0.1 --port 0 >"$log_dir/server.log" 2>&1 &
+"$bin/server/carrom-server" --host 127.0.0.1 --port 0 --data "$log_dir/carrom.db" >"$log_dir/server.log" 2>&1 &
 port=""
 for _ in $(seq 1 100); do
     port=$(sed -n 's/.*listening on 127\.0\.0\.1:\([0-9]*\).*/\1/p' "$log_dir/server.log" | head -n 1)

@@ -58,6 +58,10 @@ std::optional<SpawnedServer> spawn_server(const std::string& binary,
             binary,   "--host",      "127.0.0.1", "--port",
             "0",      "--log-level", "warn",      "--max-connections-per-address",
             "1000000"};
+        // No match store unless a --server-arg names one (--data PATH).
+        if (std::find(extra.begin(), extra.end(), "--data") == extra.end()) {
+            args.insert(args.end(), {"--data", "none"});
+        }
         args.insert(args.end(), extra.begin(), extra.end());
         std::vector<char*> argv;
         for (auto& a : args) {

@@ -41,15 +41,18 @@ rules::RulesConfig make_rules_config(proto::RuleSet rule_set, const proto::RoomO
 }
 
 Room::Room(std::string code, RoomConfig config, const Clock& clock, RoomCounters& counters,
-           RoomObserver* observer)
+           RoomObserver* observer, JournalSink* journal)
     : code_(std::move(code)), config_(std::move(config)), clock_(clock), counters_(counters),
-      observer_(observer), engine_(config_.physics),
+      observer_(observer), journal_(journal), engine_(config_.physics),
       match_(rules::new_match(to_rules(config_.rule_set), config_.rules, config_.physics)),
       aim_x_px_(config_.physics.centre().x) {}
 
 Room::~Room() {
     if (game_running()) {
         counters_.matches.fetch_sub(1, std::memory_order_relaxed);
+        if (journal_ != nullptr && !match_id_.empty()) {
+            journal_->abandoned(match_id_);
+        }
     }
 }
 
@@ -119,7 +122,9 @@ std::optional<proto::Error> Room::resume(std::shared_ptr<Peer> peer) {
     slot.grace_deadline_ms.reset();
     if (was_dropped) {
         broadcast(proto::Event{proto::PlayerReturnedEvent{seat}}, MessageKind::Normal, peer.get());
+        journal_event(proto::SeatReturnedEntry{seat});
     }
+    journal_seat(seat);
     broadcast_room_state(peer.get());
     send_to(*peer, current_keyframe());
     notify(MembershipChange::Returned, seat);
@@ -146,7 +151,10 @@ std::optional<proto::Error> Room::fill_seat(SeatSlot slot) {
     const bool started_now = !started_ && std::all_of(seats_.begin(), seats_.end(),
                                                       [](const SeatSlot& s) { return s.occupied; });
     if (started_now) {
-        start_game();
+        start_game(journal_ != nullptr ? journal_->next_match_id() : std::string{});
+    } else {
+        journal_event(proto::SeatJoinedEntry{seat, free->name, free->bot != nullptr});
+        journal_seat(seat);
     }
     broadcast_room_state(free->peer.get());
     if (free->peer) {
@@ -173,13 +181,10 @@ void Room::leave(const Peer& peer) {
     if (streaming_) {
         finish_shot();
     }
-    if (game_running()) {
-        const rules::PlayResult r = rules::forfeit(match_, seat);
-        if (!r.error) {
-            apply_non_stroke(r, "left");
-        }
-    }
+    forfeit(seat, proto::ForfeitReason::Left, "left");
+    journal_event(proto::SeatLeftEntry{seat});
     free_seat(seat);
+    journal_seat(seat);
     broadcast_room_state();
 }
 
@@ -194,6 +199,7 @@ void Room::disconnected(const Peer& peer) {
     const std::int64_t now = clock_.now_ms();
     slot.grace_deadline_ms = now + seconds_to_ms(config_.grace_s);
     broadcast(proto::Event{proto::PlayerDroppedEvent{seat, *slot.grace_deadline_ms, now}});
+    journal_event(proto::SeatDroppedEntry{seat});
     broadcast_room_state();
     notify(MembershipChange::Dropped, seat);
 }
@@ -209,6 +215,28 @@ void Room::notify(MembershipChange change, int seat, const std::string& name) {
         notice.bot = slot.bot != nullptr;
     }
     observer_->member(notice);
+}
+
+std::int64_t Room::journal(proto::JournalEntry entry, bool confirm) {
+    if (journal_ == nullptr || match_id_.empty()) {
+        return -1;
+    }
+    const std::int64_t seq = journal_seq_++;
+    journal_->append(match_id_, seq, entry, confirm);
+    return seq;
+}
+
+void Room::journal_event(proto::JournalEvent event) {
+    journal(proto::JournalEntry{wall_ms(), std::move(event)});
+}
+
+void Room::journal_seat(int seat) {
+    if (journal_ == nullptr || match_id_.empty()) {
+        return;
+    }
+    const SeatSlot& slot = seats_[static_cast<std::size_t>(seat)];
+    journal_->seat_holder(match_id_, seat,
+                          slot.occupied && slot.peer ? slot.peer->resume_token() : std::string{});
 }
 
 void Room::free_seat(int seat) {

@@ -2,6 +2,7 @@
 // Construction, membership and messages are in room.cpp.
 #include "carrom/room/room.hpp"
 
+#include "carrom/proto/journal_replay.hpp"
 #include "carrom/room/outcome_messages.hpp"
 #include "carrom/room/snapshot_writer.hpp"
 
@@ -12,10 +13,31 @@
 
 namespace carrom::room {
 
-void Room::start_game() {
+void Room::start_game(std::string match_id, std::string rematch_of) {
     started_ = true;
     counters_.matches.fetch_add(1, std::memory_order_relaxed);
     counters_.matches_started_total.fetch_add(1, std::memory_order_relaxed);
+    match_id_ = std::move(match_id);
+    journal_seq_ = 0;
+    if (journal_ != nullptr && !match_id_.empty()) {
+        proto::MatchCreated created;
+        created.match_id = match_id_;
+        created.rematch_of = std::move(rematch_of);
+        created.room_code = code_;
+        created.rule_set = to_rules(config_.rule_set);
+        created.rules = config_.rules;
+        created.physics = config_.physics;
+        for (const SeatSlot& slot : seats_) {
+            created.seats.push_back({slot.name, slot.bot != nullptr});
+        }
+        created.first_turn = match_.turn_number;
+        created.versions.server = config_.server_version;
+        created.time_ms = wall_ms();
+        journal_->created(created);
+        for (std::size_t i = 0; i < seats_.size(); ++i) {
+            journal_seat(static_cast<int>(i));
+        }
+    }
     start_turn();
 }
 
@@ -85,6 +107,9 @@ std::optional<proto::Error> Room::play(int seat, const Shot& shot) {
         return to_proto_error(*result.error);
     }
     counters_.shots_total.fetch_add(1, std::memory_order_relaxed);
+    // Journaled before anything is moved out of the result (its hash covers the events); the
+    // stroke streams once the sink says the entry is written (journal_written).
+    const std::int64_t seq = journal(proto::stroke_entry(wall_ms(), result), true);
     const std::int64_t now = clock_.now_ms();
     SimResult& physics = result.outcome.physics;
     ShotStream stream(config_.physics, std::move(physics.trajectory), std::move(physics.events),
@@ -92,13 +117,28 @@ std::optional<proto::Error> Room::play(int seat, const Shot& shot) {
     physics.trajectory = {};
     physics.events.clear();
     streaming_ = std::make_unique<Streaming>(
-        Streaming{std::move(stream), std::move(result), match_, now, now, 0});
-    stream_tick(now);
+        Streaming{std::move(stream), std::move(result), match_, now, now, 0, std::nullopt});
+    if (seq >= 0) {
+        streaming_->awaiting_seq = seq;
+    } else {
+        stream_tick(now);
+    }
     return std::nullopt;
 }
 
+void Room::journal_written(const std::string& match_id, std::int64_t seq) {
+    if (!streaming_ || streaming_->awaiting_seq != seq || match_id != match_id_) {
+        return;
+    }
+    streaming_->awaiting_seq.reset();
+    const std::int64_t now = clock_.now_ms();
+    streaming_->start_ms = now;
+    streaming_->next_ms = now;
+    stream_tick(now);
+}
+
 void Room::stream_tick(std::int64_t now_ms) {
-    if (!streaming_ || now_ms < streaming_->next_ms) {
+    if (!streaming_ || streaming_->awaiting_seq || now_ms < streaming_->next_ms) {
         return;
     }
     Streaming& s = *streaming_;
@@ -147,6 +187,17 @@ void Room::finish_shot() {
     aim_x_px_ = config_.physics.centre().x;
     broadcast(make_keyframe(board_with_striker(), seq_, turn, end_s));
     after_outcome(done->result.outcome, done->before);
+}
+
+void Room::forfeit(int seat, proto::ForfeitReason reason, std::string_view wire_reason) {
+    if (!game_running()) {
+        return;
+    }
+    const rules::PlayResult r = rules::forfeit(match_, seat);
+    if (!r.error) {
+        journal(proto::forfeit_entry(wall_ms(), r, reason));
+        apply_non_stroke(r, wire_reason);
+    }
 }
 
 void Room::apply_non_stroke(const rules::PlayResult& result, std::string_view reason) {
@@ -209,11 +260,13 @@ void Room::rematch(Peer& peer) {
     for (auto& s : seats_) {
         s.wants_rematch = false;
     }
+    std::string next_id = journal_ != nullptr ? journal_->next_match_id() : std::string{};
+    journal_event(proto::RematchEntry{next_id});
     const int next_turn = match_.turn_number + 1;
     config_.rules.first_breaker = (config_.rules.first_breaker + 1) % 2;
     match_ = rules::new_match(to_rules(config_.rule_set), config_.rules, config_.physics);
     match_.turn_number = next_turn;
-    start_game();
+    start_game(std::move(next_id), match_id_);
     bot_turn_taken_ = -1;
     broadcast_room_state();
     ++seq_; // the new game's board is a new broadcast snapshot
@@ -255,13 +308,10 @@ void Room::check_grace(std::int64_t now_ms) {
             continue;
         }
         notify(MembershipChange::Left, static_cast<int>(i)); // the grace period is over
-        if (game_running()) {
-            const rules::PlayResult r = rules::forfeit(match_, static_cast<int>(i));
-            if (!r.error) {
-                apply_non_stroke(r, "forfeit");
-            }
-        }
+        forfeit(static_cast<int>(i), proto::ForfeitReason::GraceExpired, "forfeit");
+        journal_event(proto::SeatLeftEntry{static_cast<int>(i)});
         free_seat(static_cast<int>(i));
+        journal_seat(static_cast<int>(i));
         broadcast_room_state();
     }
 }
@@ -276,6 +326,7 @@ void Room::check_shot_clock(std::int64_t now_ms) {
     }
     const rules::PlayResult r = rules::shot_clock_expired(match_, match_.turn_seat);
     if (!r.error) {
+        journal(proto::clock_expired_entry(wall_ms(), r));
         apply_non_stroke(r, {});
     }
 }
@@ -292,6 +343,9 @@ void Room::tick() {
 
 std::optional<std::int64_t> Room::next_wake_ms() const {
     if (streaming_) {
+        if (streaming_->awaiting_seq) {
+            return std::nullopt; // journal_written wakes the room
+        }
         return streaming_->next_ms;
     }
     std::optional<std::int64_t> wake;

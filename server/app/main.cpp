@@ -2,6 +2,7 @@
 // variables; see docs/server.md.
 #include "carrom/server/server.hpp"
 #include "carrom/server/web_assets.hpp"
+#include "store/sqlite_match_store.hpp"
 
 #include "bot_brains.hpp"
 
@@ -11,7 +12,9 @@
 
 #include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 #include <exception>
+#include <filesystem>
 #include <memory>
 
 int main(int argc, char** argv) {
@@ -22,6 +25,7 @@ int main(int argc, char** argv) {
     bool no_bots = false;
     std::string web_root;
     bool no_web = false;
+    std::string data = "carrom-data/carrom.db";
     CLI::App app{"carrom-server: authoritative carrom game server (WebSocket + HTTP)"};
     app.option_defaults()->always_capture_default();
     app.add_option("--host", s.host, "Address to listen on (0.0.0.0 serves other machines)")
@@ -100,6 +104,9 @@ int main(int argc, char** argv) {
     app.add_flag("--no-web", no_web, "Do not serve the web client (404)")
         ->envname("CARROM_NO_WEB")
         ->excludes(web_root_option);
+    app.add_option("--data", data,
+                   "Match store: the SQLite database file (created on first start), or none")
+        ->envname("CARROM_DATA");
     app.add_option("--log-level", log_level, "trace, debug, info, warn, error, off")
         ->envname("CARROM_LOG_LEVEL")
         ->check(CLI::IsMember({"trace", "debug", "info", "warn", "error", "off"}));
@@ -122,13 +129,36 @@ int main(int argc, char** argv) {
         web = std::make_shared<const carrom::server::StaticSite>(
             carrom::server::StaticSite::from_files(carrom::server::embedded_web_files()));
     }
+    std::shared_ptr<carrom::store::MatchStore> store;
+    if (data != "none") {
+        carrom::store::SqliteStoreOptions options;
+        // Test seam (docs/server.md, "Write errors"): writes fail while this file exists.
+        if (const char* fail_file = std::getenv("CARROM_TEST_STORE_FAIL_FILE");
+            fail_file != nullptr && *fail_file != '\0') {
+            options.fail_writes = [path = std::string(fail_file)] {
+                std::error_code ec;
+                return std::filesystem::exists(path, ec);
+            };
+            spdlog::warn("test seam: match store writes fail while {} exists", fail_file);
+        }
+        auto opened = carrom::store::SqliteMatchStore::open(data, std::move(options));
+        if (!opened.store) {
+            std::fprintf(stderr, "carrom-server: %s: %s\n", opened.error->code.c_str(),
+                         opened.error->message.c_str());
+            return 2;
+        }
+        store = std::move(opened.store);
+        spdlog::info("match store: {}", data);
+    } else {
+        spdlog::info("no match store: matches end with the process (--data none)");
+    }
     try {
         carrom::server::Server server(s,
                                       no_bots
                                           ? carrom::server::BotFactory{}
                                           : carrom::server::make_strategy_bot_factory(
                                                 bot_seed, std::chrono::milliseconds(bot_think_ms)),
-                                      web);
+                                      web, store);
         const auto port = server.listen();
         std::printf("listening on %s:%u\n", s.host.c_str(), static_cast<unsigned>(port));
         std::fflush(stdout);

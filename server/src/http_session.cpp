@@ -1,5 +1,6 @@
 #include "http_session.hpp"
 
+#include "match_api.hpp"
 #include "server_core.hpp"
 #include "ws_session.hpp"
 
@@ -85,7 +86,9 @@ void HttpSession::on_read(beast::error_code ec, std::size_t) {
 
 void HttpSession::respond(const Request& request) {
     const auto target = request.target();
-    if (target != "/healthz" && target != "/metrics" && core_.web) {
+    const std::string_view target_view(target.data(), target.size());
+    const bool api = is_match_api_target(target_view);
+    if (target != "/healthz" && target != "/metrics" && !api && core_.web) {
         respond_web(request);
         return;
     }
@@ -93,18 +96,42 @@ void HttpSession::respond(const Request& request) {
     response->version(request.version());
     response->set(http::field::server, "carrom-server");
     const bool get = request.method() == http::verb::get;
-    if (target == "/healthz" || target == "/metrics") {
+    if (target == "/healthz" || target == "/metrics" || api) {
         if (!get) {
             response->result(http::status::method_not_allowed);
             response->set(http::field::allow, "GET");
             response->body() = "method not allowed\n";
+        } else if (api) {
+            const MatchApiAnswer answer = answer_match_api(core_.store.get(), target_view);
+            response->result(static_cast<unsigned>(answer.status));
+            response->set(http::field::content_type, "application/json");
+            response->set(http::field::cache_control, "no-store");
+            response->body() = answer.body;
         } else if (target == "/healthz") {
+            // 200 "ok", 200 "degraded: ..." while match store writes fail (matches go on in
+            // memory), 503 "stopping" during shutdown.
+            std::optional<store::StoreHealth> health;
+            if (core_.store) {
+                health = core_.store->health();
+            }
             response->result(core_.stopping ? http::status::service_unavailable : http::status::ok);
-            response->body() = core_.stopping ? "stopping\n" : "ok\n";
+            if (core_.stopping) {
+                response->body() = "stopping\n";
+            } else if (health && health->degraded) {
+                response->body() = "degraded: match store writes failing (" +
+                                   std::to_string(health->pending) + " items waiting)\n";
+            } else {
+                response->body() = "ok\n";
+            }
         } else {
             response->result(http::status::ok);
             response->set(http::field::content_type, "text/plain; version=0.0.4");
-            response->body() = core_.metrics.prometheus_text();
+            std::optional<store::StoreHealth> health;
+            if (core_.store) {
+                health = core_.store->health();
+            }
+            response->body() = core_.metrics.prometheus_text() +
+                               store_prometheus_text(health ? &*health : nullptr);
         }
     } else {
         response->result(http::status::not_found);

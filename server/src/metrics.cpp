@@ -64,4 +64,22 @@ std::string Metrics::prometheus_text() const {
     return out.str();
 }
 
+std::string store_prometheus_text(const store::StoreHealth* health) {
+    const store::StoreHealth none;
+    const store::StoreHealth& h = health != nullptr ? *health : none;
+    std::ostringstream out;
+    const auto line = [&](const char* name, const char* type, const char* help,
+                          std::uint64_t value) {
+        out << "# HELP " << name << ' ' << help << "\n# TYPE " << name << ' ' << type << '\n'
+            << name << ' ' << value << '\n';
+    };
+    line("carrom_store_errors_total", "counter",
+         "Failed match store write attempts, and items dropped.", h.errors_total);
+    line("carrom_store_pending", "gauge", "Match store items queued or being written.", h.pending);
+    line("carrom_store_written_total", "counter", "Match store items written.", h.written_total);
+    line("carrom_store_degraded", "gauge", "1 while match store writes fail.",
+         h.degraded ? 1U : 0U);
+    return out.str();
+}
+
 } // namespace carrom::server

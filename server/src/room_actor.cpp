@@ -8,7 +8,24 @@ namespace carrom::server {
 
 RoomActor::RoomActor(ServerCore& core, std::string code, room::RoomConfig config)
     : core_(core), code_(code), strand_(asio::make_strand(core.ioc)), timer_(strand_),
-      logger_(code), room_(std::move(code), std::move(config), core.clock, core.metrics, &logger_) {
+      logger_(code),
+      journal_(core.store ? std::make_unique<StoreJournal>(core.store, core.random, core.stopping)
+                          : nullptr),
+      room_(std::move(code), std::move(config), core.clock, core.metrics, &logger_,
+            journal_.get()) {}
+
+void RoomActor::bind_journal() {
+    if (!journal_) {
+        return;
+    }
+    journal_->on_written([weak = weak_from_this()](const std::string& match_id, std::int64_t seq) {
+        if (auto self = weak.lock()) {
+            asio::post(self->strand_, [self, match_id, seq] {
+                self->room_.journal_written(match_id, seq);
+                self->after();
+            });
+        }
+    });
 }
 
 RoomActor::~RoomActor() = default;

@@ -4,6 +4,7 @@
 
 #include "asio_types.hpp"
 #include "room_logger.hpp"
+#include "store_journal.hpp"
 
 #include "carrom/room/room.hpp"
 
@@ -34,6 +35,9 @@ public:
         });
     }
     void stop(); // cancel the timer (shutdown)
+    // With a match store: the journal's write confirmations go to the room on its strand. Called
+    // once, right after construction (it needs the actor's shared_ptr).
+    void bind_journal();
 
 private:
     void after();
@@ -44,7 +48,8 @@ private:
     std::string code_;
     asio::strand<asio::io_context::executor_type> strand_;
     asio::steady_timer timer_;
-    RoomLogger logger_; // before room_, which reports to it
+    RoomLogger logger_;                     // before room_, which reports to it
+    std::unique_ptr<StoreJournal> journal_; // null without a store; before room_ too
     room::Room room_;
     std::int64_t scheduled_ms_ = -1;
     bool removed_ = false;

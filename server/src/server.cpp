@@ -20,8 +20,9 @@
 namespace carrom::server {
 
 struct Server::Impl {
-    Impl(ServerSettings settings, BotFactory bots, std::shared_ptr<const StaticSite> web)
-        : core(std::move(settings), std::move(bots), std::move(web)) {}
+    Impl(ServerSettings settings, BotFactory bots, std::shared_ptr<const StaticSite> web,
+         std::shared_ptr<store::MatchStore> store)
+        : core(std::move(settings), std::move(bots), std::move(web), std::move(store)) {}
 
     ServerCore core;
     std::shared_ptr<Listener> listener;
@@ -30,8 +31,10 @@ struct Server::Impl {
     bool stopped = false;
 };
 
-Server::Server(ServerSettings settings, BotFactory bots, std::shared_ptr<const StaticSite> web)
-    : impl_(std::make_unique<Impl>(std::move(settings), std::move(bots), std::move(web))) {}
+Server::Server(ServerSettings settings, BotFactory bots, std::shared_ptr<const StaticSite> web,
+               std::shared_ptr<store::MatchStore> store)
+    : impl_(std::make_unique<Impl>(std::move(settings), std::move(bots), std::move(web),
+                                   std::move(store))) {}
 
 Server::~Server() {
     shutdown();
@@ -96,6 +99,18 @@ void Server::shutdown() {
     }
     impl_->threads.clear();
     core.bot_pool.join();
+    if (core.store) {
+        // Everything the rooms journaled, written before the process ends (their unfinished
+        // matches stay unfinished: core.stopping keeps them from being marked abandoned).
+        const auto timeout = std::chrono::seconds(5);
+        if (core.store->flush(timeout)) {
+            spdlog::info("match store flushed");
+        } else {
+            const auto health = core.store->health();
+            spdlog::error("match store: {} items not written within {} s ({})", health.pending,
+                          timeout.count(), health.last_error);
+        }
+    }
 }
 
 void Server::run_until_signal() {

@@ -8,8 +8,9 @@
 
 namespace carrom::server {
 
-ServerCore::ServerCore(ServerSettings s, BotFactory b, std::shared_ptr<const StaticSite> w)
-    : settings(std::move(s)), bots(std::move(b)), web(std::move(w)),
+ServerCore::ServerCore(ServerSettings s, BotFactory b, std::shared_ptr<const StaticSite> w,
+                       std::shared_ptr<store::MatchStore> st)
+    : settings(std::move(s)), bots(std::move(b)), web(std::move(w)), store(std::move(st)),
       ioc(std::max(1, settings.threads)),
       registry(random, static_cast<std::size_t>(std::max(0, settings.max_rooms))) {}
 
@@ -52,9 +53,11 @@ ServerCore::create_room(proto::RuleSet rule_set, const proto::RoomOptions& optio
     config.snapshot_hz = settings.snapshot_hz;
     config.time_scale = settings.time_scale;
     config.grace_s = settings.grace_s;
+    config.server_version = CARROM_SERVER_VERSION;
     auto created = registry.create_room(
         [&](const std::string& code) { return std::make_shared<RoomActor>(*this, code, config); });
     if (const auto* room = std::get_if<std::shared_ptr<RoomActor>>(&created)) {
+        (*room)->bind_journal();
         metrics.rooms.fetch_add(1, std::memory_order_relaxed);
         spdlog::info("room {} created ({})", (*room)->code(), proto::to_string(rule_set));
     }

@@ -12,6 +12,7 @@
 #include "carrom/server/registry.hpp"
 #include "carrom/server/settings.hpp"
 #include "carrom/server/static_site.hpp"
+#include "store/match_store.hpp"
 
 #include <boost/asio/thread_pool.hpp>
 
@@ -29,7 +30,8 @@ class WsSession;
 using SessionRegistry = Registry<RoomActor, std::weak_ptr<WsSession>>;
 
 struct ServerCore {
-    ServerCore(ServerSettings s, BotFactory b, std::shared_ptr<const StaticSite> w);
+    ServerCore(ServerSettings s, BotFactory b, std::shared_ptr<const StaticSite> w,
+               std::shared_ptr<store::MatchStore> st);
 
     // Declaration order matters for destruction: objects owned by pending handlers die with
     // ioc and may still touch clock, random and metrics; rooms in the registry own timers that
@@ -37,6 +39,9 @@ struct ServerCore {
     ServerSettings settings;
     BotFactory bots;
     std::shared_ptr<const StaticSite> web; // the web client's files; null = none
+    // Where match journals go; null = none (--data none). Outlives ioc: a write confirmation
+    // posted to a room after ioc is gone finds no room (rooms die with the registry and ioc).
+    std::shared_ptr<store::MatchStore> store;
     room::SteadyClock clock;
     SystemRandom random;
     Metrics metrics;

@@ -40,6 +40,7 @@ public:
     // Peer
     std::int64_t player_id() const override { return player_id_; }
     const std::string& name() const override { return name_; }
+    std::string resume_token() const override { return token_; }
     void send(room::Outgoing message) override;
     bool take_keyframe_request() override { return keyframe_request_.exchange(false); }
     void close(int close_code, std::string reason) override;

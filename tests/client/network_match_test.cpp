@@ -140,7 +140,7 @@ Outcome play_one_shot(const std::filesystem::path& dir) {
     Outcome o;
     const auto deadline = Clock::now() + 60s;
     ChildProcess server({CARROM_SERVER_PATH, "--host", "127.0.0.1", "--port", "0", "--shot-clock",
-                         "0", "--log-level", "warn"});
+                         "0", "--log-level", "warn", "--data", "none"});
     const std::string port = after_prefix(
         server.wait_line(ChildProcess::Stream::Out, "listening on 127.0.0.1:", Clock::now() + 15s),
         "listening on 127.0.0.1:");

@@ -17,6 +17,7 @@ public:
 
     std::int64_t player_id() const override { return id_; }
     const std::string& name() const override { return name_; }
+    std::string resume_token() const override { return token; }
     void send(Outgoing message) override {
         const auto decoded = proto::decode_server(*message.text);
         EXPECT_TRUE(decoded.ok()) << decoded.error.message << " in " << *message.text;
@@ -73,6 +74,7 @@ public:
     std::vector<proto::ServerMessage> received;
     std::vector<MessageKind> kinds;
     bool wants_keyframe = false;
+    std::string token; // resume_token()
     int closed_with = 0;
 
 private:

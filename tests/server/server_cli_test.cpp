@@ -35,7 +35,7 @@ TEST(ServerCli, StdoutHoldsOnlyTheListeningLineAndLogsGoToStderr) {
     // info level logs at start, on the signal and at the end; timeout sends SIGTERM after 1 s.
     const CommandRun ran =
         run_command(std::string("timeout -s TERM 1 ") + CARROM_SERVER_PATH +
-                    " --host 127.0.0.1 --port 0 --log-level info 2> " + err_path);
+                    " --host 127.0.0.1 --port 0 --data none --log-level info 2> " + err_path);
     EXPECT_EQ(ran.exit, 124) << ran.out; // stopped by timeout's SIGTERM
     EXPECT_TRUE(is_listening_line(ran.out)) << ran.out;
     const std::string err = read_file(err_path);

@@ -163,7 +163,7 @@ class ServerProcess {
 public:
     explicit ServerProcess(const std::vector<std::string>& flags = {}) {
         std::vector<std::string> argv{CARROM_SERVER_PATH, "--host", "127.0.0.1", "--port", "0",
-                                      "--log-level",      "warn"};
+                                      "--log-level",      "warn",   "--data",    "none"};
         argv.insert(argv.end(), flags.begin(), flags.end());
         process_ = std::make_unique<ChildProcess>(argv);
         const std::string prefix = "listening on 127.0.0.1:";
@@ -406,8 +406,8 @@ TEST(WebServingFlags, ABadWebRootStopsTheStart) {
         {empty.string(),
          "carrom-server: bad_web_root: The web root " + empty.string() + " has no index.html."}};
     for (const auto& [dir, sentence] : cases) {
-        ChildProcess server(
-            {CARROM_SERVER_PATH, "--host", "127.0.0.1", "--port", "0", "--web-root", dir});
+        ChildProcess server({CARROM_SERVER_PATH, "--host", "127.0.0.1", "--port", "0", "--data",
+                             "none", "--web-root", dir});
         EXPECT_EQ(server.wait_exit(Clock::now() + 15s), 2) << dir;
         EXPECT_TRUE(server.wait_line(ChildProcess::Stream::Err, sentence, Clock::now() + 1s))
             << dir;

@@ -79,11 +79,13 @@ export async function startChild(label, command, args, ready, timeoutMs = 15000,
   return child;
 }
 
-// carrom-server on 127.0.0.1 with an ephemeral port; resolves {port, ws, child}.
+// carrom-server on 127.0.0.1 with an ephemeral port, without a match store unless args name one
+// (--data); resolves {port, ws, child}.
 export async function startServer(args = []) {
   if (!env.server) throw new Error('CARROM_SERVER is not set');
   const child = await startChild('carrom-server', env.server,
-    ['--host', '127.0.0.1', '--port', '0', ...(env.webRoot ? ['--web-root', env.webRoot] : []), ...args],
+    ['--host', '127.0.0.1', '--port', '0', ...(args.includes('--data') ? [] : ['--data', 'none']),
+      ...(env.webRoot ? ['--web-root', env.webRoot] : []), ...args],
     /listening on [\d.]+:(\d+)/);
   const port = Number(child.match[1]);
   return { port, ws: `ws://127.0.0.1:${port}/`, child };

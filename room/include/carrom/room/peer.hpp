@@ -26,6 +26,9 @@ public:
     virtual ~Peer() = default;
     virtual std::int64_t player_id() const = 0;
     virtual const std::string& name() const = 0;
+    // The token that resumes this player's seat ("" if none): the room hands it to its journal
+    // sink, which stores only a hash of it.
+    virtual std::string resume_token() const { return {}; }
     // Queues a message. Thread-safe; never blocks.
     virtual void send(Outgoing message) = 0;
     // True once after the session dropped a snapshot: the next snapshot it gets must be a

@@ -12,6 +12,7 @@
 #include "carrom/proto/server_messages.hpp"
 #include "carrom/room/bot_seat.hpp"
 #include "carrom/room/clock.hpp"
+#include "carrom/room/journal_sink.hpp"
 #include "carrom/room/peer.hpp"
 #include "carrom/room/room_counters.hpp"
 #include "carrom/room/room_observer.hpp"
@@ -33,7 +34,8 @@ struct RoomConfig {
     PhysicsConfig physics{};
     double snapshot_hz = 60.0;
     double grace_s = 60.0;
-    double time_scale = 1.0; // match seconds per wall second while a shot plays
+    double time_scale = 1.0;    // match seconds per wall second while a shot plays
+    std::string server_version; // journaled in MatchCreated.versions.server
 };
 
 // Rules config for a create_room request: the rule set's defaults, the server's shot clock,
@@ -43,9 +45,10 @@ rules::RulesConfig make_rules_config(proto::RuleSet rule_set, const proto::RoomO
 
 class Room {
 public:
-    // observer: told about members and game ends (may be null).
+    // observer: told about members and game ends (may be null). journal: gets the match
+    // journals (journal_sink.hpp; may be null: nothing is journaled). Both outlive the room.
     Room(std::string code, RoomConfig config, const Clock& clock, RoomCounters& counters,
-         RoomObserver* observer = nullptr);
+         RoomObserver* observer = nullptr, JournalSink* journal = nullptr);
     ~Room();
     Room(const Room&) = delete;
     Room& operator=(const Room&) = delete;
@@ -78,6 +81,12 @@ public:
 
     void tick();
     std::optional<std::int64_t> next_wake_ms() const;
+
+    // The journal sink's answer to a confirmed append: a stroke waiting for it starts streaming.
+    // Answers for another match or entry are ignored.
+    void journal_written(const std::string& match_id, std::int64_t seq);
+    // The current game's match id in the journal ("" without a sink or before the first game).
+    const std::string& match_id() const { return match_id_; }
 
     // No human holds a seat (connected or within grace) and no spectator watches.
     bool abandoned() const;
@@ -118,10 +127,18 @@ private:
     // The one way into a seat, for players (slot.peer) and bots (slot.bot): the first free seat;
     // the game starts once both are taken. Error room_full.
     std::optional<proto::Error> fill_seat(SeatSlot slot);
-    void start_game(); // a game starts (counted); the first turn's clock runs
+    // A game starts (counted, journaled as match_id); the first turn's clock runs.
+    void start_game(std::string match_id, std::string rematch_of = {});
+    // Appends an entry to the current match's journal (if any); returns its seq (-1: none).
+    std::int64_t journal(proto::JournalEntry entry, bool confirm = false);
+    void journal_event(proto::JournalEvent event); // now, unconfirmed
+    void journal_seat(int seat);                   // the seat's holder, to the sink
+    std::int64_t wall_ms() const { return clock_.unix_ms(); }
     void start_turn();
     void stream_tick(std::int64_t now_ms);
     void finish_shot();
+    // A running game is forfeited by seat (journaled; game_end's reason is wire_reason).
+    void forfeit(int seat, proto::ForfeitReason reason, std::string_view wire_reason);
     void apply_non_stroke(const rules::PlayResult& result, std::string_view reason);
     void after_outcome(const rules::ShotOutcome& outcome, const rules::MatchState& before,
                        std::string_view reason_override = {});
@@ -140,6 +157,9 @@ private:
     const Clock& clock_;
     RoomCounters& counters_;
     RoomObserver* observer_;
+    JournalSink* journal_;
+    std::string match_id_;         // the current game's journal ("" if none)
+    std::int64_t journal_seq_ = 0; // the next entry's seq in it
     ExactEngine engine_;
     rules::MatchState match_;
     std::array<SeatSlot, 2> seats_{};
@@ -157,6 +177,8 @@ private:
         std::int64_t start_ms = 0;
         std::int64_t next_ms = 0; // next snapshot due
         int index = 0;            // snapshots sent
+        // The stroke's journal entry not yet confirmed written: nothing of it is streamed.
+        std::optional<std::int64_t> awaiting_seq;
     };
     std::unique_ptr<Streaming> streaming_;
     int bot_turn_taken_ = -1; // turn number whose BotTurn was handed out

@@ -3,6 +3,7 @@
 // exposition format for GET /metrics: the rooms' own (room::RoomCounters) and the network's.
 
 #include "carrom/room/room_counters.hpp"
+#include "store/match_store.hpp"
 
 #include <atomic>
 #include <cstdint>
@@ -26,5 +27,9 @@ struct Metrics : room::RoomCounters {
 
     std::string prometheus_text() const;
 };
+
+// The match store's metrics (carrom_store_errors_total, carrom_store_pending,
+// carrom_store_written_total, carrom_store_degraded), all 0 without a store (health null).
+std::string store_prometheus_text(const store::StoreHealth* health);
 
 } // namespace carrom::server

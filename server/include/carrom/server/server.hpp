@@ -7,6 +7,7 @@
 #include "carrom/server/metrics.hpp"
 #include "carrom/server/settings.hpp"
 #include "carrom/server/static_site.hpp"
+#include "store/match_store.hpp"
 
 #include <cstdint>
 #include <memory>
@@ -16,10 +17,12 @@ namespace carrom::server {
 class Server {
 public:
     // bots: makes server-side bot brains; empty = create_room with a bot is "unsupported".
-    // web: the files answered to GET and HEAD of any other path than /healthz and /metrics
-    // (docs/server.md, "HTTP"); null = none (404).
+    // web: the files answered to GET and HEAD of any other path than /healthz, /metrics and
+    // /matches... (docs/server.md, "HTTP"); null = none (404). store: where match journals go
+    // (flushed on shutdown); null = none: matches end with the process, GET /matches answers 503.
     explicit Server(ServerSettings settings, BotFactory bots = {},
-                    std::shared_ptr<const StaticSite> web = nullptr);
+                    std::shared_ptr<const StaticSite> web = nullptr,
+                    std::shared_ptr<store::MatchStore> store = nullptr);
     ~Server(); // stops and joins the threads
     Server(const Server&) = delete;
     Server& operator=(const Server&) = delete;

@@ -1,0 +1,158 @@
+#include "match_api.hpp"
+
+#include "carrom/proto/journal_json.hpp"
+#include "carrom/proto/match_json.hpp"
+#include "carrom/proto/types.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <charconv>
+#include <optional>
+
+namespace carrom::server {
+
+namespace {
+
+using Json = nlohmann::json;
+
+MatchApiAnswer error(int status, std::string_view code, std::string message) {
+    return {status,
+            Json{{"error", {{"code", std::string(code)}, {"message", std::move(message)}}}}.dump()};
+}
+
+int hex_value(char c) {
+    if (c >= '0' && c <= '9') {
+        return c - '0';
+    }
+    if (c >= 'a' && c <= 'f') {
+        return c - 'a' + 10;
+    }
+    if (c >= 'A' && c <= 'F') {
+        return c - 'A' + 10;
+    }
+    return -1;
+}
+
+// Percent-decoding of a query value ('+' is a space); empty optional when malformed.
+std::optional<std::string> url_decode(std::string_view text) {
+    std::string out;
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        const char c = text[i];
+        if (c == '+') {
+            out.push_back(' ');
+        } else if (c == '%') {
+            if (i + 2 >= text.size()) {
+                return std::nullopt;
+            }
+            const int hi = hex_value(text[i + 1]);
+            const int lo = hex_value(text[i + 2]);
+            if (hi < 0 || lo < 0) {
+                return std::nullopt;
+            }
+            out.push_back(static_cast<char>(hi * 16 + lo));
+            i += 2;
+        } else {
+            out.push_back(c);
+        }
+    }
+    return out;
+}
+
+Json listing_to_json(const store::MatchListing& m) {
+    return {{"id", m.id},
+            {"room", m.room_code},
+            {"rule_set", std::string(rules::to_string(m.rule_set))},
+            {"players", m.players},
+            {"created_ms", m.created_ms},
+            {"finished_ms", m.finished_ms ? Json(*m.finished_ms) : Json(nullptr)},
+            {"result", m.result ? proto::game_result_to_json(*m.result) : Json(nullptr)},
+            {"scores", m.scores}};
+}
+
+MatchApiAnswer answer_journal(store::MatchStore& store, std::string_view id) {
+    if (!proto::is_match_id(id)) {
+        return error(400, match_api_code::kBadMatchId,
+                     "A match id is 1 to 64 characters of 0-9, A-Z, a-z, '_' and '-'.");
+    }
+    auto loaded = store.journal(std::string(id));
+    if (!loaded.ok()) {
+        return error(500, match_api_code::kStoreError, loaded.error->message);
+    }
+    if (!loaded.value) {
+        return error(404, match_api_code::kUnknownMatch,
+                     "There is no match " + std::string(id) + ".");
+    }
+    return {200, proto::journal_to_json(*loaded.value).dump()};
+}
+
+MatchApiAnswer answer_list(store::MatchStore& store, std::string_view query) {
+    std::optional<std::string> player;
+    int limit = kDefaultMatchListLimit;
+    while (!query.empty()) {
+        const auto amp = query.find('&');
+        const std::string_view pair = query.substr(0, amp);
+        query = amp == std::string_view::npos ? std::string_view{} : query.substr(amp + 1);
+        const auto eq = pair.find('=');
+        const std::string_view key = pair.substr(0, eq);
+        const std::string_view raw =
+            eq == std::string_view::npos ? std::string_view{} : pair.substr(eq + 1);
+        if (key == "player") {
+            player = url_decode(raw);
+            if (!player || !proto::is_player_name(*player)) {
+                return error(400, match_api_code::kBadQuery,
+                             "player must be a player name (1 to 24 bytes of UTF-8, no control "
+                             "characters).");
+            }
+        } else if (key == "limit") {
+            const auto [end, ec] = std::from_chars(raw.data(), raw.data() + raw.size(), limit);
+            if (ec != std::errc{} || end != raw.data() + raw.size() || limit < 1 ||
+                limit > kMaxMatchListLimit) {
+                return error(400, match_api_code::kBadQuery,
+                             "limit must be an integer from 1 to 100.");
+            }
+        } else {
+            return error(400, match_api_code::kBadQuery,
+                         "Unknown query parameter; use player and limit.");
+        }
+    }
+    if (!player) {
+        return error(400, match_api_code::kBadQuery, "player is required: /matches?player=NAME.");
+    }
+    auto loaded = store.recent_matches(*player, limit);
+    if (!loaded.ok()) {
+        return error(500, match_api_code::kStoreError, loaded.error->message);
+    }
+    Json list = Json::array();
+    for (const auto& m : loaded.value) {
+        list.push_back(listing_to_json(m));
+    }
+    return {200,
+            Json{{"format", proto::kJournalFormat}, {"player", *player}, {"matches", list}}.dump()};
+}
+
+} // namespace
+
+bool is_match_api_target(std::string_view target) {
+    const std::string_view path = target.substr(0, target.find('?'));
+    return path == "/matches" || path.starts_with("/matches/");
+}
+
+MatchApiAnswer answer_match_api(store::MatchStore* store, std::string_view target) {
+    if (store == nullptr) {
+        return error(503, match_api_code::kStoreDisabled,
+                     "This server keeps no matches (carrom-server --data none).");
+    }
+    const auto q = target.find('?');
+    const std::string_view path = target.substr(0, q);
+    const std::string_view query =
+        q == std::string_view::npos ? std::string_view{} : target.substr(q + 1);
+    if (path == "/matches") {
+        return answer_list(*store, query);
+    }
+    if (!query.empty()) {
+        return error(400, match_api_code::kBadQuery, "/matches/ID takes no query.");
+    }
+    return answer_journal(*store, path.substr(std::string_view("/matches/").size()));
+}
+
+} // namespace carrom::server

@@ -1,0 +1,36 @@
+#pragma once
+// Private to server/src: the HTTP API of the match store (docs/protocol.md, "Match API"):
+// GET /matches/ID (a journal as JSON) and GET /matches?player=NAME&limit=N (a player's recent
+// matches). Boost-free: the HTTP session hands it the request target and writes its answer.
+// Reads block on the store (SQLite: a read on its reader connection).
+
+#include "store/match_store.hpp"
+
+#include <string>
+#include <string_view>
+
+namespace carrom::server {
+
+namespace match_api_code {
+inline constexpr std::string_view kStoreDisabled = "store_disabled"; // 503: --data none
+inline constexpr std::string_view kBadMatchId = "bad_match_id";      // 400
+inline constexpr std::string_view kBadQuery = "bad_query";           // 400
+inline constexpr std::string_view kUnknownMatch = "unknown_match";   // 404
+inline constexpr std::string_view kStoreError = "store_error";       // 500: the read failed
+} // namespace match_api_code
+
+inline constexpr int kDefaultMatchListLimit = 20;
+inline constexpr int kMaxMatchListLimit = 100;
+
+struct MatchApiAnswer {
+    int status = 200;
+    std::string body; // JSON (application/json)
+};
+
+// True for the paths this API answers: "/matches" (with a query) and "/matches/...".
+bool is_match_api_target(std::string_view target);
+
+// The answer to a GET of target (the request target: path and query). store may be null.
+MatchApiAnswer answer_match_api(store::MatchStore* store, std::string_view target);
+
+} // namespace carrom::server

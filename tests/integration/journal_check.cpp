@@ -1,0 +1,45 @@
+#include "journal_check.hpp"
+
+#include "carrom/proto/journal_json.hpp"
+#include "carrom/proto/journal_replay.hpp"
+
+#include <variant>
+
+namespace carrom::integration {
+
+JournalCheck check_journal(const std::string& json_text) {
+    JournalCheck check;
+    const auto decoded = proto::decode_journal_text(json_text);
+    if (!decoded.ok()) {
+        check.problem = "does not decode: " + decoded.error->message;
+        return check;
+    }
+    const proto::MatchJournal& journal = decoded.value;
+    check.entries = static_cast<int>(journal.entries.size());
+    int last_turn = -1;
+    for (const auto& entry : journal.entries) {
+        if (const auto* stroke = std::get_if<proto::StrokeEntry>(&entry.event)) {
+            ++check.strokes;
+            check.turns_in_order = check.turns_in_order && stroke->turn > last_turn;
+            last_turn = stroke->turn;
+        }
+        if (const auto* outcome = proto::outcome_of(entry.event)) {
+            check.game_over = outcome->game_end.has_value();
+        }
+    }
+    const proto::ReplayResult replayed = proto::replay(journal);
+    if (replayed.error) {
+        check.problem = "does not replay: " + replayed.error->message;
+    } else if (!replayed.ok()) {
+        check.problem = std::to_string(replayed.mismatches) + " mismatches, complete " +
+                        std::to_string(replayed.complete);
+        for (const auto& step : replayed.steps) {
+            for (const auto& d : step.differences) {
+                check.problem += "; entry " + std::to_string(step.entry) + ": " + d;
+            }
+        }
+    }
+    return check;
+}
+
+} // namespace carrom::integration
