@@ -2,6 +2,7 @@
 // bot-vs-bot game with strokes, a shot clock expiry and the game's end. No FakePeer here (its
 // codec and the replay's scene JSON cannot share a translation unit).
 #include "room/recording_journal.hpp"
+#include "room/spread_brain.hpp"
 
 #include "carrom/proto/journal_replay.hpp"
 #include "carrom/room/room.hpp"
@@ -18,23 +19,7 @@ namespace carrom::room {
 namespace {
 
 using testing::RecordingJournal;
-
-// Strong shots in directions spread by a fixed sequence: deterministic, varied, and they pocket.
-class SpreadBrain final : public BotBrain {
-public:
-    Shot choose_shot(const rules::MatchState& state, int, std::chrono::milliseconds) override {
-        ++n_;
-        const double up =
-            state.seats[static_cast<std::size_t>(state.turn_seat)].side == rules::Side::Bottom
-                ? -std::numbers::pi / 2.0
-                : std::numbers::pi / 2.0;
-        const double spread = std::fmod(static_cast<double>(n_) * 0.61803398875, 1.0) - 0.5;
-        return {300.0 + 160.0 * spread, up + 1.1 * spread, 24.0};
-    }
-
-private:
-    std::int64_t n_ = 0;
-};
+using testing::SpreadBrain;
 
 // Runs the room until its game is over: bots shoot, the sink confirms, streams play out. The
 // shot clock runs out once, on the turn `skip_turn`.

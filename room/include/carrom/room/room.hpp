@@ -38,6 +38,16 @@ struct RoomConfig {
     std::string server_version; // journaled in MatchCreated.versions.server
 };
 
+// How a restored room's seat is held again (Room::restore), by seat index.
+struct RestoredSeat {
+    std::int64_t player_id = -1;   // a human seat: the player id that resumes it (Room::resume)
+    std::shared_ptr<BotBrain> bot; // a bot seat: its brain
+};
+
+// A journal's seats after its membership entries (joins and leaves), by seat index: name and bot
+// flag (an empty name: the seat was freed).
+std::vector<proto::JournalSeat> journal_seats(const proto::MatchJournal& journal);
+
 // Rules config for a create_room request: the rule set's defaults, the server's shot clock,
 // then the request's options.
 rules::RulesConfig make_rules_config(proto::RuleSet rule_set, const proto::RoomOptions& options,
@@ -55,6 +65,17 @@ public:
 
     const std::string& code() const { return code_; }
     proto::RuleSet rule_set() const { return config_.rule_set; }
+
+    // Restores an unfinished match from its journal into this new room (no member, no game):
+    // the state after the journal's last entry (proto::replay), the seats (humans dropped, their
+    // grace period starting now, each journaled as a drop unless its last entry already was one;
+    // bots thinking again), the shot clock restarted for the player to move. The room goes on
+    // journaling the same match id from seq journal.entries.size(). The room's config must have
+    // the journal's rule set and physics. Returns why the match cannot be resumed (one sentence;
+    // the room is left untouched): a journal that does not replay clean, a game already over,
+    // seats that do not match the journal's.
+    std::optional<std::string> restore(const proto::MatchJournal& journal,
+                                       std::vector<RestoredSeat> seats);
 
     // Membership. On success the peer gets room_state and a keyframe; everyone else a
     // room_state. Errors: room_full, already_in_room.
