@@ -30,6 +30,15 @@ void RoomActor::bind_journal() {
 
 RoomActor::~RoomActor() = default;
 
+std::optional<std::string> RoomActor::restore(const proto::MatchJournal& journal,
+                                              std::vector<room::RestoredSeat> seats) {
+    if (auto refused = room_.restore(journal, std::move(seats))) {
+        return refused;
+    }
+    asio::post(strand_, [self = shared_from_this()] { self->after(); });
+    return std::nullopt;
+}
+
 void RoomActor::stop() {
     asio::post(strand_, [self = shared_from_this()] {
         self->removed_ = true;

@@ -14,7 +14,9 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
+#include <vector>
 
 namespace carrom::server {
 
@@ -35,6 +37,10 @@ public:
         });
     }
     void stop(); // cancel the timer (shutdown)
+    // Restores an unfinished match into the new room (Room::restore), before the I/O threads
+    // run; on success the room's timers and bot turns start on its strand. Why not, otherwise.
+    std::optional<std::string> restore(const proto::MatchJournal& journal,
+                                       std::vector<room::RestoredSeat> seats);
     // With a match store: the journal's write confirmations go to the room on its strand. Called
     // once, right after construction (it needs the actor's shared_ptr).
     void bind_journal();

@@ -55,6 +55,11 @@ std::uint16_t Server::listen() {
 }
 
 void Server::start() {
+    if (impl_->core.store) {
+        // Before the I/O threads run: no hello can come before the recovered rooms exist.
+        const int recovered = impl_->core.restore_matches();
+        spdlog::info("recovered {} matches", recovered);
+    }
     impl_->work.emplace(impl_->core.ioc.get_executor());
     const int count = std::max(1, impl_->core.settings.threads);
     for (int i = 0; i < count; ++i) {

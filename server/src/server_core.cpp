@@ -2,9 +2,13 @@
 
 #include "room_actor.hpp"
 
+#include "carrom/proto/journal_replay.hpp"
+
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
+#include <array>
+#include <string_view>
 
 namespace carrom::server {
 
@@ -68,6 +72,127 @@ void ServerCore::remove_room(const std::string& code) {
     registry.remove_room(code);
     metrics.rooms.fetch_sub(1, std::memory_order_relaxed);
     spdlog::info("room {} closed", code);
+}
+
+namespace {
+
+std::optional<proto::RuleSet> wire_rule_set(rules::RuleSet rule_set) {
+    for (const proto::RuleSet r : {proto::RuleSet::Icf, proto::RuleSet::Seed,
+                                   proto::RuleSet::Freestyle, proto::RuleSet::DiscPool}) {
+        if (proto::to_rules(r) == rule_set) {
+            return r;
+        }
+    }
+    return std::nullopt;
+}
+
+// A bot seat's level from its name as the server gives it ("Bot (hard)"); medium otherwise.
+proto::BotLevel bot_level(std::string_view name) {
+    constexpr std::string_view kPrefix = "Bot (";
+    proto::BotLevel level = proto::BotLevel::Medium;
+    if (name.size() > kPrefix.size() + 1 && name.substr(0, kPrefix.size()) == kPrefix &&
+        name.back() == ')') {
+        const std::string_view text = name.substr(kPrefix.size(), name.size() - kPrefix.size() - 1);
+        if (!proto::parse(text, level)) {
+            level = proto::BotLevel::Medium;
+        }
+    }
+    return level;
+}
+
+} // namespace
+
+int ServerCore::restore_matches() {
+    if (!store) {
+        return 0;
+    }
+    auto loaded = store->load_unfinished();
+    if (!loaded.ok()) {
+        spdlog::error("match store: unfinished matches not loaded, none recovered: {}",
+                      loaded.error->message);
+        return 0;
+    }
+    int recovered = 0;
+    for (const store::RecoveredMatch& match : loaded.value) {
+        auto refuse = [&](std::string_view why) {
+            spdlog::warn("match {} not recovered (left in the store): {}", match.id, why);
+        };
+        if (match.error || !match.journal) {
+            refuse(match.error ? match.error->message : "no journal");
+            continue;
+        }
+        const proto::MatchJournal& journal = *match.journal;
+        if (auto version = proto::check_versions(journal.created)) {
+            refuse(version->message);
+            continue;
+        }
+        const auto rule_set = wire_rule_set(journal.created.rule_set);
+        if (!rule_set) {
+            refuse("its rule set is unknown to this server");
+            continue;
+        }
+        const auto journal_seats = room::journal_seats(journal);
+        std::vector<room::RestoredSeat> seats(journal_seats.size());
+        bool bots_missing = false;
+        for (std::size_t i = 0; i < journal_seats.size(); ++i) {
+            if (journal_seats[i].bot) {
+                if (!bots) {
+                    bots_missing = true;
+                    break;
+                }
+                seats[i].bot = bots(bot_level(journal_seats[i].name));
+            }
+        }
+        if (bots_missing) {
+            refuse("it has a bot seat and this server has no bots");
+            continue;
+        }
+        room::RoomConfig config;
+        config.rule_set = *rule_set;
+        config.rules = journal.created.rules;
+        config.physics = journal.created.physics;
+        config.snapshot_hz = settings.snapshot_hz;
+        config.time_scale = settings.time_scale;
+        config.grace_s = settings.grace_s;
+        config.server_version = CARROM_SERVER_VERSION;
+        const std::string& code = journal.created.room_code;
+        auto actor = registry.add_room(code, [&](const std::string& c) {
+            return std::make_shared<RoomActor>(*this, c, config);
+        });
+        if (!actor) {
+            refuse("room code " + code + " is taken by another recovered match");
+            continue;
+        }
+        actor->bind_journal();
+        // Claims for the human seats, by token hash; the room waits for those player ids.
+        std::vector<std::string> claims;
+        for (std::size_t i = 0; i < seats.size(); ++i) {
+            if (seats[i].bot) {
+                continue;
+            }
+            const auto& token = i < match.seat_tokens.size() ? match.seat_tokens[i]
+                                                             : std::optional<store::TokenHash>{};
+            if (token) {
+                claims.push_back(store::to_hex(*token));
+                seats[i].player_id = registry.add_restored_seat(claims.back(), code);
+            }
+        }
+        if (auto refused = actor->restore(journal, std::move(seats))) {
+            actor->stop();
+            registry.remove_room(code); // and the claims for its seats
+            refuse(*refused);
+            continue;
+        }
+        metrics.rooms.fetch_add(1, std::memory_order_relaxed);
+        spdlog::info("room {} recovered: match {}, {} journal entries", code, match.id,
+                     journal.entries.size());
+        ++recovered;
+    }
+    return recovered;
+}
+
+std::optional<PlayerRecord> ServerCore::claim_restored_seat(const std::string& token) {
+    return registry.claim_restored(token, store::to_hex(store::hash_token(token)));
 }
 
 } // namespace carrom::server

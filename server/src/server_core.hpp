@@ -19,6 +19,7 @@
 #include <atomic>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <unordered_map>
 #include <variant>
 
@@ -67,6 +68,14 @@ struct ServerCore {
     std::variant<std::shared_ptr<RoomActor>, proto::Error>
     create_room(proto::RuleSet rule_set, const proto::RoomOptions& options);
     void remove_room(const std::string& code);
+
+    // At start, before the I/O threads run: every unfinished match in the store whose journal
+    // replays with this build is restored in a room under its old code (docs/server.md,
+    // "Recovery after a restart"); the others are logged and left in the store. Returns how many.
+    int restore_matches();
+    // A resume token the registry does not know: the player of a restored seat whose token hash
+    // the store kept, given a player record with that same token. Empty if none.
+    std::optional<PlayerRecord> claim_restored_seat(const std::string& token);
 };
 
 } // namespace carrom::server

@@ -186,6 +186,15 @@ void ChildProcess::stop(std::chrono::milliseconds grace) {
     pid_ = -1;
 }
 
+void ChildProcess::kill_now() {
+    if (pid_ <= 0) {
+        return;
+    }
+    ::kill(-pid_, SIGKILL);
+    reap(true);
+    pid_ = -1;
+}
+
 const std::vector<std::string>& ChildProcess::lines(Stream stream) const {
     return stream == Stream::Out ? out_.lines : err_.lines;
 }

@@ -33,6 +33,8 @@ public:
     std::optional<int> wait_exit(std::chrono::steady_clock::time_point deadline);
     // Ends the process group (SIGTERM, then SIGKILL after `grace`) and reaps the process.
     void stop(std::chrono::milliseconds grace = std::chrono::milliseconds(2000));
+    // Kills the process group at once (SIGKILL: no shutdown of its own) and reaps the process.
+    void kill_now();
     // Everything read so far from `stream`, line by line.
     const std::vector<std::string>& lines(Stream stream) const;
 

@@ -17,7 +17,19 @@ JournalCheck check_journal(const std::string& json_text) {
     const proto::MatchJournal& journal = decoded.value;
     check.entries = static_cast<int>(journal.entries.size());
     int last_turn = -1;
+    int last_input_turn = -1;
     for (const auto& entry : journal.entries) {
+        int input_turn = -1;
+        if (const auto* stroke = std::get_if<proto::StrokeEntry>(&entry.event)) {
+            input_turn = stroke->turn;
+        } else if (const auto* expiry = std::get_if<proto::ClockExpiredEntry>(&entry.event)) {
+            input_turn = expiry->turn;
+        }
+        if (input_turn >= 0) {
+            check.turns_consecutive = check.turns_consecutive &&
+                                      (last_input_turn < 0 || input_turn == last_input_turn + 1);
+            last_input_turn = input_turn;
+        }
         if (const auto* stroke = std::get_if<proto::StrokeEntry>(&entry.event)) {
             ++check.strokes;
             check.turns_in_order = check.turns_in_order && stroke->turn > last_turn;

@@ -13,6 +13,9 @@ struct JournalCheck {
     int entries = 0;
     bool game_over = false;     // the last outcome ended the game
     bool turns_in_order = true; // each stroke's turn is greater than the previous one's
+    // each stroke's or clock expiry's turn is the previous one's plus one (no turn lost, none
+    // played twice)
+    bool turns_consecutive = true;
 };
 
 JournalCheck check_journal(const std::string& json_text);

@@ -256,6 +256,34 @@ TEST(Registry, RemovingARoomForgetsItsPlayers) {
     EXPECT_FALSE(registry.find_player(a.token));
 }
 
+TEST(Registry, ARestoredRoomKeepsItsCodeAndItsSeatsAreClaimedOnceByTokenKey) {
+    SeededRandom random(1);
+    TestRegistry registry(random, 1);
+    auto make = [](const std::string& code) {
+        return std::make_shared<DummyRoom>(DummyRoom{code});
+    };
+    ASSERT_TRUE(std::holds_alternative<std::shared_ptr<DummyRoom>>(registry.create_room(make)));
+    // Restored rooms are not bound by the room limit; a code is taken once.
+    const auto room = registry.add_room("QQQQQQ", make);
+    ASSERT_NE(room, nullptr);
+    EXPECT_EQ(room->code, "QQQQQQ");
+    EXPECT_EQ(registry.add_room("QQQQQQ", make), nullptr);
+    const std::int64_t id = registry.add_restored_seat("hash-of-t1", "QQQQQQ");
+    EXPECT_NE(id, registry.new_player().player_id);
+    EXPECT_FALSE(registry.claim_restored("t2", "hash-of-t2"));
+    const auto claimed = registry.claim_restored("t1", "hash-of-t1");
+    ASSERT_TRUE(claimed);
+    EXPECT_EQ(claimed->player_id, id);
+    EXPECT_EQ(claimed->token, "t1");
+    EXPECT_EQ(claimed->room_code, "QQQQQQ");
+    EXPECT_EQ(registry.find_player("t1")->player_id, id);
+    EXPECT_FALSE(registry.claim_restored("t1", "hash-of-t1")); // once
+    // Removing the room drops the claims nobody made.
+    (void)registry.add_restored_seat("hash-of-t3", "QQQQQQ");
+    registry.remove_room("QQQQQQ");
+    EXPECT_FALSE(registry.claim_restored("t3", "hash-of-t3"));
+}
+
 TEST(Registry, QuickMatchPairsWithinARuleSet) {
     SeededRandom random(1);
     TestRegistry registry(random, 2);

@@ -63,6 +63,30 @@ public:
         std::lock_guard lock(mutex_);
         players_.erase(token);
     }
+    // --- seats restored after a restart (ServerCore::restore_matches) ---
+    // A restored seat that the holder of a resume token may claim: the store knows only the
+    // token's hash (token_key, any string form of it). Returns the player id the room's seat waits
+    // for.
+    std::int64_t add_restored_seat(const std::string& token_key, const std::string& room_code) {
+        std::lock_guard lock(mutex_);
+        const std::int64_t id = next_player_id_++;
+        restored_[token_key] = {id, room_code};
+        return id;
+    }
+    // The player whose token hashes to token_key claims its restored seat: a player record with
+    // that token (so the seat is resumed as usual) replaces the claim. Empty if none waits.
+    std::optional<PlayerRecord> claim_restored(const std::string& token,
+                                               const std::string& token_key) {
+        std::lock_guard lock(mutex_);
+        const auto it = restored_.find(token_key);
+        if (it == restored_.end() || players_.count(token) != 0) {
+            return std::nullopt;
+        }
+        PlayerRecord record{it->second.first, token, it->second.second};
+        restored_.erase(it);
+        players_[token] = record;
+        return record;
+    }
     std::size_t player_count() const {
         std::lock_guard lock(mutex_);
         return players_.size();
@@ -85,6 +109,17 @@ public:
         rooms_[code] = room;
         return room;
     }
+    // A room under a given code (a room restored after a restart), or null if the code is taken.
+    // Not bound by the room limit: the room existed before.
+    std::shared_ptr<RoomT> add_room(const std::string& code, const RoomFactory& make) {
+        std::lock_guard lock(mutex_);
+        if (rooms_.count(code) != 0) {
+            return nullptr;
+        }
+        auto room = make(code);
+        rooms_[code] = room;
+        return room;
+    }
     std::shared_ptr<RoomT> find_room(const std::string& code) const {
         std::lock_guard lock(mutex_);
         const auto it = rooms_.find(code);
@@ -96,6 +131,7 @@ public:
         std::lock_guard lock(mutex_);
         rooms_.erase(code);
         std::erase_if(players_, [&](const auto& entry) { return entry.second.room_code == code; });
+        std::erase_if(restored_, [&](const auto& entry) { return entry.second.second == code; });
     }
     std::size_t room_count() const {
         std::lock_guard lock(mutex_);
@@ -158,6 +194,8 @@ private:
     std::size_t max_rooms_;
     std::int64_t next_player_id_ = 1;
     std::unordered_map<std::string, PlayerRecord> players_;
+    // Restored seats not yet claimed: token key -> (player id, room code).
+    std::unordered_map<std::string, std::pair<std::int64_t, std::string>> restored_;
     std::unordered_map<std::string, std::shared_ptr<RoomT>> rooms_;
     std::map<proto::RuleSet, std::deque<std::pair<std::int64_t, WaiterT>>> queues_;
 };

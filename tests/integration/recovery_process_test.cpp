@@ -1,0 +1,349 @@
+// Recovery after a restart (docs/server.md): carrom-server --data as a real process, bots playing
+// over real sockets (the in-process BotRunner, which resumes when told: the test drops and
+// resumes them around the restart with their resume tokens). kill -9 while a player aims, kill
+// -9 while a shot moves, SIGTERM with 20 matches running: the server restarts on the same port
+// and data, recovers the matches, the bots resume and finish, every journal replays clean with
+// consecutive turns.
+#include "harness.hpp"
+#include "journal_check.hpp"
+
+#include "client/child_process.hpp"
+
+#include "carrom/physics_version.hpp"
+
+#include <SQLiteCpp/SQLiteCpp.h>
+#include <boost/asio/connect.hpp>
+#include <boost/asio/io_context.hpp>
+#include <boost/asio/ip/tcp.hpp>
+#include <boost/asio/read.hpp>
+#include <boost/asio/write.hpp>
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <atomic>
+#include <filesystem>
+#include <future>
+#include <thread>
+
+#include <stdlib.h>
+
+namespace carrom::integration {
+namespace {
+
+using namespace std::chrono_literals;
+using client::testing::ChildProcess;
+namespace fs = std::filesystem;
+
+class TempDir {
+public:
+    TempDir() {
+        std::string pattern = (fs::temp_directory_path() / "carrom_recovery_XXXXXX").string();
+        path_ = ::mkdtemp(pattern.data());
+    }
+    ~TempDir() {
+        std::error_code ec;
+        fs::remove_all(path_, ec);
+    }
+    std::string file(const std::string& name) const { return (fs::path(path_) / name).string(); }
+
+private:
+    std::string path_;
+};
+
+// One plain HTTP/1.0 GET on 127.0.0.1: the body, or "" on failure.
+std::string get_body(std::uint16_t port, const std::string& target) {
+    boost::asio::io_context ioc;
+    boost::asio::ip::tcp::socket socket(ioc);
+    boost::system::error_code ec;
+    socket.connect({boost::asio::ip::make_address("127.0.0.1"), port}, ec);
+    if (ec) {
+        return {};
+    }
+    const std::string request = "GET " + target + " HTTP/1.0\r\nHost: localhost\r\n\r\n";
+    boost::asio::write(socket, boost::asio::buffer(request), ec);
+    std::string bytes;
+    boost::asio::read(socket, boost::asio::dynamic_buffer(bytes), ec);
+    const auto end = bytes.find("\r\n\r\n");
+    return end == std::string::npos ? std::string() : bytes.substr(end + 4);
+}
+
+// carrom-server --data on a port (0: any), logging at info to stderr.
+class ServerProcess {
+public:
+    ServerProcess(const std::string& data, std::uint16_t port)
+        : process_({CARROM_SERVER_PATH, "--host", "127.0.0.1", "--port", std::to_string(port),
+                    "--time-scale", "25", "--grace", "20", "--log-level", "info",
+                    "--max-connections-per-address", "1000", "--data", data}) {
+        const std::string prefix = "listening on 127.0.0.1:";
+        const auto line = process_.wait_line(ChildProcess::Stream::Out, prefix,
+                                             std::chrono::steady_clock::now() + 15s);
+        if (line) {
+            port_ = static_cast<std::uint16_t>(std::stoi(line->substr(prefix.size())));
+        }
+    }
+    std::uint16_t port() const { return port_; }
+    std::string url() const { return "ws://127.0.0.1:" + std::to_string(port_); }
+    ChildProcess& process() { return process_; }
+    // The number in the "recovered N matches" line of the log (-1 if none came).
+    int recovered() {
+        const auto deadline = std::chrono::steady_clock::now() + 10s;
+        while (auto line = process_.wait_line(ChildProcess::Stream::Err, "", deadline)) {
+            const auto at = line->find("recovered ");
+            if (at != std::string::npos && line->find(" matches", at) != std::string::npos) {
+                return std::stoi(line->substr(at + 10));
+            }
+        }
+        return -1;
+    }
+
+private:
+    ChildProcess process_;
+    std::uint16_t port_ = 0;
+};
+
+std::unique_ptr<bots::Strategy> sampling(std::uint64_t seed) {
+    bots::StrategyOptions options;
+    options.name = "sampling";
+    options.seed = seed;
+    return std::get<std::unique_ptr<bots::Strategy>>(bots::make_strategy(options));
+}
+
+// Two bots in one room; `shots` counts the strokes the creator saw played (shot_result).
+struct Pair {
+    Pair(const std::string& url, std::uint64_t seed)
+        : first(sampling(seed * 10 + 1)), second(sampling(seed * 10 + 2)) {
+        bots::BotConfig config;
+        config.url = url;
+        config.budget.time = 60ms;
+        config.name = "creator";
+        config.mode = bots::JoinMode::Create;
+        config.create.rule_set = proto::RuleSet::Icf; // one board: tens of strokes
+        config.create.options.boards = 1;
+        config.create.options.shot_clock_s = 4.0;
+        creator = std::make_unique<bots::BotRunner>(config, *first);
+        creator->on_message = [this](const proto::ServerMessage& m) {
+            if (std::holds_alternative<proto::ShotResult>(m)) {
+                ++shots;
+            }
+            if (hook) {
+                hook(m);
+            }
+        };
+        creator->start();
+        const auto deadline = std::chrono::steady_clock::now() + 10s;
+        while (creator->summary().room_code.empty() && !creator->done() &&
+               std::chrono::steady_clock::now() < deadline) {
+            creator->step(20ms);
+        }
+        config.name = "joiner";
+        config.mode = bots::JoinMode::Join;
+        config.code = creator->summary().room_code;
+        joiner = std::make_unique<bots::BotRunner>(config, *second);
+        joiner->start();
+    }
+
+    // Steps both bots until `until` or both are done or the timeout passes.
+    void run(const std::function<bool()>& until, std::chrono::milliseconds timeout) {
+        const auto deadline = std::chrono::steady_clock::now() + timeout;
+        while (!(creator->done() && joiner->done()) && !until() &&
+               std::chrono::steady_clock::now() < deadline) {
+            creator->step(2ms);
+            if (until()) {
+                break;
+            }
+            joiner->step(2ms);
+        }
+    }
+    void drop() {
+        creator->drop();
+        joiner->drop();
+    }
+    void resume() {
+        creator->resume();
+        joiner->resume();
+    }
+    void expect_finished() const {
+        for (const auto* bot : {creator.get(), joiner.get()}) {
+            EXPECT_TRUE(bot->summary().finished)
+                << bot->summary().room_code << ": " << bot->summary().failure;
+            EXPECT_EQ(bot->summary().resumes, 1);
+            EXPECT_EQ(bot->summary().errors.count("bad_token"), 0U);
+        }
+    }
+
+    std::unique_ptr<bots::Strategy> first;
+    std::unique_ptr<bots::Strategy> second;
+    std::unique_ptr<bots::BotRunner> creator;
+    std::unique_ptr<bots::BotRunner> joiner;
+    std::atomic<int> shots{0};
+    std::function<void(const proto::ServerMessage&)> hook;
+};
+
+// Every match the creator played: finished, and its journal replays clean with consecutive
+// turns. Returns the strokes.
+int expect_journals_clean(std::uint16_t port, std::size_t count) {
+    const auto json = nlohmann::json::parse(get_body(port, "/matches?player=creator&limit=100"));
+    const auto& matches = json["matches"];
+    EXPECT_EQ(matches.size(), count);
+    int strokes = 0;
+    for (const auto& m : matches) {
+        const std::string id = m["id"];
+        EXPECT_FALSE(m["result"].is_null()) << id;
+        const JournalCheck check = check_journal(get_body(port, "/matches/" + id));
+        EXPECT_TRUE(check.problem.empty()) << id << ": " << check.problem;
+        EXPECT_TRUE(check.game_over) << id;
+        EXPECT_TRUE(check.turns_consecutive) << id;
+        strokes += check.strokes;
+    }
+    return strokes;
+}
+
+// Plays a match to its fourth stroke, kills the server (SIGKILL) when `moment` says so, restarts
+// it on the same port and data; the bots resume and finish.
+void kill_and_recover(const std::function<bool(const proto::ServerMessage&)>& moment) {
+    TempDir dir;
+    auto server = std::make_unique<ServerProcess>(dir.file("c.db"), 0);
+    const std::uint16_t port = server->port();
+    ASSERT_NE(port, 0);
+    Pair pair(server->url(), 7);
+    ASSERT_FALSE(pair.creator->summary().room_code.empty());
+    bool killed = false;
+    pair.hook = [&](const proto::ServerMessage& m) {
+        if (!killed && pair.shots >= 3 && moment(m)) {
+            server->process().kill_now();
+            killed = true;
+            pair.drop(); // before the creator's step sees its connection lost
+        }
+    };
+    pair.run([&] { return killed; }, 20s);
+    ASSERT_TRUE(killed) << pair.shots << " shots; " << pair.creator->summary().failure << "; "
+                        << pair.joiner->summary().failure;
+    pair.hook = nullptr;
+
+    server = std::make_unique<ServerProcess>(dir.file("c.db"), port);
+    ASSERT_EQ(server->port(), port);
+    EXPECT_EQ(server->recovered(), 1);
+    pair.resume();
+    pair.run([] { return false; }, 25s);
+    pair.expect_finished();
+    if (::testing::Test::HasFailure()) {
+        (void)server->process().wait_exit(std::chrono::steady_clock::now() + 100ms);
+        for (const auto& line : server->process().lines(ChildProcess::Stream::Err)) {
+            std::fprintf(stderr, "server: %s\n", line.c_str());
+        }
+    }
+    EXPECT_GT(expect_journals_clean(port, 1), 3);
+}
+
+TEST(RecoveryProcess, KilledWhileAPlayerAimsTheBotsResumeAndFinish) {
+    kill_and_recover([](const proto::ServerMessage& m) {
+        const auto* event = std::get_if<proto::Event>(&m);
+        return event != nullptr && std::holds_alternative<proto::TurnEvent>(*event);
+    });
+}
+
+TEST(RecoveryProcess, KilledWhileAShotMovesTheBotsResumeAndFinish) {
+    kill_and_recover(
+        [](const proto::ServerMessage& m) { return std::holds_alternative<proto::Snapshot>(m); });
+}
+
+TEST(RecoveryProcess, AJournalOfAnotherPhysicsVersionIsNotResumedAndStaysInTheStore) {
+    TempDir dir;
+    auto server = std::make_unique<ServerProcess>(dir.file("c.db"), 0);
+    const std::uint16_t port = server->port();
+    ASSERT_NE(port, 0);
+    Pair pair(server->url(), 9);
+    pair.run([&] { return pair.shots >= 2; }, 20s);
+    ASSERT_GE(pair.shots, 2);
+    server->process().stop(10s);
+    pair.drop();
+    std::string id;
+    {
+        // The match as another physics version would have written it.
+        SQLite::Database db(dir.file("c.db"), SQLite::OPEN_READWRITE);
+        SQLite::Statement read(db, "SELECT id, head FROM matches");
+        ASSERT_TRUE(read.executeStep());
+        id = read.getColumn(0).getString();
+        auto head = nlohmann::json::parse(read.getColumn(1).getString());
+        auto& versions = head.contains("versions") ? head["versions"] : head["match"]["versions"];
+        versions["physics"] = versions["physics"].get<int>() + 1;
+        SQLite::Statement write(db, "UPDATE matches SET head = ?, physics_version = "
+                                    "physics_version + 1 WHERE id = ?");
+        write.bind(1, head.dump());
+        write.bind(2, id);
+        ASSERT_EQ(write.exec(), 1);
+    }
+    server = std::make_unique<ServerProcess>(dir.file("c.db"), port);
+    ASSERT_EQ(server->port(), port);
+    EXPECT_EQ(server->recovered(), 0);
+    bool logged = false;
+    for (const auto& line : server->process().lines(ChildProcess::Stream::Err)) {
+        logged = logged || (line.find("match " + id + " not recovered (left in the store)") !=
+                                std::string::npos &&
+                            line.find("physics") != std::string::npos);
+    }
+    EXPECT_TRUE(logged);
+    const auto journal = nlohmann::json::parse(get_body(port, "/matches/" + id));
+    EXPECT_EQ(journal["match"]["versions"]["physics"].get<int>(), kPhysicsVersion + 1);
+    const auto list = nlohmann::json::parse(get_body(port, "/matches?player=creator&limit=5"));
+    ASSERT_EQ(list["matches"].size(), 1U);
+    EXPECT_TRUE(list["matches"][0]["finished_ms"].is_null());
+    // Its players' tokens are unknown: no seat to give back.
+    pair.creator->resume();
+    pair.creator->run_until_done(5s);
+    EXPECT_EQ(pair.creator->summary().errors.count("bad_token"), 1U);
+    EXPECT_NE(pair.creator->summary().failure.find("refused the resume token"), std::string::npos)
+        << pair.creator->summary().failure;
+}
+
+TEST(RecoveryProcess, SigtermWithTwentyMatchesRunningAllTwentyFinishAfterTheRestart) {
+    TempDir dir;
+    auto server = std::make_unique<ServerProcess>(dir.file("c.db"), 0);
+    const std::uint16_t port = server->port();
+    ASSERT_NE(port, 0);
+    constexpr int kMatches = 20;
+    std::vector<std::unique_ptr<Pair>> pairs;
+    for (int i = 0; i < kMatches; ++i) {
+        pairs.push_back(std::make_unique<Pair>(server->url(), static_cast<std::uint64_t>(100 + i)));
+        ASSERT_FALSE(pairs.back()->creator->summary().room_code.empty());
+    }
+    auto run_all = [&](bool to_the_end, std::chrono::milliseconds timeout) {
+        std::vector<std::future<void>> runs;
+        for (auto& pair : pairs) {
+            Pair* p = pair.get();
+            runs.push_back(std::async(std::launch::async, [p, to_the_end, timeout] {
+                p->run([p, to_the_end] { return !to_the_end && p->shots >= 2; }, timeout);
+            }));
+        }
+        for (auto& run : runs) {
+            run.get();
+        }
+    };
+    run_all(false, 15s);
+    for (const auto& pair : pairs) {
+        ASSERT_GE(pair->shots, 2) << pair->creator->summary().failure;
+        ASSERT_FALSE(pair->creator->done()) << "a match ended before the restart";
+    }
+    server->process().stop(10s); // SIGTERM: connections closed, the store flushed
+    for (auto& pair : pairs) {
+        pair->drop();
+    }
+
+    server = std::make_unique<ServerProcess>(dir.file("c.db"), port);
+    ASSERT_EQ(server->port(), port);
+    EXPECT_EQ(server->recovered(), kMatches);
+    for (auto& pair : pairs) {
+        pair->resume();
+    }
+    run_all(true, 28s);
+    for (const auto& pair : pairs) {
+        pair->expect_finished();
+    }
+    const int strokes = expect_journals_clean(port, kMatches);
+    EXPECT_GT(strokes, 3 * kMatches);
+    std::fprintf(stderr, "%d strokes; first match's end: %s\n", strokes,
+                 pairs[0]->creator->summary().last_reason.c_str());
+}
+
+} // namespace
+} // namespace carrom::integration
