@@ -291,6 +291,30 @@ TEST_F(BotRunnerTest, LostConnectionInARoomResumesByItselfAndPlaysTheDueShotAgai
     EXPECT_EQ(notices.back().rfind("Resumed seat 0 in room ABCDEF (try ", 0), 0u);
 }
 
+TEST_F(BotRunnerTest, AGameThatEndedWhileAwayCountsOnResume) {
+    BotConfig config;
+    config.reconnect = {1ms, 1ms, 5000ms};
+    start(config);
+    const std::string token(32, 'f');
+    deliver(proto::Welcome{1, 7, token, 0});
+    deliver(room_for(match_, 1, proto::Phase::Moving));
+    wire_.status = {net::ConnectionState::Closed, "lost", 0};
+    ASSERT_TRUE(step_until(*runner_, [&] { return wire_.opened == 2; }));
+    deliver(proto::Welcome{1, 7, token, 0});
+    proto::RoomState over = room_for(match_, 1, proto::Phase::GameOver);
+    over.winner = 1;
+    over.scores = {40, 150};
+    deliver(over);
+    EXPECT_TRUE(runner_->done());
+    const auto& summary = runner_->summary();
+    EXPECT_TRUE(summary.finished) << summary.failure;
+    EXPECT_EQ(summary.resumes, 1);
+    EXPECT_EQ(summary.games, 1);
+    EXPECT_EQ(summary.wins, 1);
+    EXPECT_EQ(summary.scores, (std::vector<int>{40, 150}));
+    EXPECT_EQ(summary.last_reason, "ended_while_away");
+}
+
 TEST_F(BotRunnerTest, GivesUpNamingTheSeatOnceTheResumeTimeIsOver) {
     BotConfig config;
     config.reconnect = {2ms, 8ms, 60ms};

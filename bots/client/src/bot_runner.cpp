@@ -212,6 +212,8 @@ void BotRunner::send_room_request() {
 }
 
 void BotRunner::on_room_state(const proto::RoomState& room) {
+    const bool missed_game_end = resuming_ && room.phase == proto::Phase::GameOver && room_ &&
+                                 room_->phase != proto::Phase::GameOver;
     if (resuming_) {
         resuming_ = false;
         ++summary_.resumes;
@@ -226,6 +228,10 @@ void BotRunner::on_room_state(const proto::RoomState& room) {
     room_ = room;
     summary_.room_code = room.code;
     summary_.seat = room.you;
+    if (missed_game_end) { // the game ended while this bot was away: its game_end is gone
+        on_game_end(proto::GameEndEvent{room.winner, "ended_while_away", room.scores});
+        return;
+    }
     maybe_play();
 }
 
