@@ -29,10 +29,19 @@ std::string temp_path(const std::string& name) {
 // carrom-server on 127.0.0.1 with an ephemeral port and these extra options.
 class ServerProcess {
 public:
-    explicit ServerProcess(std::vector<std::string> extra) {
-        std::vector<std::string> argv{
-            CARROM_SERVER_PATH, "--host", "127.0.0.1",   "--port", "0", "--time-scale", "25",
-            "--shot-clock",     "0",      "--log-level", "warn"};
+    // `port` 0: an ephemeral one.
+    explicit ServerProcess(std::vector<std::string> extra, int port = 0) {
+        std::vector<std::string> argv{CARROM_SERVER_PATH,
+                                      "--host",
+                                      "127.0.0.1",
+                                      "--port",
+                                      std::to_string(port),
+                                      "--time-scale",
+                                      "25",
+                                      "--shot-clock",
+                                      "0",
+                                      "--log-level",
+                                      "warn"};
         argv.insert(argv.end(), extra.begin(), extra.end());
         process_ = std::make_unique<ChildProcess>(argv);
         const std::string prefix = "listening on 127.0.0.1:";
@@ -259,6 +268,36 @@ TEST(Reconnect, BotStopsWhenTheServerNoLongerHoldsTheSeat) {
     EXPECT_EQ(failure.rfind("The server no longer holds seat 0 in room " + bots.code, 0), 0u)
         << failure;
     EXPECT_EQ(a["errors"].value("bad_token", 0), 1);
+}
+
+TEST(Reconnect, BotsRetryThroughAServerRestartAndStopAtTheLostSeat) {
+    // Without a store the restarted server no longer knows the match: close 1012, tries while
+    // the port is closed, then bad_token from the new process.
+    auto server = std::make_unique<ServerProcess>(std::vector<std::string>{"--grace", "30"});
+    ASSERT_NE(server->port(), 0);
+    const int port = server->port();
+    BotPair bots(server->url(), {"--resume-for", "30"});
+    ASSERT_EQ(bots.code.size(), 6u) << log_of(*bots.creator);
+    std::this_thread::sleep_for(1500ms);
+    server->process().stop(); // SIGTERM
+    std::this_thread::sleep_for(1500ms);
+    server = std::make_unique<ServerProcess>(std::vector<std::string>{"--grace", "30"}, port);
+    ASSERT_EQ(server->port(), port);
+    for (ChildProcess* bot : {bots.creator.get(), bots.joiner.get()}) {
+        const auto s = BotPair::summary(*bot);
+        ASSERT_TRUE(s.is_object()) << log_of(*bot);
+        EXPECT_EQ(s["ok"], false);
+        const std::string failure = s["failure"];
+        EXPECT_EQ(failure.rfind("The server no longer holds seat ", 0), 0u) << failure;
+        EXPECT_NE(failure.find("in room " + bots.code + " (bad_token: "), std::string::npos)
+            << failure;
+        EXPECT_EQ(s["errors"].value("shutting_down", 0), 1) << s.dump();
+        std::string log;
+        for (const auto& line : bot->lines(ChildProcess::Stream::Out)) {
+            log += line + "\n";
+        }
+        EXPECT_NE(log.find("code 1012: the server is restarting"), std::string::npos) << log;
+    }
 }
 
 } // namespace
