@@ -44,7 +44,7 @@ TEST(ReconnectMatch, ClientResumesThroughACutAndFinishesTheGame) {
     const std::string prefix = "listening on 127.0.0.1:";
     ChildProcess server({CARROM_SERVER_PATH, "--host", "127.0.0.1", "--port", "0", "--shot-clock",
                          "0", "--time-scale", "25", "--idle-timeout", "2", "--grace", "20",
-                         "--log-level", "warn"});
+                         "--log-level", "warn", "--data", "none"});
     const std::string server_port =
         after(server.wait_line(ChildProcess::Stream::Out, prefix, Clock::now() + 15s), prefix);
     ASSERT_FALSE(server_port.empty());

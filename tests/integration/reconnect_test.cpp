@@ -41,7 +41,9 @@ public:
                                       "--shot-clock",
                                       "0",
                                       "--log-level",
-                                      "warn"};
+                                      "warn",
+                                      "--data",
+                                      "none"};
         argv.insert(argv.end(), extra.begin(), extra.end());
         process_ = std::make_unique<ChildProcess>(argv);
         const std::string prefix = "listening on 127.0.0.1:";
