@@ -84,6 +84,7 @@ int main(int argc, char** argv) {
     int boards = 0;
     double shot_clock_s = -1.0;
     double timeout_s = 3600.0;
+    double resume_for_s = 65.0;
     int think_ms = 300;
 
     CLI::App app{"carrom-bot: a headless carrom player (prints a JSON summary at the end)"};
@@ -120,6 +121,10 @@ int main(int argc, char** argv) {
         ->check(CLI::Range(0, 60000));
     app.add_option("--timeout", timeout_s, "Give up after this many seconds")
         ->check(CLI::Range(0.1, 864000.0));
+    app.add_option("--resume-for", resume_for_s,
+                   "After a lost connection, seconds to keep trying to resume the seat (the "
+                   "server's --grace plus a margin; 0 = fail at once)")
+        ->check(CLI::Range(0.0, 86400.0));
     app.add_option("--log-level", log_level, "trace, debug, info, warn, error, off")
         ->check(CLI::IsMember({"trace", "debug", "info", "warn", "error", "off"}));
     CLI11_PARSE(app, argc, argv);
@@ -150,6 +155,9 @@ int main(int argc, char** argv) {
         config.create.options.shot_clock_s = shot_clock_s;
     }
     config.budget.time = std::chrono::milliseconds(think_ms);
+    config.auto_resume = resume_for_s > 0.0;
+    config.reconnect.give_up_after =
+        std::chrono::milliseconds(static_cast<std::int64_t>(resume_for_s * 1000.0));
 
     if (!script_path.empty()) {
         std::string text;
@@ -186,6 +194,7 @@ int main(int argc, char** argv) {
             spdlog::warn("error {}: {}", error->code, error->message);
         }
     };
+    runner.on_notice = [](const std::string& text) { spdlog::warn("{}", text); };
     runner.start();
     runner.run_until_done(std::chrono::milliseconds(static_cast<std::int64_t>(timeout_s * 1000.0)));
     const auto& summary = runner.summary();

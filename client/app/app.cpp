@@ -14,6 +14,7 @@
 #include "hud_painter.hpp"
 #include "lobby_view.hpp"
 #include "network_link.hpp"
+#include "reconnect_panel.hpp"
 #include "sound_player.hpp"
 #include "text.hpp"
 
@@ -96,7 +97,7 @@ public:
           geometry_(make_board_geometry(physics_)), model_(physics_), aim_(physics_),
           board_painter_(geometry_), hud_(font), lobby_(font),
           sound_(!options.mute && options.bench_frames == 0 && options.screenshot_path.empty()),
-          session_(make_factory(), options.name) {
+          session_(make_factory(), options.name, network_session_config()) {
         if (options.autoplay) {
             auto_player_.emplace(*options.autoplay, 1);
         }
@@ -152,6 +153,7 @@ private:
     HudPainter hud_;
     LobbyView lobby_;
     GameOverPanel game_over_;
+    ReconnectPanel reconnect_panel_;
     SoundPlayer sound_;
     ClientSession session_;
     sf::RenderWindow window_;
@@ -284,8 +286,8 @@ void App::sync_aim(double now) {
 
 void App::update(double now) {
     for (const proto::ServerMessage& m : session_.update(now)) {
-        if (std::holds_alternative<proto::Error>(m)) {
-            shot_sent_turn_ = -1; // a rejected shot: aim again
+        if (std::holds_alternative<proto::Error>(m) || std::holds_alternative<proto::Welcome>(m)) {
+            shot_sent_turn_ = -1; // a rejected shot, or one lost with the link: aim again if due
         }
         if (std::holds_alternative<proto::ShotResult>(m)) {
             ++shots_seen_;
@@ -294,6 +296,9 @@ void App::update(double now) {
             room_ = *room;
         }
         model_.handle(m, now);
+    }
+    if (session_.seat_lost() && model_.view().in_room) {
+        back_to_lobby(); // the server no longer holds our seat: the lobby says so
     }
     for (const ClientSession::PongSample& p : session_.take_pongs()) {
         model_.server_clock().round_trip(p.server_ms, p.sent_s, p.received_s);
@@ -393,8 +398,11 @@ void App::draw(double now) {
         board_painter_.draw_board(window_, blitter_, m, band);
         board_painter_.draw_pieces(window_, blitter_, m, bodies_);
         draw_aim();
-        ConnectionLine line{session_.status_text(),
-                            phase == SessionPhase::InRoom || phase == SessionPhase::Joining,
+        // While the link is lost the card over the board has the details; the bar its title.
+        const bool linked = phase == SessionPhase::InRoom || phase == SessionPhase::Joining;
+        const ReconnectText card =
+            reconnect_text(phase, session_.reconnect_info(now), session_.status_text());
+        ConnectionLine line{linked ? session_.status_text() : card.title, linked,
                             session_.rtt_ms()};
         hud_.draw(window_, blitter_, layout_, model_, line, now);
         if (model_.view().phase == proto::Phase::GameOver) {
@@ -403,8 +411,7 @@ void App::draw(double now) {
         }
         if (phase == SessionPhase::Reconnecting || phase == SessionPhase::Failed ||
             phase == SessionPhase::Connecting || phase == SessionPhase::Greeting) {
-            draw_status_panel(phase == SessionPhase::Failed ? "Disconnected" : "Reconnecting",
-                              session_.status_text());
+            reconnect_panel_.draw(window_, hud_.texts(), layout_.board, card);
         }
         return;
     }

@@ -3,6 +3,7 @@
 #include "carrom/net/connection.hpp"
 #include "carrom/net/ws_url.hpp"
 
+#include <random>
 #include <variant>
 
 namespace carrom::client::app {
@@ -60,6 +61,12 @@ std::string check_url(const std::string& url) {
         return *problem;
     }
     return {};
+}
+
+SessionConfig network_session_config() {
+    SessionConfig config;
+    config.jitter_seed = std::random_device{}();
+    return config;
 }
 
 LinkFactory make_network_link_factory(const std::string& url) {

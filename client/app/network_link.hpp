@@ -1,6 +1,7 @@
 #pragma once
 // The factory for real network links (WebSocket, net::Connection from net/).
 
+#include "carrom/client/client_session.hpp"
 #include "carrom/client/connection.hpp"
 
 #include <string>
@@ -10,5 +11,7 @@ namespace carrom::client::app {
 // url: ws://HOST:PORT[/path]. Returns an empty string if it looks right, else a sentence.
 std::string check_url(const std::string& url);
 LinkFactory make_network_link_factory(const std::string& url);
+// The session's settings for the window: the defaults, with jitter on the reconnect back-off.
+SessionConfig network_session_config();
 
 } // namespace carrom::client::app

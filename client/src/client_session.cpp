@@ -39,7 +39,18 @@ bool is_room_message(const proto::ServerMessage& m) {
 } // namespace
 
 ClientSession::ClientSession(LinkFactory factory, std::string name, const SessionConfig& config)
-    : factory_(std::move(factory)), name_(std::move(name)), config_(config) {}
+    : factory_(std::move(factory)), name_(std::move(name)), config_(config),
+      jitter_(config.jitter_seed.value_or(0)) {}
+
+ReconnectInfo ClientSession::reconnect_info(double local_s) const {
+    ReconnectInfo info;
+    info.attempt = attempts_;
+    info.trying = link_ != nullptr;
+    info.next_try_in_s = link_ ? 0.0 : std::max(0.0, retry_at_s_ - local_s);
+    info.gives_up_in_s = std::max(0.0, lost_since_s_ + config_.give_up_after_s - local_s);
+    info.reason = lost_reason_;
+    return info;
+}
 
 void ClientSession::start(double local_s) {
     open_link(local_s);
@@ -62,6 +73,7 @@ void ClientSession::open_link(double local_s) {
 void ClientSession::request(const RoomRequest& request) {
     request_ = request;
     request_sent_ = false;
+    seat_lost_ = false;
     if (phase_ == SessionPhase::Lobby) {
         send_request();
     }
@@ -129,6 +141,7 @@ void ClientSession::on_link_lost(double local_s, const std::string& why) {
     }
     ++attempts_;
     const std::string reason = as_sentence(why.empty() ? "The connection was lost" : why);
+    lost_reason_ = reason;
     if (local_s - lost_since_s_ >= config_.give_up_after_s) {
         phase_ = SessionPhase::Failed;
         status_ = reason + " Gave up after " + seconds_text(local_s - lost_since_s_) + ".";
@@ -136,11 +149,15 @@ void ClientSession::on_link_lost(double local_s, const std::string& why) {
     }
     retry_delay_s_ = attempts_ == 1 ? config_.first_retry_s
                                     : std::min(2.0 * retry_delay_s_, config_.max_retry_s);
-    retry_at_s_ = local_s + retry_delay_s_;
+    double delay = retry_delay_s_;
+    if (config_.jitter_seed) {
+        delay = std::uniform_real_distribution<double>(delay / 2.0, delay)(jitter_);
+    }
+    retry_at_s_ = local_s + delay;
     resuming_ = resuming_ || (!token_.empty() &&
                               (phase_ == SessionPhase::InRoom || phase_ == SessionPhase::Joining));
     phase_ = ever_welcomed_ ? SessionPhase::Reconnecting : SessionPhase::Connecting;
-    status_ = reason + " Retrying in " + seconds_text(retry_delay_s_) + " (attempt " +
+    status_ = reason + " Retrying in " + seconds_text(delay) + " (attempt " +
               std::to_string(attempts_) + ")";
 }
 
@@ -228,11 +245,12 @@ bool ClientSession::handle(const proto::ServerMessage& m, double local_s) {
             phase_ = SessionPhase::Failed;
             status_ = "The server speaks another protocol version";
         } else if (error->code == proto::code::kBadToken) {
+            seat_lost_ = seat_lost_ || resuming_;
             resuming_ = false;
             token_.clear();
             phase_ = SessionPhase::Lobby;
             request_.reset();
-            status_ = "Connected (your old seat is gone)";
+            status_ = "Connected (your old seat is gone: the server no longer holds it)";
         } else if (phase_ == SessionPhase::Joining && refuses_request(error->code)) {
             phase_ = SessionPhase::Lobby;
             request_.reset();

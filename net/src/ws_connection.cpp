@@ -115,7 +115,8 @@ private:
             if (status_.state == ConnectionState::Closed) {
                 return;
             }
-            status_ = {state, std::move(detail)};
+            status_.state = state;
+            status_.detail = std::move(detail);
             ++state_version_;
         }
         cv_.notify_all();
@@ -206,6 +207,10 @@ private:
         if (ec) {
             const bool ours = closing_;
             const auto reason = ws_.reason();
+            if (!ours && ec == websocket::error::closed) {
+                std::lock_guard lock(mutex_);
+                status_.close_code = reason.code;
+            }
             fail(ours ? std::string("Closed by this client.")
                       : read_error_text(url_, ec, reason.code,
                                         std::string(reason.reason.data(), reason.reason.size())));
@@ -304,7 +309,7 @@ private:
 class ClosedConnection final : public Connection {
 public:
     explicit ClosedConnection(std::string detail)
-        : status_{ConnectionState::Closed, std::move(detail)} {}
+        : status_{ConnectionState::Closed, std::move(detail), 0} {}
     void send(const proto::ClientMessage&) override {}
     void send_text(const std::string&) override {}
     std::vector<proto::ServerMessage> poll() override { return {}; }

@@ -83,6 +83,8 @@ std::string close_code_meaning(std::uint16_t close_code) {
         return "a message was too large";
     case 1011:
         return "the server had an internal error";
+    case 1012:
+        return "the server is restarting";
     case 1013:
         return "the server is full, try again later";
     case 4001:

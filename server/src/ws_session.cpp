@@ -19,6 +19,10 @@ namespace websocket = beast::websocket;
 
 namespace {
 
+// Sent with shutting_down before close 1012 "restarting" (SIGINT/SIGTERM).
+constexpr const char* kRestartingText =
+    "The server is restarting; reconnect with your resume token.";
+
 // Frames above this are refused by Beast itself (close 1009 without an error message); frames
 // between max_message_bytes and this get a "too_large" error first.
 std::size_t hard_frame_limit(std::size_t max_message_bytes) {
@@ -74,8 +78,8 @@ void WsSession::on_accept(beast::error_code ec) {
     if (open > core_.settings.max_connections || core_.stopping) {
         core_.metrics.rejected_connections_total.fetch_add(1, std::memory_order_relaxed);
         if (core_.stopping) {
-            fail(proto::code::kShuttingDown, "The server is shutting down.",
-                 proto::kCloseGoingAway);
+            send_error(proto::code::kShuttingDown, kRestartingText);
+            begin_close(proto::kCloseRestarting, "restarting");
         } else {
             fail(proto::code::kServerFull, "The server is full; try again later.",
                  proto::kCloseTryAgainLater);
@@ -455,8 +459,8 @@ void WsSession::close(int close_code, std::string reason) {
 
 void WsSession::shutdown() {
     asio::post(ws_.get_executor(), [self = shared_from_this()] {
-        self->fail(proto::code::kShuttingDown, "The server is shutting down.",
-                   proto::kCloseGoingAway);
+        self->send_error(proto::code::kShuttingDown, kRestartingText);
+        self->begin_close(proto::kCloseRestarting, "restarting");
     });
 }
 

@@ -19,6 +19,7 @@ struct FakeWire {
     std::deque<proto::ServerMessage> inbox;
     net::ConnectionStatus status{net::ConnectionState::Open, "fake"};
     int opened = 0;
+    bool refuse = false; // connections opened from now on are refused
 };
 
 class FakeConnection final : public net::Connection {
@@ -65,7 +66,10 @@ protected:
         runner_ = std::make_unique<BotRunner>(std::move(config), strategy_);
         runner_->connect = [this](const BotConfig&) {
             ++wire_.opened;
-            wire_.status = {net::ConnectionState::Open, "fake"};
+            wire_.status = wire_.refuse
+                               ? net::ConnectionStatus{net::ConnectionState::Closed,
+                                                       "Could not reach x:1: refused.", 0}
+                               : net::ConnectionStatus{net::ConnectionState::Open, "fake", 0};
             return std::make_unique<FakeConnection>(wire_);
         };
         runner_->start();
@@ -240,8 +244,103 @@ TEST_F(BotRunnerTest, ResumeSendsTheTokenAndKeepsTheSeat) {
     const auto requests = sent<proto::QuickMatch>().size();
     deliver(proto::Welcome{1, 7, token, 0});
     EXPECT_EQ(sent<proto::QuickMatch>().size(), requests); // no new room request
+    EXPECT_EQ(runner_->summary().resumes, 0);              // not before the room is back
+    deliver(room_for(match_, 0, proto::Phase::Moving));
     EXPECT_EQ(runner_->summary().resumes, 1);
     EXPECT_FALSE(runner_->done());
+}
+
+// Steps until `done` or 2 s pass.
+template <class F> bool step_until(BotRunner& runner, F done) {
+    const auto deadline = std::chrono::steady_clock::now() + 2s;
+    while (!done() && std::chrono::steady_clock::now() < deadline) {
+        runner.step(1ms);
+    }
+    return done();
+}
+
+TEST_F(BotRunnerTest, LostConnectionInARoomResumesByItselfAndPlaysTheDueShotAgain) {
+    BotConfig config;
+    config.reconnect = {2ms, 8ms, 5000ms};
+    start(config);
+    std::vector<std::string> notices;
+    runner_->on_notice = [&](const std::string& text) { notices.push_back(text); };
+    const std::string token(32, 'f');
+    deliver(proto::Welcome{1, 7, token, 0});
+    deliver(room_for(match_, 0, proto::Phase::Aiming));
+    ASSERT_EQ(sent<proto::Shoot>().size(), 1u); // into a connection that is about to break
+    wire_.refuse = true;
+    wire_.status = {net::ConnectionState::Closed,
+                    "The server closed the connection (code 1012: the server is restarting).",
+                    1012};
+    ASSERT_TRUE(step_until(*runner_, [&] { return wire_.opened >= 3; })); // two refused tries
+    EXPECT_FALSE(runner_->done());
+    wire_.refuse = false;
+    ASSERT_TRUE(
+        step_until(*runner_, [&] { return wire_.status.state == net::ConnectionState::Open; }));
+    EXPECT_EQ(std::get<proto::Hello>(wire_.sent.back()).resume_token, token);
+    deliver(proto::Welcome{1, 7, token, 0});
+    deliver(room_for(match_, 0, proto::Phase::Aiming)); // the shot never arrived: still due
+    EXPECT_EQ(runner_->summary().resumes, 1);
+    EXPECT_EQ(sent<proto::Shoot>().size(), 2u);
+    EXPECT_FALSE(runner_->done());
+    ASSERT_GE(notices.size(), 3u);
+    EXPECT_EQ(notices.front(),
+              "Connection lost: The server closed the connection (code 1012: the server is "
+              "restarting). Resuming seat 0 in room ABCDEF for up to 5.0 s.");
+    EXPECT_EQ(notices.back().rfind("Resumed seat 0 in room ABCDEF (try ", 0), 0u);
+}
+
+TEST_F(BotRunnerTest, AGameThatEndedWhileAwayCountsOnResume) {
+    BotConfig config;
+    config.reconnect = {1ms, 1ms, 5000ms};
+    start(config);
+    const std::string token(32, 'f');
+    deliver(proto::Welcome{1, 7, token, 0});
+    deliver(room_for(match_, 1, proto::Phase::Moving));
+    wire_.status = {net::ConnectionState::Closed, "lost", 0};
+    ASSERT_TRUE(step_until(*runner_, [&] { return wire_.opened == 2; }));
+    deliver(proto::Welcome{1, 7, token, 0});
+    proto::RoomState over = room_for(match_, 1, proto::Phase::GameOver);
+    over.winner = 1;
+    over.scores = {40, 150};
+    deliver(over);
+    EXPECT_TRUE(runner_->done());
+    const auto& summary = runner_->summary();
+    EXPECT_TRUE(summary.finished) << summary.failure;
+    EXPECT_EQ(summary.resumes, 1);
+    EXPECT_EQ(summary.games, 1);
+    EXPECT_EQ(summary.wins, 1);
+    EXPECT_EQ(summary.scores, (std::vector<int>{40, 150}));
+    EXPECT_EQ(summary.last_reason, "ended_while_away");
+}
+
+TEST_F(BotRunnerTest, GivesUpNamingTheSeatOnceTheResumeTimeIsOver) {
+    BotConfig config;
+    config.reconnect = {2ms, 8ms, 60ms};
+    start(config);
+    deliver(proto::Welcome{1, 7, std::string(32, 'f'), 0});
+    deliver(room_for(match_, 1, proto::Phase::Aiming));
+    wire_.refuse = true;
+    wire_.status = {net::ConnectionState::Closed, "The connection to x:1 was lost (reset).", 0};
+    ASSERT_TRUE(step_until(*runner_, [&] { return runner_->done(); }));
+    const std::string failure = runner_->summary().failure;
+    EXPECT_EQ(failure.rfind("Gave up resuming seat 1 in room ABCDEF after 0.", 0), 0u) << failure;
+    EXPECT_NE(failure.find("; the last: Could not reach x:1: refused."), std::string::npos)
+        << failure;
+    EXPECT_GE(wire_.opened, 4);
+}
+
+TEST_F(BotRunnerTest, NoResumeBeforeARoomOrWhenTurnedOff) {
+    BotConfig config;
+    config.auto_resume = false;
+    start(config);
+    deliver(proto::Welcome{1, 7, std::string(32, 'f'), 0});
+    deliver(room_for(match_, 1, proto::Phase::Aiming));
+    wire_.status = {net::ConnectionState::Closed, "The connection to x:1 was lost (reset).", 0};
+    runner_->step(0ms);
+    EXPECT_EQ(runner_->summary().failure, "The connection to x:1 was lost (reset).");
+    EXPECT_EQ(wire_.opened, 1);
 }
 
 TEST_F(BotRunnerTest, RefusedResumeIsAFailure) {
@@ -250,8 +349,25 @@ TEST_F(BotRunnerTest, RefusedResumeIsAFailure) {
     runner_->drop();
     runner_->resume();
     deliver(proto::Error{"bad_token", "That seat is no longer yours."});
-    EXPECT_EQ(runner_->summary().failure,
-              "The server refused the resume token: That seat is no longer yours.");
+    EXPECT_EQ(runner_->summary().failure, "The server no longer holds the seat (bad_token: That "
+                                          "seat is no longer yours.); the match is lost.");
+}
+
+TEST_F(BotRunnerTest, BadTokenAfterTheWelcomeEndsAnAutomaticResume) {
+    BotConfig config;
+    config.reconnect = {1ms, 1ms, 5000ms};
+    start(config);
+    const std::string token(32, 'f');
+    deliver(proto::Welcome{1, 7, token, 0});
+    deliver(room_for(match_, 0, proto::Phase::Moving));
+    wire_.status = {net::ConnectionState::Closed, "lost", 0};
+    ASSERT_TRUE(step_until(*runner_, [&] { return wire_.opened == 2; }));
+    deliver(proto::Welcome{1, 7, token, 0}); // the token is known, the room has closed
+    deliver(proto::Error{"bad_token", "That room has closed."});
+    EXPECT_TRUE(runner_->done());
+    EXPECT_EQ(runner_->summary().failure, "The server no longer holds seat 0 in room ABCDEF "
+                                          "(bad_token: That room has closed.); the match is lost.");
+    EXPECT_EQ(runner_->summary().resumes, 0);
 }
 
 TEST_F(BotRunnerTest, CountsSnapshotsKeyframesAndGaps) {

@@ -105,17 +105,15 @@ void ChildProcess::pump(std::chrono::milliseconds wait) {
     }
     for (Pipe* p : {&out_, &err_}) {
         char buf[4096];
+        bool ended = false;
         while (p->fd >= 0) {
             const ssize_t got = ::read(p->fd, buf, sizeof buf);
             if (got > 0) {
                 p->partial.append(buf, static_cast<std::size_t>(got));
                 continue;
             }
-            if (got == 0) { // end of stream: keep a last unterminated line
-                if (!p->partial.empty()) {
-                    p->lines.push_back(p->partial);
-                    p->partial.clear();
-                }
+            if (got == 0) {
+                ended = true;
                 close_fd(p->fd);
             }
             break; // EAGAIN or end
@@ -124,6 +122,10 @@ void ChildProcess::pump(std::chrono::milliseconds wait) {
         while ((nl = p->partial.find('\n')) != std::string::npos) {
             p->lines.push_back(p->partial.substr(0, nl));
             p->partial.erase(0, nl + 1);
+        }
+        if (ended && !p->partial.empty()) { // end of stream: keep a last unterminated line
+            p->lines.push_back(p->partial);
+            p->partial.clear();
         }
     }
 }

@@ -218,7 +218,47 @@ TEST(ClientSession, BackOffDoublesAndGivesUp) {
     ASSERT_GE(opened_at.size(), 4u);
     EXPECT_NEAR(opened_at[1] - opened_at[0], 1.0, 0.12); // 0.5, 1, 2, 4, 5, 5, ...
     EXPECT_NEAR(opened_at[2] - opened_at[1], 2.0, 0.12);
-    EXPECT_GE(now, 60.0);
+    EXPECT_GE(now, 65.0);
+}
+
+TEST(ClientSession, JitterDrawsEachDelayInItsUpperHalfAndReportsTheTries) {
+    std::vector<std::unique_ptr<FakeWire>> wires;
+    SessionConfig config;
+    config.jitter_seed = 5;
+    ClientSession session(
+        [&wires] {
+            wires.push_back(std::make_unique<FakeWire>());
+            return std::make_unique<FakeLink>(*wires.back());
+        },
+        "Ana", config);
+    session.start(0.0);
+    double now = 0.0;
+    std::vector<double> opened_at{0.0};
+    while (opened_at.size() < 5) {
+        const std::size_t before = wires.size();
+        wires.back()->state = LinkState::Closed;
+        session.update(now);
+        if (wires.size() != before) {
+            opened_at.push_back(now);
+        }
+        now += 0.01;
+    }
+    // Nominal 0.5, 1, 2, 4 s; each drawn in [d/2, d] (plus the 10 ms polling step).
+    const double nominal[] = {0.5, 1.0, 2.0, 4.0};
+    bool below = false;
+    for (int i = 0; i < 4; ++i) {
+        const double waited =
+            opened_at[static_cast<std::size_t>(i) + 1] - opened_at[static_cast<std::size_t>(i)];
+        EXPECT_GE(waited, nominal[i] / 2.0 - 0.011) << i;
+        EXPECT_LE(waited, nominal[i] + 0.02) << i;
+        below = below || waited < nominal[i] - 0.05;
+    }
+    EXPECT_TRUE(below); // not all at the nominal delay
+    const ReconnectInfo info = session.reconnect_info(now);
+    EXPECT_EQ(info.attempt, 4);
+    EXPECT_TRUE(info.trying);
+    EXPECT_EQ(info.reason, "The connection was lost.");
+    EXPECT_NEAR(info.gives_up_in_s, 65.0 - now, 1e-9);
 }
 
 TEST(ClientSession, LostSeatGoesBackToTheLobby) {
@@ -239,6 +279,7 @@ TEST(ClientSession, LostSeatGoesBackToTheLobby) {
     const auto out = h.session.update(1.2);
     EXPECT_EQ(out.size(), 1u); // the error is shown by the match model
     EXPECT_EQ(h.session.phase(), SessionPhase::Lobby);
+    EXPECT_TRUE(h.session.seat_lost());
 }
 
 TEST(ClientSession, LeavingTheRoomGoesBackToTheLobbyOnTheSameLink) {

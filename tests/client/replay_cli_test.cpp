@@ -68,7 +68,7 @@ class WebServer {
 public:
     explicit WebServer(const fs::path& root)
         : process_({CARROM_SERVER_PATH, "--host", "127.0.0.1", "--port", "0", "--log-level", "warn",
-                    "--web-root", root.string()}) {
+                    "--data", "none", "--web-root", root.string()}) {
         const std::string prefix = "listening on 127.0.0.1:";
         if (auto line = process_.wait_line(ChildProcess::Stream::Out, prefix, Clock::now() + 15s)) {
             port_ = line->substr(line->find(prefix) + prefix.size());

@@ -182,7 +182,7 @@ TEST_F(SocketTest, ShutdownTellsClientsAndCloses) {
     auto a = connect("Asha");
     std::thread stopper([this] { server_->shutdown(); });
     EXPECT_EQ(a->wait_for_error(), "shutting_down");
-    EXPECT_EQ(a->wait_for_close(), proto::kCloseGoingAway);
+    EXPECT_EQ(a->wait_for_close(), proto::kCloseRestarting);
     stopper.join();
 }
 

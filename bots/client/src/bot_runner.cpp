@@ -3,6 +3,7 @@
 #include "carrom/bots/match_view.hpp"
 
 #include <algorithm>
+#include <thread>
 
 namespace carrom::bots {
 
@@ -23,13 +24,19 @@ bool is_fatal_error(const std::string& code) {
            code == proto::code::kTooManyRooms || code == proto::code::kVersionMismatch ||
            code == proto::code::kServerFull || code == proto::code::kAlreadyInRoom ||
            code == proto::code::kUnsupported || code == proto::code::kReplaced ||
-           code == proto::code::kSpectator || code == proto::code::kShuttingDown;
+           code == proto::code::kSpectator;
+}
+
+// Seconds with one decimal, for sentences.
+std::string seconds_text(std::chrono::milliseconds ms) {
+    const auto tenths = (ms.count() + 50) / 100;
+    return std::to_string(tenths / 10) + "." + std::to_string(tenths % 10) + " s";
 }
 
 } // namespace
 
 BotRunner::BotRunner(BotConfig config, Strategy& strategy)
-    : config_(std::move(config)), strategy_(strategy) {}
+    : config_(std::move(config)), strategy_(strategy), backoff_(config_.reconnect) {}
 
 BotRunner::~BotRunner() = default;
 
@@ -45,6 +52,16 @@ bool BotRunner::step(std::chrono::milliseconds wait) {
     if (!connection_ || done()) {
         return done();
     }
+    if (waiting_) {
+        const auto now = net::Backoff::Clock::now();
+        if (now < next_try_) {
+            std::this_thread::sleep_for(
+                std::min<net::Backoff::Clock::duration>(next_try_ - now, wait));
+            return done();
+        }
+        try_resume();
+        return done();
+    }
     connection_->wait(wait);
     for (const auto& message : connection_->poll()) {
         if (on_message) {
@@ -58,9 +75,62 @@ bool BotRunner::step(std::chrono::milliseconds wait) {
     summary_.decode_errors = connection_->decode_errors();
     const auto status = connection_->status();
     if (!done() && !dropped_ && status.state == net::ConnectionState::Closed) {
-        fail(status.detail);
+        connection_lost(status);
     }
     return done();
+}
+
+void BotRunner::connection_lost(const net::ConnectionStatus& status) {
+    const auto now = net::Backoff::Clock::now();
+    const bool in_room = !token_.empty() && room_.has_value();
+    if (!reconnecting_) {
+        if (!config_.auto_resume || !in_room) {
+            fail(status.detail);
+            return;
+        }
+        reconnecting_ = true;
+        backoff_.start(now);
+        notice("Connection lost: " + status.detail + " Resuming " + seat_words() + " for up to " +
+               seconds_text(config_.reconnect.give_up_after) + ".");
+    }
+    lost_reason_ = status.detail;
+    resuming_ = false;
+    if (backoff_.expired(now)) {
+        fail("Gave up resuming " + seat_words() + " after " +
+             seconds_text(
+                 std::chrono::duration_cast<std::chrono::milliseconds>(now - backoff_.lost_at())) +
+             " and " + std::to_string(backoff_.tries()) + " tries; the last: " + lost_reason_);
+        return;
+    }
+    // The last try is made when the time is up, not after it.
+    const auto delay = std::min<net::Backoff::Clock::duration>(
+        backoff_.next_delay(), backoff_.lost_at() + config_.reconnect.give_up_after - now);
+    next_try_ = now + delay;
+    waiting_ = true;
+    notice("Reconnecting (try " + std::to_string(backoff_.tries()) + ", in " +
+           seconds_text(std::chrono::duration_cast<std::chrono::milliseconds>(delay)) + ").");
+}
+
+void BotRunner::try_resume() {
+    waiting_ = false;
+    resuming_ = true;
+    welcomed_ = false;
+    start();
+}
+
+std::string BotRunner::seat_words() const {
+    if (!room_) {
+        return "the seat";
+    }
+    return (room_->you >= 0 ? "seat " + std::to_string(room_->you)
+                            : std::string("the spectator's place")) +
+           " in room " + room_->code;
+}
+
+void BotRunner::notice(const std::string& text) {
+    if (on_notice) {
+        on_notice(text);
+    }
 }
 
 bool BotRunner::run_until_done(std::chrono::milliseconds timeout) {
@@ -88,7 +158,6 @@ void BotRunner::resume() {
     dropped_ = false;
     resuming_ = true;
     welcomed_ = false;
-    ++summary_.resumes;
     start();
 }
 
@@ -112,17 +181,17 @@ void BotRunner::handle(const proto::ServerMessage& message) {
 }
 
 void BotRunner::on_welcome(const proto::Welcome& welcome) {
-    const bool resumed = resuming_ && welcome.resume_token == token_;
+    const bool same_token = welcome.resume_token == token_;
     token_ = welcome.resume_token;
     welcomed_ = true;
-    if (resuming_ && !resumed) {
+    if (resuming_ && !same_token) {
         fail("The server did not give the seat back on resume.");
         return;
     }
-    resuming_ = false;
-    if (!resumed) {
+    if (!resuming_) {
         send_room_request();
     }
+    // Resuming: the seat is back with the room's state, or gone with a bad_token error.
 }
 
 void BotRunner::send_room_request() {
@@ -143,9 +212,26 @@ void BotRunner::send_room_request() {
 }
 
 void BotRunner::on_room_state(const proto::RoomState& room) {
+    const bool missed_game_end = resuming_ && room.phase == proto::Phase::GameOver && room_ &&
+                                 room_->phase != proto::Phase::GameOver;
+    if (resuming_) {
+        resuming_ = false;
+        ++summary_.resumes;
+        if (reconnecting_) {
+            notice("Resumed " + seat_words() + " (try " + std::to_string(backoff_.tries()) + ").");
+        }
+        reconnecting_ = false;
+        last_played_turn_ = -1; // a shot sent into the lost connection is sent again if still due
+        last_seq_ = -1;
+        awaiting_keyframe_ = false;
+    }
     room_ = room;
     summary_.room_code = room.code;
     summary_.seat = room.you;
+    if (missed_game_end) { // the game ended while this bot was away: its game_end is gone
+        on_game_end(proto::GameEndEvent{room.winner, "ended_while_away", room.scores});
+        return;
+    }
     maybe_play();
 }
 
@@ -188,7 +274,8 @@ void BotRunner::on_shot_result(const proto::ShotResult& result) {
 void BotRunner::on_error(const proto::Error& error) {
     ++summary_.errors[error.code];
     if (error.code == proto::code::kBadToken && resuming_) {
-        fail("The server refused the resume token: " + error.message);
+        fail("The server no longer holds " + seat_words() + " (bad_token: " + error.message +
+             "); the match is lost.");
         return;
     }
     if (is_fatal_error(error.code)) {

@@ -12,6 +12,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -39,7 +40,20 @@ struct SessionConfig {
     double ping_interval_s = 2.0;
     double first_retry_s = 0.5; // reconnect back-off starts here and doubles
     double max_retry_s = 5.0;
-    double give_up_after_s = 60.0; // the server's default grace period
+    // How long to keep trying: the server's default grace period (60 s) plus a margin.
+    double give_up_after_s = 65.0;
+    // Each delay d drawn uniformly from [d/2, d] with this seed (so that many clients cut at
+    // once do not come back at once); none: exactly d.
+    std::optional<std::uint64_t> jitter_seed;
+};
+
+// While reconnecting: what the window says ("Reconnecting... (attempt N, next try in S s)").
+struct ReconnectInfo {
+    int attempt = 0;          // tries so far since the loss (the next one is attempt + 1)
+    double next_try_in_s = 0; // 0 while a try is connecting
+    double gives_up_in_s = 0; // until the session stops trying
+    bool trying = false;      // a try is connecting or saying hello
+    std::string reason;       // why the link was lost, a sentence
 };
 
 class ClientSession {
@@ -61,6 +75,10 @@ public:
     SessionPhase phase() const { return phase_; }
     // What the connection is doing, in plain words ("Connected", "Reconnecting (attempt 2)...").
     const std::string& status_text() const { return status_; }
+    // Phase Reconnecting (or Greeting on a resuming link): the tries and the last loss's reason.
+    ReconnectInfo reconnect_info(double local_s) const;
+    // The seat was being resumed (bad_token): the server no longer holds it.
+    bool seat_lost() const { return seat_lost_; }
     std::optional<double> rtt_ms() const { return rtt_ms_; }
     const std::string& resume_token() const { return token_; }
     std::int64_t player_id() const { return player_id_; }
@@ -100,6 +118,9 @@ private:
     double retry_at_s_ = 0.0;
     double lost_since_s_ = 0.0;
     int attempts_ = 0;
+    std::string lost_reason_;
+    bool seat_lost_ = false;
+    std::mt19937_64 jitter_;
 };
 
 } // namespace carrom::client

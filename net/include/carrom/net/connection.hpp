@@ -23,6 +23,9 @@ enum class ConnectionState {
 struct ConnectionStatus {
     ConnectionState state = ConnectionState::Connecting;
     std::string detail; // e.g. "Could not reach 127.0.0.1:7777: connection refused."
+    // The close code of the server's close frame once Closed by the server (1012: the server is
+    // restarting); 0 when the connection ended without one (refused, lost, closed by us).
+    int close_code = 0;
 };
 
 struct ConnectionOptions {

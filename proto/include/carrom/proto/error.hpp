@@ -56,11 +56,12 @@ inline constexpr std::string_view kInternal = "internal";
 
 // WebSocket close codes (RFC 6455 section 7.4 plus the application range 4000-4999).
 inline constexpr int kCloseNormal = 1000;          // leave, or server-side normal end
-inline constexpr int kCloseGoingAway = 1001;       // server shutting down
+inline constexpr int kCloseGoingAway = 1001;       // going away (not sent by this server)
 inline constexpr int kCloseUnsupportedData = 1003; // binary frame
 inline constexpr int kClosePolicy = 1008;          // rate limit, limits, handshake/idle timeout
 inline constexpr int kCloseTooBig = 1009;          // frame over the size limit
 inline constexpr int kCloseInternal = 1011;        // server bug
+inline constexpr int kCloseRestarting = 1012; // SIGINT/SIGTERM: reconnect and resume, with backoff
 inline constexpr int kCloseTryAgainLater = 1013;   // server full
 inline constexpr int kCloseVersionMismatch = 4001; // hello with another protocol version
 inline constexpr int kCloseReplaced = 4002;        // the seat was resumed on another connection

@@ -4,10 +4,17 @@
 // then shoot with the turn number; at game end it asks for a rematch until it has played
 // `games` games, then leaves. After a drop, resume() reconnects with the seat's token.
 //
+// A connection that ends without the runner asking (network error, idle timeout, the server
+// restarting) once it holds a room is resumed by itself: it reconnects with net::Backoff and
+// sends hello{resume_token} until the seat is back or config.reconnect.give_up_after has passed
+// (then it fails, naming the seat). A bad_token answer ends it at once: the server no longer
+// holds the seat.
+//
 // Single-threaded: call step() (or run_until_done()) from one thread; the connection does the
 // I/O on its own thread.
 
 #include "carrom/bots/strategy.hpp"
+#include "carrom/net/backoff.hpp"
 #include "carrom/net/connection.hpp"
 #include "carrom/proto/client_messages.hpp"
 #include "carrom/proto/server_messages.hpp"
@@ -36,6 +43,8 @@ struct BotConfig {
     bool send_aim = true;  // send the striker position before each shot
     int max_refusals = 20; // refused shots in a row before giving up
     net::ConnectionOptions connection;
+    bool auto_resume = true;        // resume by itself after a connection lost while in a room
+    net::BackoffSettings reconnect; // its delays and how long to keep trying
 };
 
 struct BotSummary {
@@ -53,7 +62,7 @@ struct BotSummary {
     int seq_gaps = 0;        // deltas whose seq did not follow the previous one (the server
                              // dropped snapshots for this slow reader)
     int unrepaired_gaps = 0; // shots that ended with no keyframe after a gap (a server bug)
-    int resumes = 0;
+    int resumes = 0;         // seats given back on a new connection (resume() or automatic)
     int decode_errors = 0;
     std::map<std::string, int> errors; // error codes received, with counts
     std::string failure;               // set when the bot stopped before finishing: why
@@ -84,6 +93,9 @@ public:
 
     // Called for every message received, before the runner reacts to it (tests, load tools).
     std::function<void(const proto::ServerMessage&)> on_message;
+    // Called with a sentence when the connection is lost, on each try to resume, and when the
+    // seat is back (carrom-bot logs them).
+    std::function<void(const std::string&)> on_notice;
     // Makes the connection for start() and resume(); default: net::Connection::open(url).
     std::function<std::unique_ptr<net::Connection>(const BotConfig&)> connect;
 
@@ -104,6 +116,10 @@ private:
     void send_room_request();
     void maybe_play();
     void fail(std::string why);
+    void connection_lost(const net::ConnectionStatus& status);
+    void try_resume();
+    std::string seat_words() const;
+    void notice(const std::string& text);
 
     BotConfig config_;
     Strategy& strategy_;
@@ -118,6 +134,11 @@ private:
     std::int64_t last_seq_ = -1;
     bool awaiting_keyframe_ = false; // a gap was seen; the board is stale until a keyframe
     BotSummary summary_;
+    net::Backoff backoff_;
+    bool reconnecting_ = false; // lost while in a room; resuming by itself
+    bool waiting_ = false;      // reconnecting_, and the last try ended: next at next_try_
+    net::Backoff::Clock::time_point next_try_{};
+    std::string lost_reason_; // why the last connection (or try) ended
 };
 
 } // namespace carrom::bots

@@ -1,0 +1,128 @@
+// carrom-client through a network cut: carrom-server, tests/support/fault_proxy.py in front of
+// it, a carrom-bot creating the room through the proxy and carrom-client (--autoplay easy,
+// --final-state) joining through it. A second into the match the proxy cuts every
+// connection and refuses new ones for 3 s: the client resumes its seat by itself, plays the game
+// to the end and writes the final state with the bot's scores.
+#include "child_process.hpp"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <thread>
+#include <unistd.h>
+#include <vector>
+
+namespace carrom::client {
+namespace {
+
+using testing::ChildProcess;
+using Clock = std::chrono::steady_clock;
+using namespace std::chrono_literals;
+
+std::string after(const std::optional<std::string>& line, const std::string& prefix) {
+    return line ? line->substr(prefix.size()) : std::string();
+}
+
+std::string log_of(const ChildProcess& p) {
+    std::string out;
+    for (auto s : {ChildProcess::Stream::Out, ChildProcess::Stream::Err}) {
+        for (const std::string& line : p.lines(s)) {
+            out += line + "\n";
+        }
+    }
+    return out;
+}
+
+TEST(ReconnectMatch, ClientResumesThroughACutAndFinishesTheGame) {
+    const auto dir = std::filesystem::path(::testing::TempDir()) /
+                     ("carrom_reconnect_match_" + std::to_string(getpid()));
+    std::filesystem::create_directories(dir);
+    const std::string prefix = "listening on 127.0.0.1:";
+    ChildProcess server({CARROM_SERVER_PATH, "--host", "127.0.0.1", "--port", "0", "--shot-clock",
+                         "0", "--time-scale", "25", "--idle-timeout", "2", "--grace", "20",
+                         "--log-level", "warn", "--data", "none"});
+    const std::string server_port =
+        after(server.wait_line(ChildProcess::Stream::Out, prefix, Clock::now() + 15s), prefix);
+    ASSERT_FALSE(server_port.empty());
+    const char* source = std::getenv("CARROM_SOURCE_DIR");
+    const std::string control = (dir / "control").string();
+    ChildProcess proxy(
+        {"python3", std::string(source != nullptr ? source : ".") + "/tests/support/fault_proxy.py",
+         "--target", "127.0.0.1:" + server_port, "--control", control});
+    const std::string port =
+        after(proxy.wait_line(ChildProcess::Stream::Out, prefix, Clock::now() + 15s), prefix);
+    ASSERT_FALSE(port.empty()) << log_of(proxy);
+    const std::string url = "ws://127.0.0.1:" + port;
+    ChildProcess bot({CARROM_BOT_PATH,
+                      "--url",
+                      url,
+                      "--name",
+                      "Bot",
+                      "--create",
+                      "--rule-set",
+                      "freestyle",
+                      "--target-points",
+                      "150",
+                      "--shot-clock",
+                      "0",
+                      "--strategy",
+                      "random",
+                      "--seed",
+                      "3",
+                      "--timeout",
+                      "120",
+                      "--resume-for",
+                      "25"});
+    const std::string code =
+        after(bot.wait_line(ChildProcess::Stream::Err, "room ", Clock::now() + 15s), "room ");
+    ASSERT_EQ(code.size(), 6u) << log_of(bot);
+    const std::string final_state = (dir / "final.json").string();
+    std::vector<std::string> argv;
+    if (std::getenv("DISPLAY") == nullptr) {
+        argv = {"xvfb-run", "-a", "-s", "-screen 0 1280x1024x24"};
+    }
+    for (const std::string& a :
+         {std::string(CARROM_CLIENT_PATH), std::string("--url"), url, std::string("--name"),
+          std::string("Ana"), std::string("--join"), code, std::string("--mute"),
+          std::string("--width"), std::string("700"), std::string("--height"), std::string("700"),
+          std::string("--autoplay"), std::string("easy"), std::string("--final-state"), final_state,
+          std::string("--timeout"), std::string("110")}) {
+        argv.push_back(a);
+    }
+    const char* asan = std::getenv("ASAN_OPTIONS");
+    ChildProcess client(
+        argv, {std::string("ASAN_OPTIONS=") + (asan != nullptr ? asan : "") + ":detect_leaks=0"});
+    ASSERT_TRUE(client.wait_line(ChildProcess::Stream::Out, "room ", Clock::now() + 30s))
+        << log_of(client);
+    std::this_thread::sleep_for(1s); // the match is under way
+    {
+        std::ofstream out(control + ".tmp");
+        out << "cut 3\n";
+    }
+    std::filesystem::rename(control + ".tmp", control);
+    const auto cut = proxy.wait_line(ChildProcess::Stream::Out, "cut ", Clock::now() + 5s);
+    ASSERT_TRUE(cut);
+    EXPECT_EQ(*cut, "cut 2 connections for 3.0 s"); // the client's and the bot's
+    const auto exit = client.wait_exit(Clock::now() + 120s);
+    ASSERT_TRUE(exit) << log_of(client);
+    EXPECT_EQ(*exit, 0) << log_of(client);
+    const auto summary_line = bot.wait_line(ChildProcess::Stream::Out, "{", Clock::now() + 20s);
+    ASSERT_TRUE(summary_line) << log_of(bot) << "\nThe client said:\n" << log_of(client);
+    const auto summary = nlohmann::json::parse(*summary_line, nullptr, false);
+    EXPECT_EQ(summary["ok"], true) << *summary_line;
+    EXPECT_GE(summary["resumes"].get<int>(), 1);
+    std::ifstream in(final_state);
+    ASSERT_TRUE(in) << "no final state; the client said:\n" << log_of(client);
+    const auto state = nlohmann::json::parse(in, nullptr, false);
+    EXPECT_EQ(state["room"], code);
+    EXPECT_EQ(state["you"], 1);
+    EXPECT_EQ(state["scores"], summary["scores"]);
+    std::filesystem::remove_all(dir);
+}
+
+} // namespace
+} // namespace carrom::client
