@@ -1,9 +1,9 @@
 // Recovery after a restart (docs/server.md): carrom-server --data as a real process, bots playing
-// over real sockets (the in-process BotRunner, which resumes when told: the test drops and
-// resumes them around the restart with their resume tokens). kill -9 while a player aims, kill
-// -9 while a shot moves, SIGTERM with 20 matches running: the server restarts on the same port
-// and data, recovers the matches, the bots resume and finish, every journal replays clean with
-// consecutive turns.
+// over real sockets (the in-process BotRunner: the test drops and resumes them around the
+// restart with their resume tokens, or they resume by themselves with back-off). kill -9 while a
+// player aims, kill -9 while a shot moves, SIGTERM with 20 matches running: the server restarts on
+// the same port and data, recovers the matches, the bots resume and finish, every journal replays
+// clean with consecutive turns.
 #include "harness.hpp"
 #include "journal_check.hpp"
 
@@ -200,7 +200,10 @@ int expect_journals_clean(std::uint16_t port, std::size_t count) {
 
 // Plays a match to its fourth stroke, kills the server (SIGKILL) when `moment` says so, restarts
 // it on the same port and data; the bots resume and finish.
-void kill_and_recover(const std::function<bool(const proto::ServerMessage&)>& moment) {
+// by_themselves: the bots are not dropped and resumed by the test; they notice the lost connection
+// and resume with back-off (BotRunner's auto_resume, as carrom-bot does).
+void kill_and_recover(const std::function<bool(const proto::ServerMessage&)>& moment,
+                      bool by_themselves = false) {
     TempDir dir;
     auto server = std::make_unique<ServerProcess>(dir.file("c.db"), 0);
     const std::uint16_t port = server->port();
@@ -212,7 +215,9 @@ void kill_and_recover(const std::function<bool(const proto::ServerMessage&)>& mo
         if (!killed && pair.shots >= 3 && moment(m)) {
             server->process().kill_now();
             killed = true;
-            pair.drop(); // before the creator's step sees its connection lost
+            if (!by_themselves) {
+                pair.drop(); // before the creator's step sees its connection lost
+            }
         }
     };
     pair.run([&] { return killed; }, 20s);
@@ -223,7 +228,9 @@ void kill_and_recover(const std::function<bool(const proto::ServerMessage&)>& mo
     server = std::make_unique<ServerProcess>(dir.file("c.db"), port);
     ASSERT_EQ(server->port(), port);
     EXPECT_EQ(server->recovered(), 1);
-    pair.resume();
+    if (!by_themselves) {
+        pair.resume();
+    }
     pair.run([] { return false; }, 25s);
     pair.expect_finished();
     if (::testing::Test::HasFailure()) {
@@ -245,6 +252,12 @@ TEST(RecoveryProcess, KilledWhileAPlayerAimsTheBotsResumeAndFinish) {
 TEST(RecoveryProcess, KilledWhileAShotMovesTheBotsResumeAndFinish) {
     kill_and_recover(
         [](const proto::ServerMessage& m) { return std::holds_alternative<proto::Snapshot>(m); });
+}
+
+TEST(RecoveryProcess, KilledWhileAShotMovesTheBotsResumeByThemselvesAndFinish) {
+    kill_and_recover(
+        [](const proto::ServerMessage& m) { return std::holds_alternative<proto::Snapshot>(m); },
+        true);
 }
 
 TEST(RecoveryProcess, AJournalOfAnotherPhysicsVersionIsNotResumedAndStaysInTheStore) {
