@@ -9,7 +9,7 @@
 #include "carrom/client/screen_mapping.hpp"
 #include "carrom/config.hpp"
 #include "carrom/net/connection.hpp"
-#include "child_process.hpp"
+#include "support/child_process.hpp"
 
 #include <SFML/Graphics/Image.hpp>
 #include <gtest/gtest.h>
@@ -27,7 +27,7 @@
 namespace carrom::client {
 namespace {
 
-using testing::ChildProcess;
+using test_support::ChildProcess;
 using Clock = std::chrono::steady_clock;
 using namespace std::chrono_literals;
 

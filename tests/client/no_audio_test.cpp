@@ -6,7 +6,7 @@
 
 #ifdef CARROM_CLIENT_PATH
 
-#include "child_process.hpp"
+#include "support/child_process.hpp"
 
 #include <gtest/gtest.h>
 
@@ -17,7 +17,7 @@
 namespace carrom::client {
 namespace {
 
-using testing::ChildProcess;
+using test_support::ChildProcess;
 using Clock = std::chrono::steady_clock;
 using namespace std::chrono_literals;
 

@@ -3,7 +3,7 @@
 // --final-state) joining through it. A second into the match the proxy cuts every
 // connection and refuses new ones for 3 s: the client resumes its seat by itself, plays the game
 // to the end and writes the final state with the bot's scores.
-#include "child_process.hpp"
+#include "support/child_process.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -19,7 +19,7 @@
 namespace carrom::client {
 namespace {
 
-using testing::ChildProcess;
+using test_support::ChildProcess;
 using Clock = std::chrono::steady_clock;
 using namespace std::chrono_literals;
 

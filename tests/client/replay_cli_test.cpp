@@ -7,8 +7,8 @@
 #include "carrom/net/http_get.hpp"
 #include "carrom/proto/journal_json.hpp"
 #include "carrom/proto/journal_replay.hpp"
-#include "child_process.hpp"
 #include "proto/journal_support.hpp"
+#include "support/child_process.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -29,7 +29,7 @@
 namespace carrom::client {
 namespace {
 
-using testing::ChildProcess;
+using test_support::ChildProcess;
 using Clock = std::chrono::steady_clock;
 using namespace std::chrono_literals;
 namespace fs = std::filesystem;

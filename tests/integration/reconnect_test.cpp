@@ -2,7 +2,7 @@
 // and tests/support/fault_proxy.py between them, which cuts or stalls every connection on
 // command. The server runs with a small --idle-timeout and --grace so each test takes seconds.
 #include "carrom/net/connection.hpp"
-#include "client/child_process.hpp"
+#include "support/child_process.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -18,7 +18,7 @@
 namespace carrom::integration {
 namespace {
 
-using client::testing::ChildProcess;
+using test_support::ChildProcess;
 using Clock = std::chrono::steady_clock;
 using namespace std::chrono_literals;
 

@@ -7,7 +7,7 @@
 #include "harness.hpp"
 #include "journal_check.hpp"
 
-#include "client/child_process.hpp"
+#include "support/child_process.hpp"
 
 #include "carrom/physics_version.hpp"
 
@@ -31,7 +31,7 @@ namespace carrom::integration {
 namespace {
 
 using namespace std::chrono_literals;
-using client::testing::ChildProcess;
+using test_support::ChildProcess;
 namespace fs = std::filesystem;
 
 class TempDir {

@@ -3,8 +3,8 @@
 // followed by a request that must still be served.
 #include "carrom/proto/client_messages.hpp"
 #include "carrom/proto/server_messages.hpp"
-#include "client/child_process.hpp"
 #include "server/ws_test_client.hpp"
+#include "support/child_process.hpp"
 #include "support/read_file.hpp"
 
 #include <gtest/gtest.h>
@@ -30,7 +30,7 @@ namespace carrom::server {
 namespace {
 
 using namespace std::chrono_literals;
-using client::testing::ChildProcess;
+using test_support::ChildProcess;
 using Clock = std::chrono::steady_clock;
 using test_support::read_file;
 

@@ -1,4 +1,4 @@
-#include "child_process.hpp"
+#include "support/child_process.hpp"
 
 #include <algorithm>
 #include <cerrno>
@@ -12,7 +12,7 @@
 
 extern char** environ;
 
-namespace carrom::client::testing {
+namespace carrom::test_support {
 namespace {
 
 void close_fd(int& fd) {
@@ -201,4 +201,4 @@ const std::vector<std::string>& ChildProcess::lines(Stream stream) const {
     return stream == Stream::Out ? out_.lines : err_.lines;
 }
 
-} // namespace carrom::client::testing
+} // namespace carrom::test_support

@@ -1,5 +1,5 @@
 #pragma once
-// A child process for the client's integration test: started in its own process group with its
+// A child process for tests that run programs: started in its own process group with its
 // stdout and stderr piped, read line by line with a deadline, and on destruction (or stop())
 // ended with SIGTERM, then SIGKILL after a grace period, the whole group at once (xvfb-run and
 // the X server it starts included).
@@ -10,7 +10,7 @@
 #include <sys/types.h>
 #include <vector>
 
-namespace carrom::client::testing {
+namespace carrom::test_support {
 
 class ChildProcess {
 public:
@@ -57,4 +57,4 @@ private:
     Pipe err_;
 };
 
-} // namespace carrom::client::testing
+} // namespace carrom::test_support
