@@ -1,6 +1,7 @@
 // carrom-client --replay as a program (under Xvfb when there is no display): a journal from a
-// file and from a real carrom-server's HTTP port (its --web-root serving the file) plays to the
-// end and writes the journal's replayed final state; journals it cannot replay exit 2 with one
+// file, from a real carrom-server's HTTP port (its --web-root serving the file) and from the
+// server's GET /matches/ID after two carrom-bots played a match plays to the end and writes the
+// journal's replayed final state; journals it cannot replay exit 2 with one
 // line. And net::http_get against the same server: a file, 404, a refused connection, a body over
 // the limit, a listener that never answers.
 
@@ -22,8 +23,10 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <string>
+#include <variant>
 #include <vector>
 
 namespace carrom::client {
@@ -66,9 +69,10 @@ const proto::MatchJournal& short_journal() {
 // carrom-server serving `root` over HTTP on an ephemeral port of 127.0.0.1.
 class WebServer {
 public:
-    explicit WebServer(const fs::path& root)
+    // data: the match store's file, or "none".
+    explicit WebServer(const fs::path& root, const std::string& data = "none")
         : process_({CARROM_SERVER_PATH, "--host", "127.0.0.1", "--port", "0", "--log-level", "warn",
-                    "--data", "none", "--web-root", root.string()}) {
+                    "--time-scale", "25", "--data", data, "--web-root", root.string()}) {
         const std::string prefix = "listening on 127.0.0.1:";
         if (auto line = process_.wait_line(ChildProcess::Stream::Out, prefix, Clock::now() + 15s)) {
             port_ = line->substr(line->find(prefix) + prefix.size());
@@ -76,6 +80,7 @@ public:
         }
     }
     std::string base() const { return "http://127.0.0.1:" + port_; }
+    std::string ws() const { return "ws://127.0.0.1:" + port_; }
     bool up() const { return !port_.empty(); }
 
 private:
@@ -109,7 +114,9 @@ ClientRun run_client(const std::vector<std::string>& args) {
 }
 
 // The final state the client wrote equals the journal's replayed final state.
-void expect_final_state(const fs::path& file, const proto::MatchJournal& journal) {
+// reason: game_end's reason as the client wrote it; nothing: not checked.
+void expect_final_state(const fs::path& file, const proto::MatchJournal& journal,
+                        const std::optional<std::string>& reason = "forfeit") {
     const proto::ReplayResult replayed = proto::replay(journal);
     ASSERT_TRUE(replayed.ok());
     ASSERT_TRUE(replayed.state.result);
@@ -119,7 +126,9 @@ void expect_final_state(const fs::path& file, const proto::MatchJournal& journal
     EXPECT_EQ(j["you"], -1);
     const auto& result = *replayed.state.result;
     EXPECT_EQ(j["winner"], result.winner_team ? *result.winner_team : -1);
-    EXPECT_EQ(j["reason"], "forfeit"); // grace_expired, as the room reports it
+    if (reason) {
+        EXPECT_EQ(j["reason"], *reason); // short_journal: grace_expired, as the room reports it
+    }
     EXPECT_EQ(j["scores"], nlohmann::json(replayed.state.scores));
     std::size_t pieces = 0;
     for (const auto& b : j["bodies"]) {
@@ -175,6 +184,48 @@ TEST(ReplayCli, AJournalFromAServersHttpPortPlaysTheSame) {
                                       "150", "--width", "500", "--height", "500"});
     ASSERT_EQ(run.exit_code, 0) << run.err;
     expect_final_state(final_state, short_journal());
+}
+
+// A match two carrom-bots played through carrom-server --data, replayed from the server's own
+// GET /matches/ID: the client ends on the state the journal replays to.
+TEST(ReplayCli, AMatchFromTheServersMatchApiPlaysToItsFinalState) {
+    TempDir dir("api");
+    write_file(dir.path / "index.html", "<!doctype html><title>carrom</title>");
+    WebServer server(dir.path, (dir.path / "c.db").string());
+    ASSERT_TRUE(server.up());
+    const std::vector<std::string> common{"--shot-clock", "0",  "--strategy", "random",
+                                          "--timeout",    "90", "--games",    "1"};
+    std::vector<std::string> creator{
+        CARROM_BOT_PATH, "--url",      server.ws(), "--name",          "Ann", "--seed", "4",
+        "--create",      "--rule-set", "freestyle", "--target-points", "60"};
+    creator.insert(creator.end(), common.begin(), common.end());
+    ChildProcess ann(creator);
+    const auto room = ann.wait_line(ChildProcess::Stream::Err, "room ", Clock::now() + 15s);
+    ASSERT_TRUE(room);
+    std::vector<std::string> joiner{CARROM_BOT_PATH, "--url", server.ws(), "--name",       "Ben",
+                                    "--seed",        "5",     "--join",    room->substr(5)};
+    joiner.insert(joiner.end(), common.begin(), common.end());
+    ChildProcess ben(joiner);
+    EXPECT_EQ(ann.wait_exit(Clock::now() + 100s).value_or(-1), 0);
+    EXPECT_EQ(ben.wait_exit(Clock::now() + 20s).value_or(-1), 0);
+
+    const auto listed = net::http_get(server.base() + "/matches?player=Ann&limit=1", {});
+    ASSERT_TRUE(std::holds_alternative<net::HttpResponse>(listed)) << std::get<std::string>(listed);
+    const auto list = nlohmann::json::parse(std::get<net::HttpResponse>(listed).body);
+    ASSERT_EQ(list["matches"].size(), 1U) << list.dump();
+    const std::string url =
+        server.base() + "/matches/" + list["matches"][0]["id"].get<std::string>();
+    const auto fetched = net::http_get(url, {});
+    ASSERT_TRUE(std::holds_alternative<net::HttpResponse>(fetched));
+    const auto journal = proto::decode_journal_text(std::get<net::HttpResponse>(fetched).body);
+    ASSERT_TRUE(journal.ok());
+
+    const fs::path final_state = dir.path / "final.json";
+    const ClientRun run =
+        run_client({"--replay", url, "--replay-speed", "4", "--final-state", final_state.string(),
+                    "--timeout", "150", "--width", "500", "--height", "500"});
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    expect_final_state(final_state, journal.value, std::nullopt);
 }
 
 // Exit code 2 and one line on stderr holding `needle`; no window needed.
