@@ -1,5 +1,6 @@
 #include "carrom/net/http_get.hpp"
 
+#include "quoted_url.hpp"
 #include "ws_error_text.hpp"
 
 #include <boost/asio/connect.hpp>
@@ -25,15 +26,6 @@ namespace asio = boost::asio;
 namespace beast = boost::beast;
 namespace http = beast::http;
 using tcp = asio::ip::tcp;
-
-std::string quoted(std::string_view url) {
-    constexpr std::size_t kShown = 80;
-    std::string shown(url.substr(0, kShown));
-    std::replace_if(
-        shown.begin(), shown.end(),
-        [](char c) { return static_cast<unsigned char>(c) < 0x20 || c == 0x7f; }, '?');
-    return "'" + shown + (url.size() > kShown ? "...'" : "'");
-}
 
 std::string size_text(std::size_t bytes) {
     return bytes % (1U << 20U) == 0 ? std::to_string(bytes >> 20U) + " MiB"
@@ -174,10 +166,11 @@ private:
 std::variant<WsUrl, std::string> parse_http_url(std::string_view url) {
     constexpr std::string_view kScheme = "http://";
     if (url.substr(0, 8) == "https://") {
-        return "The address " + quoted(url) + " uses https, which is not supported: use http://.";
+        return "The address " + quoted_url(url) +
+               " uses https, which is not supported: use http://.";
     }
     if (url.substr(0, kScheme.size()) != kScheme) {
-        return "The address " + quoted(url) + " must start with http://.";
+        return "The address " + quoted_url(url) + " must start with http://.";
     }
     const std::string_view rest = url.substr(kScheme.size());
     const std::string_view authority = rest.substr(0, rest.find_first_of("/?#"));
@@ -190,7 +183,7 @@ std::variant<WsUrl, std::string> parse_http_url(std::string_view url) {
                               std::string(rest.substr(authority.size()));
     auto parsed = parse_ws_url(as_ws);
     if (std::holds_alternative<std::string>(parsed)) {
-        return "The address " + quoted(url) +
+        return "The address " + quoted_url(url) +
                " is not http://HOST[:PORT]/PATH with a host and a port from 1 to 65535.";
     }
     return parsed;

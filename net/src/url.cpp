@@ -1,5 +1,7 @@
 #include "carrom/net/ws_url.hpp"
 
+#include "quoted_url.hpp"
+
 #include <algorithm>
 
 namespace carrom::net {
@@ -9,15 +11,6 @@ namespace {
 bool host_char_ok(char c) {
     const auto u = static_cast<unsigned char>(c);
     return u > 0x20 && u != 0x7f && c != '/' && c != '?' && c != '#' && c != '@';
-}
-
-std::string quoted(std::string_view url) {
-    constexpr std::size_t kShown = 80;
-    std::string shown(url.substr(0, kShown));
-    std::replace_if(
-        shown.begin(), shown.end(),
-        [](char c) { return static_cast<unsigned char>(c) < 0x20 || c == 0x7f; }, '?');
-    return "'" + shown + (url.size() > kShown ? "...'" : "'");
 }
 
 // Parses PORT (decimal, 1..65535) or returns nothing.
@@ -47,7 +40,7 @@ std::string WsUrl::authority() const {
 
 std::variant<WsUrl, std::string> parse_ws_url(std::string_view url) {
     constexpr std::string_view kScheme = "ws://";
-    const std::string bad = "The server address " + quoted(url);
+    const std::string bad = "The server address " + quoted_url(url);
     if (url.substr(0, kScheme.size()) != kScheme) {
         return bad + " must start with ws:// (for example ws://127.0.0.1:7777).";
     }
@@ -104,6 +97,15 @@ std::variant<WsUrl, std::string> parse_ws_url(std::string_view url) {
     out.host = std::string(host);
     out.port = *port_number;
     return out;
+}
+
+std::string quoted_url(std::string_view url) {
+    constexpr std::size_t kShown = 80;
+    std::string shown(url.substr(0, kShown));
+    std::replace_if(
+        shown.begin(), shown.end(),
+        [](char c) { return static_cast<unsigned char>(c) < 0x20 || c == 0x7f; }, '?');
+    return "'" + shown + (url.size() > kShown ? "...'" : "'");
 }
 
 } // namespace carrom::net

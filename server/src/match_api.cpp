@@ -1,5 +1,7 @@
 #include "match_api.hpp"
 
+#include "hex_digit.hpp"
+
 #include "carrom/proto/journal_json.hpp"
 #include "carrom/proto/match_json.hpp"
 #include "carrom/proto/types.hpp"
@@ -18,19 +20,6 @@ using Json = nlohmann::json;
 MatchApiAnswer error(int status, std::string_view code, std::string message) {
     return {status,
             Json{{"error", {{"code", std::string(code)}, {"message", std::move(message)}}}}.dump()};
-}
-
-int hex_value(char c) {
-    if (c >= '0' && c <= '9') {
-        return c - '0';
-    }
-    if (c >= 'a' && c <= 'f') {
-        return c - 'a' + 10;
-    }
-    if (c >= 'A' && c <= 'F') {
-        return c - 'A' + 10;
-    }
-    return -1;
 }
 
 // Percent-decoding of a query value ('+' is a space); empty optional when malformed.

@@ -1,5 +1,7 @@
 #include "carrom/server/static_site.hpp"
 
+#include "hex_digit.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cctype>
@@ -28,19 +30,6 @@ char lower(char c) {
 bool iequals(std::string_view a, std::string_view b) {
     return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(),
                                               [](char x, char y) { return lower(x) == lower(y); });
-}
-
-int hex_value(char c) {
-    if (c >= '0' && c <= '9') {
-        return c - '0';
-    }
-    if (c >= 'a' && c <= 'f') {
-        return c - 'a' + 10;
-    }
-    if (c >= 'A' && c <= 'F') {
-        return c - 'A' + 10;
-    }
-    return -1;
 }
 
 // A byte that may never appear in a path, raw or percent-encoded: controls (NUL included),
