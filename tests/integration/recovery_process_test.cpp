@@ -8,6 +8,7 @@
 #include "journal_check.hpp"
 
 #include "support/child_process.hpp"
+#include "support/temp_dir.hpp"
 
 #include "carrom/physics_version.hpp"
 
@@ -34,20 +35,9 @@ using namespace std::chrono_literals;
 using test_support::ChildProcess;
 namespace fs = std::filesystem;
 
-class TempDir {
+class TempDir : public test_support::TempDir {
 public:
-    TempDir() {
-        std::string pattern = (fs::temp_directory_path() / "carrom_recovery_XXXXXX").string();
-        path_ = ::mkdtemp(pattern.data());
-    }
-    ~TempDir() {
-        std::error_code ec;
-        fs::remove_all(path_, ec);
-    }
-    std::string file(const std::string& name) const { return (fs::path(path_) / name).string(); }
-
-private:
-    std::string path_;
+    TempDir() : test_support::TempDir("carrom_recovery") {}
 };
 
 // One plain HTTP/1.0 GET on 127.0.0.1: the body, or "" on failure.

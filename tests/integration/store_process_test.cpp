@@ -6,6 +6,7 @@
 #include "journal_check.hpp"
 
 #include "support/child_process.hpp"
+#include "support/temp_dir.hpp"
 
 #include <SQLiteCpp/SQLiteCpp.h>
 #include <boost/asio/connect.hpp>
@@ -32,21 +33,12 @@ using namespace std::chrono_literals;
 using test_support::ChildProcess;
 namespace fs = std::filesystem;
 
-class TempDir {
+// A temporary directory anyone may use (the read-only test runs carrom-server as nobody).
+class TempDir : public test_support::TempDir {
 public:
-    TempDir() {
-        std::string pattern = (fs::temp_directory_path() / "carrom_store_proc_XXXXXX").string();
-        path_ = ::mkdtemp(pattern.data());
-        fs::permissions(path_, fs::perms::all, fs::perm_options::add); // nobody may use it
+    TempDir() : test_support::TempDir("carrom_store_proc") {
+        fs::permissions(path(), fs::perms::all, fs::perm_options::add);
     }
-    ~TempDir() {
-        std::error_code ec;
-        fs::remove_all(path_, ec);
-    }
-    std::string file(const std::string& name) const { return (fs::path(path_) / name).string(); }
-
-private:
-    std::string path_;
 };
 
 std::string read_bytes(const std::string& path) {
