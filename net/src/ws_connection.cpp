@@ -179,8 +179,13 @@ private:
         deadline_.cancel();
         websocket::stream_base::timeout timeouts{};
         timeouts.handshake_timeout = kCloseTimeout; // bounds the closing handshake
-        timeouts.idle_timeout = websocket::stream_base::none();
-        timeouts.keep_alive_pings = false;
+        if (options_.silence_timeout.count() > 0) {
+            timeouts.idle_timeout = options_.silence_timeout;
+            timeouts.keep_alive_pings = true; // a ping at half of it; the server's pong resets it
+        } else {
+            timeouts.idle_timeout = websocket::stream_base::none();
+            timeouts.keep_alive_pings = false;
+        }
         ws_.set_option(timeouts);
         ws_.text(true);
         open_ = true;
@@ -211,9 +216,14 @@ private:
                 std::lock_guard lock(mutex_);
                 status_.close_code = reason.code;
             }
-            fail(ours ? std::string("Closed by this client.")
-                      : read_error_text(url_, ec, reason.code,
-                                        std::string(reason.reason.data(), reason.reason.size())));
+            if (ours) {
+                fail("Closed by this client.");
+            } else if (ec == beast::error::timeout) {
+                fail(silence_text(url_, options_.silence_timeout));
+            } else {
+                fail(read_error_text(url_, ec, reason.code,
+                                     std::string(reason.reason.data(), reason.reason.size())));
+            }
             return;
         }
         const bool text = ws_.got_text();

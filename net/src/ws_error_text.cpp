@@ -10,6 +10,12 @@ namespace carrom::net {
 
 namespace {
 
+// "5 s" for whole seconds, "1500 ms" otherwise.
+std::string duration_text(std::chrono::milliseconds duration) {
+    const auto ms = duration.count();
+    return ms % 1000 == 0 ? std::to_string(ms / 1000) + " s" : std::to_string(ms) + " ms";
+}
+
 namespace asio_error = boost::asio::error;
 namespace websocket = boost::beast::websocket;
 
@@ -56,10 +62,13 @@ std::string connect_error_text(const WsUrl& url, const boost::system::error_code
 }
 
 std::string connect_timeout_text(const WsUrl& url, std::chrono::milliseconds timeout) {
-    const auto ms = timeout.count();
-    const std::string amount =
-        ms % 1000 == 0 ? std::to_string(ms / 1000) + " s" : std::to_string(ms) + " ms";
-    return "Could not reach " + url.authority() + ": no answer within " + amount + ".";
+    return "Could not reach " + url.authority() + ": no answer within " + duration_text(timeout) +
+           ".";
+}
+
+std::string silence_text(const WsUrl& url, std::chrono::milliseconds timeout) {
+    return "Nothing arrived from " + url.authority() + " for " + duration_text(timeout) +
+           ": the link is silent, taken for lost.";
 }
 
 std::string handshake_error_text(const WsUrl& url, const boost::system::error_code& ec) {

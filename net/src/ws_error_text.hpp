@@ -23,6 +23,8 @@ std::string handshake_error_text(const WsUrl& url, const boost::system::error_co
 // After the connection was open: a close frame from the server (code, reason) or a lost link.
 std::string read_error_text(const WsUrl& url, const boost::system::error_code& ec,
                             std::uint16_t close_code, const std::string& close_reason);
+// "Nothing arrived from HOST:PORT for 10 s: the link is silent, taken for lost."
+std::string silence_text(const WsUrl& url, std::chrono::milliseconds timeout);
 // What a WebSocket close code means, in a few words ("the server is shutting down").
 std::string close_code_meaning(std::uint16_t close_code);
 

@@ -286,6 +286,52 @@ TEST(Connection, LostConnectionIsReported) {
         << status.detail;
 }
 
+TEST(Connection, SilentLinkIsTakenForLostAfterTheSilenceTimeout) {
+    // The peer accepts, then reads nothing and sends nothing: it does not even answer the
+    // connection's keep-alive ping, as on a link where no packet passes and no reset comes.
+    std::atomic<bool> release{false};
+    OneShotServer server(websocket_peer([&](Peer&) {
+        while (!release) {
+            std::this_thread::sleep_for(5ms);
+        }
+    }));
+    ConnectionOptions options;
+    options.silence_timeout = 600ms;
+    auto connection = Connection::open(server.url(), options);
+    const auto open_deadline = std::chrono::steady_clock::now() + 5s;
+    while (connection->status().state == ConnectionState::Connecting &&
+           std::chrono::steady_clock::now() < open_deadline) {
+        connection->wait(10ms);
+    }
+    ASSERT_EQ(connection->status().state, ConnectionState::Open);
+    const auto opened = std::chrono::steady_clock::now();
+    const auto status = wait_closed(*connection, 5s);
+    const auto took = std::chrono::steady_clock::now() - opened;
+    release = true;
+    EXPECT_EQ(status.state, ConnectionState::Closed);
+    EXPECT_EQ(status.detail, "Nothing arrived from " + server.url().substr(5) +
+                                 " for 600 ms: the link is silent, taken for lost.");
+    EXPECT_EQ(status.close_code, 0);
+    EXPECT_GE(took, 550ms);
+    EXPECT_LT(took, 3s);
+}
+
+TEST(Connection, QuietPeerThatAnswersPingsStaysOpenPastTheSilenceTimeout) {
+    // The peer sends no message at all but keeps reading, so it answers the connection's
+    // keep-alive pings with pongs (Beast does): the link is alive, the connection stays open.
+    OneShotServer server(websocket_peer(pong_server));
+    ConnectionOptions options;
+    options.silence_timeout = 300ms;
+    auto connection = Connection::open(server.url(), options);
+    const auto deadline = std::chrono::steady_clock::now() + 1500ms;
+    while (std::chrono::steady_clock::now() < deadline) {
+        connection->wait(20ms);
+    }
+    EXPECT_EQ(connection->status().state, ConnectionState::Open) << connection->status().detail;
+    connection->close();
+    EXPECT_EQ(wait_closed(*connection, 5s).detail, "Closed by this client.");
+}
+
 TEST(Connection, CloseSendsPendingMessagesThenACloseFrame) {
     std::atomic<int> pings{0};
     std::atomic<int> close_code{-1};

@@ -30,6 +30,11 @@ struct ConnectionStatus {
 
 struct ConnectionOptions {
     std::chrono::milliseconds connect_timeout{5000};
+    // Once open: when nothing (not even a pong) has arrived for half of this, the connection
+    // pings the server; when nothing has arrived for all of it, the link is taken for dead
+    // (a cable pulled, Wi-Fi gone: no reset ever arrives) and the connection closes with a
+    // sentence saying so. Zero: wait forever.
+    std::chrono::milliseconds silence_timeout{10000};
     std::size_t max_queued_sends = 256; // sends beyond this while the socket is slow are dropped
 };
 
