@@ -4,6 +4,7 @@
 #include "carrom/bots/bot_runner.hpp"
 #include "carrom/bots/scripted_strategy.hpp"
 #include "carrom/proto/types.hpp"
+#include "trace_writer.hpp"
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
@@ -125,6 +126,10 @@ int main(int argc, char** argv) {
                    "After a lost connection, seconds to keep trying to resume the seat (the "
                    "server's --grace plus a margin; 0 = fail at once)")
         ->check(CLI::Range(0.0, 86400.0));
+    std::string trace_path;
+    app.add_option("--trace", trace_path,
+                   "Write a JSON line per shot sent and snapshot received, with the monotonic "
+                   "clock in ms (scripts/network_report.py)");
     app.add_option("--log-level", log_level, "trace, debug, info, warn, error, off")
         ->check(CLI::IsMember({"trace", "debug", "info", "warn", "error", "off"}));
     CLI11_PARSE(app, argc, argv);
@@ -179,9 +184,18 @@ int main(int argc, char** argv) {
     }
     auto strategy = std::get<std::unique_ptr<bots::Strategy>>(std::move(made));
 
+    bots::TraceWriter trace;
+    if (!trace_path.empty()) {
+        if (auto error = trace.open(trace_path)) {
+            std::cerr << *error << "\n";
+            return 2;
+        }
+    }
+
     bots::BotRunner runner(config, *strategy);
     std::string announced_room;
-    runner.on_message = [&announced_room](const proto::ServerMessage& message) {
+    runner.on_message = [&announced_room, &trace](const proto::ServerMessage& message) {
+        trace.message(message);
         if (const auto* room = std::get_if<proto::RoomState>(&message)) {
             if (room->code != announced_room) { // for scripts: the code others join with
                 announced_room = room->code;
@@ -194,7 +208,11 @@ int main(int argc, char** argv) {
             spdlog::warn("error {}: {}", error->code, error->message);
         }
     };
-    runner.on_notice = [](const std::string& text) { spdlog::warn("{}", text); };
+    runner.on_notice = [&trace](const std::string& text) {
+        trace.notice(text);
+        spdlog::warn("{}", text);
+    };
+    runner.on_shoot = [&trace](const proto::Shoot& shoot) { trace.shoot(shoot); };
     runner.start();
     runner.run_until_done(std::chrono::milliseconds(static_cast<std::int64_t>(timeout_s * 1000.0)));
     const auto& summary = runner.summary();

@@ -62,6 +62,85 @@ TEST(BotCli, TwoBotProcessesPlayAMatch) {
     EXPECT_NE(a["result"], b["result"]);
 }
 
+TEST(BotCli, TraceHasEveryShotSentAndTheSnapshotsThatFollowIt) {
+    TestServer server;
+    const std::string bot = CARROM_BOT_PATH;
+    const std::string trace = temp_path("creator.trace");
+    const std::string creator_err = temp_path("trace_creator.err");
+    CommandRun creator;
+    std::thread creator_thread([&] {
+        creator = run_command(bot + " --url " + server.url() + " --create --rule-set freestyle" +
+                              " --target-points 30 --shot-clock 0 --strategy sampling --seed 5" +
+                              " --timeout 60 --trace " + trace + " 2> " + creator_err);
+    });
+    std::string code;
+    for (int i = 0; i < 200 && code.empty(); ++i) {
+        std::this_thread::sleep_for(25ms);
+        std::ifstream err(creator_err);
+        std::string word;
+        while (err >> word) {
+            if (word == "room" && err >> code) {
+                break;
+            }
+        }
+    }
+    ASSERT_EQ(code.size(), 6u);
+    const CommandRun joiner = run_command(bot + " --url " + server.url() + " --join " + code +
+                                          " --strategy random --seed 6 --timeout 60");
+    creator_thread.join();
+    std::remove(creator_err.c_str());
+    ASSERT_EQ(creator.exit, 0) << creator.out;
+    ASSERT_EQ(joiner.exit, 0) << joiner.out;
+    const auto summary = nlohmann::json::parse(creator.out);
+
+    std::ifstream in(trace);
+    std::vector<nlohmann::json> lines;
+    for (std::string line; std::getline(in, line);) {
+        lines.push_back(nlohmann::json::parse(line));
+    }
+    std::remove(trace.c_str());
+    ASSERT_FALSE(lines.empty());
+    int shoots = 0;
+    int snapshots = 0;
+    double previous_ms = 0.0;
+    for (std::size_t i = 0; i < lines.size(); ++i) {
+        const auto& line = lines[i];
+        EXPECT_GE(line["ms"].get<double>(), previous_ms) << line.dump(); // one monotonic clock
+        previous_ms = line["ms"].get<double>();
+        const std::string kind = line["kind"];
+        EXPECT_TRUE(kind == "shoot" || kind == "snapshot" || kind == "room_state" ||
+                    kind == "notice")
+            << line.dump();
+        if (kind == "snapshot") {
+            ++snapshots;
+        }
+        if (kind != "shoot") {
+            continue;
+        }
+        ++shoots;
+        EXPECT_TRUE(line.contains("x") && line.contains("angle") && line.contains("power"));
+        // The shot's motion reaches its shooter: a delta of the same turn, later in the trace.
+        const int turn = line["turn"];
+        bool moved = false;
+        for (std::size_t j = i + 1; j < lines.size() && !moved; ++j) {
+            moved = lines[j]["kind"] == "snapshot" && lines[j]["turn"] == turn &&
+                    lines[j]["keyframe"] == false && lines[j]["bodies"].get<int>() > 0;
+        }
+        EXPECT_TRUE(moved) << "no motion after the shot of turn " << turn;
+    }
+    EXPECT_EQ(shoots, summary["shots"].get<int>()); // sampling sends legal shots only
+    EXPECT_EQ(snapshots, summary["snapshots"].get<int>());
+}
+
+TEST(BotCli, UnwritableTraceIsRefusedWithExitTwo) {
+    const CommandRun ran =
+        run_command(std::string(CARROM_BOT_PATH) +
+                    " --url ws://127.0.0.1:1 --quick --trace /nonexistent/dir/t 2>&1");
+    EXPECT_EQ(ran.exit, 2);
+    EXPECT_NE(ran.out.find("--trace: cannot write /nonexistent/dir/t"), std::string::npos)
+        << ran.out;
+}
+
 TEST(BotCli, UnreachableServerSaysSoAndExitsWithOne) {
     std::string url;
     {

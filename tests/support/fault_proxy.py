@@ -2,6 +2,7 @@
 """A TCP proxy for tests that puts network faults between players and carrom-server.
 
     fault_proxy.py --target HOST:PORT --control FILE [--listen HOST:PORT]
+                   [--delay-ms D --jitter-ms J --seed S]
 
 Prints "listening on HOST:PORT" on stdout once it accepts connections, then forwards every
 connection to the target, bytes in order. Every 50 ms it looks for the control file; when it
@@ -14,17 +15,27 @@ exists, it reads one command from it, deletes it, and obeys:
              an outage where no packet passes.
 
 Each command is confirmed on stdout ("cut 2 connections for 3.0 s", "open").
+
+With --delay-ms, every chunk read from either side is delivered D ms later plus a jitter drawn
+uniformly from [-J, J] ms, but never before the chunk read ahead of it on the same side: bytes
+keep their order, as TCP delivers them over a path whose delay varies. A round trip through
+the proxy gains 2 D on average.
 """
 import argparse
 import asyncio
 import os
+import random
 import socket
 import struct
 import sys
 
 
 class Proxy:
-    def __init__(self, listen_host, listen_port, target_host, target_port):
+    def __init__(self, listen_host, listen_port, target_host, target_port,
+                 delay_s=0.0, jitter_s=0.0, seed=1):
+        self.delay_s = delay_s
+        self.jitter_s = jitter_s
+        self.random = random.Random(seed)
         self.listen_host = listen_host
         self.listen_port = listen_port
         self.target = (target_host, target_port)
@@ -59,6 +70,48 @@ class Proxy:
                 w.close()
 
     async def pump(self, reader, writer):
+        if self.delay_s <= 0.0 and self.jitter_s <= 0.0:
+            await self.pump_now(reader, writer)
+            return
+        queue = asyncio.Queue()
+        deliver = asyncio.ensure_future(self.deliver(queue, writer))
+        loop = asyncio.get_running_loop()
+        last_due = 0.0
+        try:
+            while True:
+                data = await reader.read(65536)
+                delay = self.delay_s + self.random.uniform(-self.jitter_s, self.jitter_s)
+                last_due = max(last_due, loop.time() + max(delay, 0.0))
+                queue.put_nowait((last_due, data))
+                if not data:
+                    break
+        except Exception:
+            queue.put_nowait((0.0, None))
+        await deliver
+
+    async def deliver(self, queue, writer):
+        """Writes each queued chunk at its due time, in order; b"" is the end, None a reset."""
+        loop = asyncio.get_running_loop()
+        try:
+            while True:
+                due, data = await queue.get()
+                if data is None:
+                    reset(writer)
+                    return
+                wait = due - loop.time()
+                if wait > 0:
+                    await asyncio.sleep(wait)
+                await self.flowing.wait()
+                if not data:
+                    if writer.can_write_eof():
+                        writer.write_eof()
+                    return
+                writer.write(data)
+                await writer.drain()
+        except Exception:
+            reset(writer)
+
+    async def pump_now(self, reader, writer):
         try:
             while True:
                 await self.flowing.wait()
@@ -116,8 +169,12 @@ async def main():
     parser.add_argument("--target", required=True, help="HOST:PORT of the server")
     parser.add_argument("--control", required=True, help="the command file to watch")
     parser.add_argument("--listen", default="127.0.0.1:0", help="HOST:PORT (0 = ephemeral)")
+    parser.add_argument("--delay-ms", type=float, default=0.0, help="added one-way delay, ms")
+    parser.add_argument("--jitter-ms", type=float, default=0.0, help="+- this, uniform, ms")
+    parser.add_argument("--seed", type=int, default=1, help="seed of the jitter")
     args = parser.parse_args()
-    proxy = Proxy(*host_port(args.listen), *host_port(args.target))
+    proxy = Proxy(*host_port(args.listen), *host_port(args.target),
+                  args.delay_ms / 1000.0, args.jitter_ms / 1000.0, args.seed)
     await proxy.listen()
     print(f"listening on {proxy.listen_host}:{proxy.listen_port}", flush=True)
     while True:

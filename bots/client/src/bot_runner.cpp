@@ -338,7 +338,11 @@ void BotRunner::maybe_play() {
     if (config_.send_aim) {
         connection_->send(proto::Aim{room_->turn, shot.x_px});
     }
-    connection_->send(proto::Shoot{room_->turn, shot.x_px, shot.angle_rad, shot.power});
+    const proto::Shoot shoot{room_->turn, shot.x_px, shot.angle_rad, shot.power};
+    connection_->send(shoot);
+    if (on_shoot) {
+        on_shoot(shoot);
+    }
 }
 
 } // namespace carrom::bots

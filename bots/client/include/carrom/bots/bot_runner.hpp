@@ -96,6 +96,8 @@ public:
     // Called with a sentence when the connection is lost, on each try to resume, and when the
     // seat is back (carrom-bot logs them).
     std::function<void(const std::string&)> on_notice;
+    // Called right after each shoot is handed to the connection (carrom-bot --trace).
+    std::function<void(const proto::Shoot&)> on_shoot;
     // Makes the connection for start() and resume(); default: net::Connection::open(url).
     std::function<std::unique_ptr<net::Connection>(const BotConfig&)> connect;
 
