@@ -79,6 +79,14 @@ int main(int argc, char** argv) {
                    "Seconds to close connections on SIGINT/SIGTERM")
         ->envname("CARROM_SHUTDOWN_GRACE")
         ->check(CLI::Range(0.0, 60.0));
+    app.add_option("--http-rate", s.http_rate,
+                   "Match API and /metrics requests per second per client address (sustained)")
+        ->envname("CARROM_HTTP_RATE")
+        ->check(CLI::Range(0.01, 100000.0));
+    app.add_option("--http-burst", s.http_burst,
+                   "Match API and /metrics request burst allowance per client address")
+        ->envname("CARROM_HTTP_BURST")
+        ->check(CLI::Range(1.0, 100000.0));
     app.add_option("--bot-seed", bot_seed, "Seed of the first server-side bot's random choices")
         ->envname("CARROM_BOT_SEED");
     app.add_option("--bot-think-ms", bot_think_ms,

@@ -5,9 +5,12 @@
 #include "ws_session.hpp"
 
 #include <boost/asio/buffer.hpp>
+#include <boost/asio/post.hpp>
 #include <boost/beast/core/bind_handler.hpp>
 #include <boost/beast/websocket/rfc6455.hpp>
 
+#include <cstdio>
+#include <string>
 #include <string_view>
 
 namespace carrom::server {
@@ -92,6 +95,10 @@ void HttpSession::respond(const Request& request) {
         respond_web(request);
         return;
     }
+    const bool head = request.method() == http::verb::head;
+    if ((api || target == "/metrics") && refuse_over_rate(request.version(), head)) {
+        return;
+    }
     auto response = std::make_shared<Response>();
     response->version(request.version());
     response->set(http::field::server, "carrom-server");
@@ -102,11 +109,8 @@ void HttpSession::respond(const Request& request) {
             response->set(http::field::allow, "GET");
             response->body() = "method not allowed\n";
         } else if (api) {
-            const MatchApiAnswer answer = answer_match_api(core_.store.get(), target_view);
-            response->result(static_cast<unsigned>(answer.status));
-            response->set(http::field::content_type, "application/json");
-            response->set(http::field::cache_control, "no-store");
-            response->body() = answer.body;
+            answer_api(request.version(), target_view);
+            return;
         } else if (target == "/healthz") {
             // 200 "ok", 200 "degraded: ..." while match store writes fail (matches go on in
             // memory), 503 "stopping" during shutdown.
@@ -137,12 +141,72 @@ void HttpSession::respond(const Request& request) {
         response->result(http::status::not_found);
         response->body() = "not found\n";
     }
+    send(std::move(response), head);
+}
+
+bool HttpSession::refuse_over_rate(unsigned version, bool head) {
+    beast::error_code ec;
+    const auto remote = stream_.socket().remote_endpoint(ec);
+    const std::string address = ec ? std::string() : remote.address().to_string();
+    const int retry_s = core_.http_limiter.take(address, core_.clock.now_ms());
+    if (retry_s == 0) {
+        return false;
+    }
+    core_.metrics.http_rate_limited_total.fetch_add(1, std::memory_order_relaxed);
+    char limits[96];
+    std::snprintf(limits, sizeof limits, "%g requests per second, bursts of %g",
+                  core_.settings.http_rate, core_.settings.http_burst);
+    auto response =
+        api_response(version, match_api_error(429, match_api_code::kRateLimited,
+                                              "Too many requests from your address (at most " +
+                                                  std::string(limits) + "); retry in " +
+                                                  std::to_string(retry_s) + " s."));
+    response->set(http::field::retry_after, std::to_string(retry_s));
+    send(std::move(response), head);
+    return true;
+}
+
+void HttpSession::answer_api(unsigned version, std::string_view target) {
+    if (!core_.match_reader) { // no store: nothing to read
+        send(api_response(version, answer_match_api(nullptr, target)), false);
+        return;
+    }
+    const bool queued = core_.match_reader->submit(
+        std::string(target), [self = shared_from_this(), executor = stream_.get_executor(),
+                              version](MatchApiAnswer answer) {
+            asio::post(executor, [self, version, answer = std::move(answer)] {
+                // The read may have outlasted the request's timeout: a fresh one for the write.
+                self->stream_.expires_after(to_duration(self->core_.settings.handshake_timeout_s));
+                self->send(self->api_response(version, answer), false);
+            });
+        });
+    if (!queued) {
+        send(api_response(version, match_api_error(503, match_api_code::kStoreBusy,
+                                                   "Too many match store reads wait; retry "
+                                                   "in a moment.")),
+             false);
+    }
+}
+
+std::shared_ptr<HttpSession::Response> HttpSession::api_response(unsigned version,
+                                                                 const MatchApiAnswer& answer) {
+    auto response = std::make_shared<Response>();
+    response->version(version);
+    response->set(http::field::server, "carrom-server");
+    response->result(static_cast<unsigned>(answer.status));
+    response->set(http::field::content_type, "application/json");
+    response->set(http::field::cache_control, "no-store");
+    response->body() = answer.body;
+    return response;
+}
+
+void HttpSession::send(std::shared_ptr<Response> response, bool head) {
     if (response->body().size() > 0 &&
         response->find(http::field::content_type) == response->end()) {
         response->set(http::field::content_type, "text/plain");
     }
     response->prepare_payload();
-    if (request.method() == http::verb::head) {
+    if (head) {
         response->body().clear(); // the GET's Content-Length, no body
     }
     write(std::move(response), false);

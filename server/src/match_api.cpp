@@ -18,8 +18,7 @@ namespace {
 using Json = nlohmann::json;
 
 MatchApiAnswer error(int status, std::string_view code, std::string message) {
-    return {status,
-            Json{{"error", {{"code", std::string(code)}, {"message", std::move(message)}}}}.dump()};
+    return match_api_error(status, code, std::move(message));
 }
 
 // Percent-decoding of a query value ('+' is a space); empty optional when malformed.
@@ -120,6 +119,11 @@ MatchApiAnswer answer_list(store::MatchStore& store, std::string_view query) {
 }
 
 } // namespace
+
+MatchApiAnswer match_api_error(int status, std::string_view code, std::string message) {
+    return {status,
+            Json{{"error", {{"code", std::string(code)}, {"message", std::move(message)}}}}.dump()};
+}
 
 bool is_match_api_target(std::string_view target) {
     const std::string_view path = target.substr(0, target.find('?'));

@@ -2,7 +2,8 @@
 // Private to server/src: the HTTP API of the match store (docs/protocol.md, "Match API"):
 // GET /matches/ID (a journal as JSON) and GET /matches?player=NAME&limit=N (a player's recent
 // matches). Boost-free: the HTTP session hands it the request target and writes its answer.
-// Reads block on the store (SQLite: a read on its reader connection).
+// Reads block on the store (SQLite: a read on its reader connection): carrom-server calls it on
+// the MatchApiReader's thread (match_api_reader.hpp), never on an I/O thread.
 
 #include "store/match_store.hpp"
 
@@ -17,6 +18,8 @@ inline constexpr std::string_view kBadMatchId = "bad_match_id";      // 400
 inline constexpr std::string_view kBadQuery = "bad_query";           // 400
 inline constexpr std::string_view kUnknownMatch = "unknown_match";   // 404
 inline constexpr std::string_view kStoreError = "store_error";       // 500: the read failed
+inline constexpr std::string_view kStoreBusy = "store_busy";         // 503: too many reads wait
+inline constexpr std::string_view kRateLimited = "rate_limited";     // 429: per-address limit
 } // namespace match_api_code
 
 inline constexpr int kDefaultMatchListLimit = 20;
@@ -26,6 +29,9 @@ struct MatchApiAnswer {
     int status = 200;
     std::string body; // JSON (application/json)
 };
+
+// An error answer: {"error": {"code": code, "message": message}}.
+MatchApiAnswer match_api_error(int status, std::string_view code, std::string message);
 
 // True for the paths this API answers: "/matches" (with a query) and "/matches/...".
 bool is_match_api_target(std::string_view target);

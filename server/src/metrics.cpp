@@ -48,6 +48,8 @@ std::string Metrics::prometheus_text() const {
            "Clients disconnected for a full write queue.", slow_client_disconnects_total);
     metric(out, "carrom_http_requests_total", "counter", "Plain HTTP requests.",
            http_requests_total);
+    metric(out, "carrom_http_rate_limited_total", "counter",
+           "HTTP requests refused with 429 (per-address rate limit).", http_rate_limited_total);
     out << "# HELP carrom_snapshot_lag_seconds Snapshot send time minus its scheduled time.\n"
         << "# TYPE carrom_snapshot_lag_seconds histogram\n";
     for (std::size_t i = 0; i < kLagBucketsMs.size(); ++i) {

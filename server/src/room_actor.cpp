@@ -18,13 +18,16 @@ void RoomActor::bind_journal() {
     if (!journal_) {
         return;
     }
-    journal_->on_written([weak = weak_from_this()](const std::string& match_id, std::int64_t seq) {
-        if (auto self = weak.lock()) {
-            asio::post(self->strand_, [self, match_id, seq] {
-                self->room_.journal_written(match_id, seq);
-                self->after();
-            });
-        }
+    journal_->on_written([weak = weak_from_this(), gate = core_.confirmations](
+                             const std::string& match_id, std::int64_t seq) {
+        gate->pass([&] {
+            if (auto self = weak.lock()) {
+                asio::post(self->strand_, [self, match_id, seq] {
+                    self->room_.journal_written(match_id, seq);
+                    self->after();
+                });
+            }
+        });
     });
 }
 

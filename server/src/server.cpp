@@ -103,6 +103,11 @@ void Server::shutdown() {
         t.join();
     }
     impl_->threads.clear();
+    // No store confirmation reaches a room or ioc from now on: the store may outlive both.
+    core.confirmations->close();
+    if (core.match_reader) {
+        core.match_reader->stop(); // no answer posts to a session after this
+    }
     core.bot_pool.join();
     if (core.store) {
         // Everything the rooms journaled, written before the process ends (their unfinished

@@ -16,7 +16,9 @@ ServerCore::ServerCore(ServerSettings s, BotFactory b, std::shared_ptr<const Sta
                        std::shared_ptr<store::MatchStore> st)
     : settings(std::move(s)), bots(std::move(b)), web(std::move(w)), store(std::move(st)),
       ioc(std::max(1, settings.threads)),
-      registry(random, static_cast<std::size_t>(std::max(0, settings.max_rooms))) {}
+      registry(random, static_cast<std::size_t>(std::max(0, settings.max_rooms))),
+      match_reader(store ? std::make_unique<MatchApiReader>(store, kMatchApiMaxPending) : nullptr),
+      http_limiter(settings.http_rate, settings.http_burst, settings.http_rate_addresses) {}
 
 void ServerCore::add_session(const std::shared_ptr<WsSession>& session) {
     std::lock_guard lock(sessions_mutex);

@@ -2,7 +2,10 @@
 // Private to server/src: what the listener, the sessions and the room actors share. Lives as long
 // as the Server.
 
+#include "address_rate_limiter.hpp"
 #include "asio_types.hpp"
+#include "confirmation_gate.hpp"
+#include "match_api_reader.hpp"
 
 #include "carrom/proto/client_messages.hpp"
 #include "carrom/room/clock.hpp"
@@ -40,9 +43,12 @@ struct ServerCore {
     ServerSettings settings;
     BotFactory bots;
     std::shared_ptr<const StaticSite> web; // the web client's files; null = none
-    // Where match journals go; null = none (--data none). Outlives ioc: a write confirmation
-    // posted to a room after ioc is gone finds no room (rooms die with the registry and ioc).
+    // Where match journals go; null = none (--data none). May outlive the server (main keeps a
+    // reference); its confirmations pass through `confirmations`.
     std::shared_ptr<store::MatchStore> store;
+    // Write confirmations reach the rooms through it; closed by Server::shutdown once the I/O
+    // threads have ended (confirmation_gate.hpp). Shared with the callbacks the store holds.
+    std::shared_ptr<ConfirmationGate> confirmations = std::make_shared<ConfirmationGate>();
     room::SteadyClock clock;
     SystemRandom random;
     Metrics metrics;
@@ -50,6 +56,10 @@ struct ServerCore {
     SessionRegistry registry;
     asio::thread_pool bot_pool{1}; // bot thinking, never on an I/O thread
     std::atomic<bool> stopping{false};
+    // Answers the match API off the I/O threads; null without a store. Declared after ioc, so
+    // it is stopped (Server::shutdown) and destroyed before ioc: its answers post to sessions.
+    std::unique_ptr<MatchApiReader> match_reader;
+    AddressRateLimiter http_limiter;
 
     // Live WebSocket sessions (for shutdown).
     std::mutex sessions_mutex;

@@ -63,7 +63,8 @@ public:
     ServerProcess(const std::string& data, std::uint16_t port)
         : process_({CARROM_SERVER_PATH, "--host", "127.0.0.1", "--port", std::to_string(port),
                     "--time-scale", "25", "--grace", "20", "--log-level", "info",
-                    "--max-connections-per-address", "1000", "--data", data}) {
+                    "--max-connections-per-address", "1000", "--http-rate", "1000", "--http-burst",
+                    "1000", "--data", data}) {
         const std::string prefix = "listening on 127.0.0.1:";
         const auto line = process_.wait_line(ChildProcess::Stream::Out, prefix,
                                              std::chrono::steady_clock::now() + 15s);

@@ -82,7 +82,7 @@ public:
     ServerProcess(const std::string& data, const std::vector<std::string>& env = {})
         : process_({CARROM_SERVER_PATH, "--host", "127.0.0.1", "--port", "0", "--shot-clock", "0",
                     "--time-scale", "25", "--log-level", "warn", "--max-connections-per-address",
-                    "1000", "--data", data},
+                    "1000", "--http-rate", "1000", "--http-burst", "1000", "--data", data},
                    env) {
         const std::string prefix = "listening on 127.0.0.1:";
         const auto line = process_.wait_line(ChildProcess::Stream::Out, prefix,

@@ -265,11 +265,17 @@ Loaded<std::vector<RecoveredMatch>> SqliteMatchStore::load_unfinished() {
 }
 
 Loaded<std::optional<proto::MatchJournal>> SqliteMatchStore::journal(const MatchId& match) {
+    if (options_.before_read) {
+        options_.before_read();
+    }
     return reader_->journal(match);
 }
 
 Loaded<std::vector<MatchListing>> SqliteMatchStore::recent_matches(const std::string& player,
                                                                    int limit) {
+    if (options_.before_read) {
+        options_.before_read();
+    }
     return reader_->recent_matches(player, limit);
 }
 

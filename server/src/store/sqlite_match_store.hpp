@@ -59,6 +59,9 @@ struct SqliteStoreOptions {
     // Test seam: while it returns true, every transaction fails just before its COMMIT and is
     // rolled back, as a real write error would be. Called on the writer thread.
     std::function<bool()> fail_writes;
+    // Test seam: called before each journal and recent_matches read, on the reading thread (it
+    // may block, to make a read slow).
+    std::function<void()> before_read;
 };
 
 class SqliteMatchStore final : public MatchStore {

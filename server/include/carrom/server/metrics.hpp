@@ -24,6 +24,7 @@ struct Metrics : room::RoomCounters {
     std::atomic<std::int64_t> cues_dropped_total{0};      // collision and aim cues dropped
     std::atomic<std::int64_t> slow_client_disconnects_total{0};
     std::atomic<std::int64_t> http_requests_total{0};
+    std::atomic<std::int64_t> http_rate_limited_total{0}; // 429 answers
 
     std::string prometheus_text() const;
 };

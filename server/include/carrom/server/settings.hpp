@@ -31,6 +31,10 @@ struct ServerSettings {
     // A quick-match waiter with no partner after this long gets a bot room; 0 = never.
     double quick_match_bot_s = 20.0;
     proto::BotLevel quick_match_bot_level = proto::BotLevel::Medium;
+    // Plain HTTP requests to the match API and /metrics per client address (429 over it).
+    double http_rate = 10.0;                // requests per second (sustained)
+    double http_burst = 20.0;               // bucket size
+    std::size_t http_rate_addresses = 4096; // addresses tracked at once
 };
 
 } // namespace carrom::server
