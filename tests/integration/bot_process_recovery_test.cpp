@@ -179,7 +179,7 @@ void kill_and_recover(Moment moment, const std::vector<std::string>& play) {
 }
 
 TEST(RecoveryProcess, CarromBotProcessesResumeAndFinishAfterAKillWhileAPlayerAims) {
-    // Greedy bots spend their whole --think-ms on each decision: 250 ms of aiming per stroke.
+    // Greedy bots search for up to --think-ms on each decision: the aiming to kill the server in.
     kill_and_recover(Moment::Aiming,
                      {"--strategy", "greedy", "--level", "hard", "--think-ms", "250"});
 }
