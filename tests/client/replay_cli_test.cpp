@@ -10,6 +10,7 @@
 #include "carrom/proto/journal_replay.hpp"
 #include "proto/journal_support.hpp"
 #include "support/child_process.hpp"
+#include "support/server_process.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -66,27 +67,17 @@ const proto::MatchJournal& short_journal() {
     return journal;
 }
 
-// carrom-server serving `root` over HTTP on an ephemeral port of 127.0.0.1.
-class WebServer {
-public:
-    // data: the match store's file, or "none".
-    explicit WebServer(const fs::path& root, const std::string& data = "none")
-        : process_({CARROM_SERVER_PATH, "--host", "127.0.0.1", "--port", "0", "--log-level", "warn",
-                    "--time-scale", "25", "--data", data, "--web-root", root.string()}) {
-        const std::string prefix = "listening on 127.0.0.1:";
-        if (auto line = process_.wait_line(ChildProcess::Stream::Out, prefix, Clock::now() + 15s)) {
-            port_ = line->substr(line->find(prefix) + prefix.size());
-            port_ = port_.substr(0, port_.find_first_not_of("0123456789"));
-        }
-    }
-    std::string base() const { return "http://127.0.0.1:" + port_; }
-    std::string ws() const { return "ws://127.0.0.1:" + port_; }
-    bool up() const { return !port_.empty(); }
+using test_support::ServerProcess;
 
-private:
-    ChildProcess process_;
-    std::string port_;
-};
+// carrom-server serving `root` over HTTP on an ephemeral port of 127.0.0.1; data: the match
+// store's file, or "none".
+ServerProcess::Options web_server(const fs::path& root, const std::string& data = "none") {
+    ServerProcess::Options options;
+    options.program = CARROM_SERVER_PATH;
+    options.data = data;
+    options.args = {"--log-level", "warn", "--time-scale", "25", "--web-root", root.string()};
+    return options;
+}
 
 struct ClientRun {
     int exit_code = -1;
@@ -180,8 +171,8 @@ TEST(ReplayCli, AJournalFromAServersHttpPortPlaysTheSame) {
     TempDir dir("url");
     write_file(dir.path / "index.html", "<!doctype html><title>carrom</title>");
     write_file(dir.path / "m-0001.json", proto::journal_to_json(short_journal()).dump());
-    WebServer server(dir.path);
-    ASSERT_TRUE(server.up());
+    ServerProcess server(web_server(dir.path));
+    ASSERT_NE(server.port(), 0);
     const fs::path final_state = dir.path / "final.json";
     const ClientRun run = run_client({"--replay", server.base() + "/m-0001.json", "--replay-speed",
                                       "4", "--final-state", final_state.string(), "--timeout",
@@ -195,19 +186,19 @@ TEST(ReplayCli, AJournalFromAServersHttpPortPlaysTheSame) {
 TEST(ReplayCli, AMatchFromTheServersMatchApiPlaysToItsFinalState) {
     TempDir dir("api");
     write_file(dir.path / "index.html", "<!doctype html><title>carrom</title>");
-    WebServer server(dir.path, (dir.path / "c.db").string());
-    ASSERT_TRUE(server.up());
+    ServerProcess server(web_server(dir.path, (dir.path / "c.db").string()));
+    ASSERT_NE(server.port(), 0);
     const std::vector<std::string> common{"--shot-clock", "0",  "--strategy", "random",
                                           "--timeout",    "90", "--games",    "1"};
     std::vector<std::string> creator{
-        CARROM_BOT_PATH, "--url",      server.ws(), "--name",          "Ann", "--seed", "4",
-        "--create",      "--rule-set", "freestyle", "--target-points", "60"};
+        CARROM_BOT_PATH, "--url",      server.url(), "--name",          "Ann", "--seed", "4",
+        "--create",      "--rule-set", "freestyle",  "--target-points", "60"};
     creator.insert(creator.end(), common.begin(), common.end());
     ChildProcess ann(creator);
     const auto room = ann.wait_line(ChildProcess::Stream::Err, "room ", Clock::now() + 15s);
     ASSERT_TRUE(room);
-    std::vector<std::string> joiner{CARROM_BOT_PATH, "--url", server.ws(), "--name",       "Ben",
-                                    "--seed",        "5",     "--join",    room->substr(5)};
+    std::vector<std::string> joiner{CARROM_BOT_PATH, "--url", server.url(), "--name",       "Ben",
+                                    "--seed",        "5",     "--join",     room->substr(5)};
     joiner.insert(joiner.end(), common.begin(), common.end());
     ChildProcess ben(joiner);
     EXPECT_EQ(ann.wait_exit(Clock::now() + 100s).value_or(-1), 0);
@@ -277,20 +268,20 @@ protected:
         dir_ = new TempDir("http");
         write_file(dir_->path / "index.html", "<!doctype html><title>carrom</title>");
         write_file(dir_->path / "big.json", std::string(5000, ' ') + "{}");
-        server_ = new WebServer(dir_->path);
+        server_ = new ServerProcess(web_server(dir_->path));
     }
     static void TearDownTestSuite() {
         delete server_;
         delete dir_;
     }
     static TempDir* dir_;
-    static WebServer* server_;
+    static ServerProcess* server_;
 };
 TempDir* HttpGet::dir_ = nullptr;
-WebServer* HttpGet::server_ = nullptr;
+ServerProcess* HttpGet::server_ = nullptr;
 
 TEST_F(HttpGet, AFileComesBackWhole) {
-    ASSERT_TRUE(server_->up());
+    ASSERT_NE(server_->port(), 0);
     auto got = net::http_get(server_->base() + "/big.json", {});
     ASSERT_TRUE(std::holds_alternative<net::HttpResponse>(got)) << std::get<std::string>(got);
     EXPECT_EQ(std::get<net::HttpResponse>(got).status, 200U);
@@ -298,7 +289,7 @@ TEST_F(HttpGet, AFileComesBackWhole) {
 }
 
 TEST_F(HttpGet, AMissingFileIsA404Sentence) {
-    ASSERT_TRUE(server_->up());
+    ASSERT_NE(server_->port(), 0);
     auto got = net::http_get(server_->base() + "/matches-nowhere.json", {});
     ASSERT_TRUE(std::holds_alternative<std::string>(got));
     EXPECT_NE(std::get<std::string>(got).find("answered 404"), std::string::npos)
@@ -306,7 +297,7 @@ TEST_F(HttpGet, AMissingFileIsA404Sentence) {
 }
 
 TEST_F(HttpGet, ABodyOverTheLimitIsRefused) {
-    ASSERT_TRUE(server_->up());
+    ASSERT_NE(server_->port(), 0);
     net::HttpLimits limits;
     limits.max_body_bytes = 1000;
     auto got = net::http_get(server_->base() + "/big.json", limits);

@@ -29,6 +29,10 @@ JournalCheck check_journal(const std::string& json_text) {
             check.turns_consecutive = check.turns_consecutive &&
                                       (last_input_turn < 0 || input_turn == last_input_turn + 1);
             last_input_turn = input_turn;
+            if (check.first_turn < 0) {
+                check.first_turn = input_turn;
+            }
+            check.last_turn = input_turn;
         }
         if (const auto* stroke = std::get_if<proto::StrokeEntry>(&entry.event)) {
             ++check.strokes;

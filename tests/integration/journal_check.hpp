@@ -16,6 +16,8 @@ struct JournalCheck {
     // each stroke's or clock expiry's turn is the previous one's plus one (no turn lost, none
     // played twice)
     bool turns_consecutive = true;
+    int first_turn = -1; // the first stroke's or clock expiry's turn (-1: none)
+    int last_turn = -1;  // the last one's
 };
 
 JournalCheck check_journal(const std::string& json_text);

@@ -3,6 +3,7 @@
 // command. The server runs with a small --idle-timeout and --grace so each test takes seconds.
 #include "carrom/net/connection.hpp"
 #include "support/child_process.hpp"
+#include "support/server_process.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -26,40 +27,16 @@ std::string temp_path(const std::string& name) {
     return ::testing::TempDir() + "carrom_reconnect_" + std::to_string(getpid()) + "_" + name;
 }
 
-// carrom-server on 127.0.0.1 with an ephemeral port and these extra options.
-class ServerProcess {
-public:
-    // `port` 0: an ephemeral one.
-    explicit ServerProcess(std::vector<std::string> extra, int port = 0) {
-        std::vector<std::string> argv{CARROM_SERVER_PATH,
-                                      "--host",
-                                      "127.0.0.1",
-                                      "--port",
-                                      std::to_string(port),
-                                      "--time-scale",
-                                      "25",
-                                      "--shot-clock",
-                                      "0",
-                                      "--log-level",
-                                      "warn",
-                                      "--data",
-                                      "none"};
-        argv.insert(argv.end(), extra.begin(), extra.end());
-        process_ = std::make_unique<ChildProcess>(argv);
-        const std::string prefix = "listening on 127.0.0.1:";
-        if (auto line =
-                process_->wait_line(ChildProcess::Stream::Out, prefix, Clock::now() + 15s)) {
-            port_ = std::stoi(line->substr(prefix.size()));
-        }
-    }
-    int port() const { return port_; }
-    std::string url() const { return "ws://127.0.0.1:" + std::to_string(port_); }
-    ChildProcess& process() { return *process_; }
+using test_support::ServerProcess;
 
-private:
-    std::unique_ptr<ChildProcess> process_;
-    int port_ = 0;
-};
+// carrom-server on 127.0.0.1 (an ephemeral port), no store, with these extra options.
+ServerProcess::Options server_options(const std::vector<std::string>& extra) {
+    ServerProcess::Options options;
+    options.program = CARROM_SERVER_PATH;
+    options.args = {"--time-scale", "25", "--shot-clock", "0", "--log-level", "warn"};
+    options.args.insert(options.args.end(), extra.begin(), extra.end());
+    return options;
+}
 
 // fault_proxy.py in front of a server port; cut() and stall() write its control file.
 class FaultProxy {
@@ -156,7 +133,7 @@ std::string log_of(ChildProcess& p) {
 }
 
 TEST(Reconnect, SigtermClosesWithRestarting) {
-    ServerProcess server({});
+    ServerProcess server(server_options({}));
     ASSERT_NE(server.port(), 0);
     auto connection = net::Connection::open(server.url());
     connection->send(proto::Hello{proto::kProtocolVersion, "Asha", std::nullopt});
@@ -174,7 +151,7 @@ TEST(Reconnect, SigtermClosesWithRestarting) {
     ASSERT_TRUE(wait_for([&] {
         return !received.empty() && std::holds_alternative<proto::Welcome>(received.back());
     }));
-    server.process().stop(); // SIGTERM
+    server.terminate(); // SIGTERM
     ASSERT_TRUE(
         wait_for([&] { return connection->status().state == net::ConnectionState::Closed; }));
     for (auto& m : connection->poll()) { // what arrived just before the close
@@ -213,7 +190,7 @@ void expect_finished_with_resume(BotPair& bots, const std::string& error_code = 
 }
 
 TEST(Reconnect, BotsResumeThroughAThreeSecondCut) {
-    ServerProcess server({"--idle-timeout", "1", "--grace", "10"});
+    ServerProcess server(server_options({"--idle-timeout", "1", "--grace", "10"}));
     ASSERT_NE(server.port(), 0);
     FaultProxy proxy(server.port());
     ASSERT_NE(proxy.port(), 0);
@@ -225,7 +202,7 @@ TEST(Reconnect, BotsResumeThroughAThreeSecondCut) {
 }
 
 TEST(Reconnect, BotsResumeAfterAStallLongerThanTheIdleTimeout) {
-    ServerProcess server({"--idle-timeout", "1", "--grace", "10"});
+    ServerProcess server(server_options({"--idle-timeout", "1", "--grace", "10"}));
     ASSERT_NE(server.port(), 0);
     FaultProxy proxy(server.port());
     ASSERT_NE(proxy.port(), 0);
@@ -237,7 +214,7 @@ TEST(Reconnect, BotsResumeAfterAStallLongerThanTheIdleTimeout) {
 }
 
 TEST(Reconnect, BotGivesUpNamingTheSeatWhenTheCutOutlastsItsResumeTime) {
-    ServerProcess server({"--idle-timeout", "1", "--grace", "2"});
+    ServerProcess server(server_options({"--idle-timeout", "1", "--grace", "2"}));
     ASSERT_NE(server.port(), 0);
     FaultProxy proxy(server.port());
     ASSERT_NE(proxy.port(), 0);
@@ -255,7 +232,7 @@ TEST(Reconnect, BotGivesUpNamingTheSeatWhenTheCutOutlastsItsResumeTime) {
 }
 
 TEST(Reconnect, BotStopsWhenTheServerNoLongerHoldsTheSeat) {
-    ServerProcess server({"--idle-timeout", "1", "--grace", "1"});
+    ServerProcess server(server_options({"--idle-timeout", "1", "--grace", "1"}));
     ASSERT_NE(server.port(), 0);
     FaultProxy proxy(server.port());
     ASSERT_NE(proxy.port(), 0);
@@ -275,15 +252,15 @@ TEST(Reconnect, BotStopsWhenTheServerNoLongerHoldsTheSeat) {
 TEST(Reconnect, BotsRetryThroughAServerRestartAndStopAtTheLostSeat) {
     // Without a store the restarted server no longer knows the match: close 1012, tries while
     // the port is closed, then bad_token from the new process.
-    auto server = std::make_unique<ServerProcess>(std::vector<std::string>{"--grace", "30"});
+    auto server = std::make_unique<ServerProcess>(server_options({"--grace", "30"}));
     ASSERT_NE(server->port(), 0);
     const int port = server->port();
     BotPair bots(server->url(), {"--resume-for", "30"});
     ASSERT_EQ(bots.code.size(), 6u) << log_of(*bots.creator);
     std::this_thread::sleep_for(1500ms);
-    server->process().stop(); // SIGTERM
+    server->terminate(); // SIGTERM
     std::this_thread::sleep_for(1500ms);
-    server = std::make_unique<ServerProcess>(std::vector<std::string>{"--grace", "30"}, port);
+    ASSERT_TRUE(server->restart()) << server->log();
     ASSERT_EQ(server->port(), port);
     for (ChildProcess* bot : {bots.creator.get(), bots.joiner.get()}) {
         const auto s = BotPair::summary(*bot);

@@ -7,17 +7,12 @@
 #include "harness.hpp"
 #include "journal_check.hpp"
 
-#include "support/child_process.hpp"
+#include "support/server_process.hpp"
 #include "support/temp_dir.hpp"
 
 #include "carrom/physics_version.hpp"
 
 #include <SQLiteCpp/SQLiteCpp.h>
-#include <boost/asio/connect.hpp>
-#include <boost/asio/io_context.hpp>
-#include <boost/asio/ip/tcp.hpp>
-#include <boost/asio/read.hpp>
-#include <boost/asio/write.hpp>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -32,7 +27,6 @@ namespace carrom::integration {
 namespace {
 
 using namespace std::chrono_literals;
-using test_support::ChildProcess;
 namespace fs = std::filesystem;
 
 class TempDir : public test_support::TempDir {
@@ -40,57 +34,30 @@ public:
     TempDir() : test_support::TempDir("carrom_recovery") {}
 };
 
-// One plain HTTP/1.0 GET on 127.0.0.1: the body, or "" on failure.
-std::string get_body(std::uint16_t port, const std::string& target) {
-    boost::asio::io_context ioc;
-    boost::asio::ip::tcp::socket socket(ioc);
-    boost::system::error_code ec;
-    socket.connect({boost::asio::ip::make_address("127.0.0.1"), port}, ec);
-    if (ec) {
-        return {};
-    }
-    const std::string request = "GET " + target + " HTTP/1.0\r\nHost: localhost\r\n\r\n";
-    boost::asio::write(socket, boost::asio::buffer(request), ec);
-    std::string bytes;
-    boost::asio::read(socket, boost::asio::dynamic_buffer(bytes), ec);
-    const auto end = bytes.find("\r\n\r\n");
-    return end == std::string::npos ? std::string() : bytes.substr(end + 4);
+// carrom-server --data on a port (0: any), logging at info.
+std::unique_ptr<test_support::ServerProcess> start_server(const std::string& data) {
+    test_support::ServerProcess::Options options;
+    options.program = CARROM_SERVER_PATH;
+    options.data = data;
+    options.args = {"--time-scale",
+                    "25",
+                    "--grace",
+                    "20",
+                    "--log-level",
+                    "info",
+                    "--max-connections-per-address",
+                    "1000"};
+    return std::make_unique<test_support::ServerProcess>(options);
 }
 
-// carrom-server --data on a port (0: any), logging at info to stderr.
-class ServerProcess {
-public:
-    ServerProcess(const std::string& data, std::uint16_t port)
-        : process_({CARROM_SERVER_PATH, "--host", "127.0.0.1", "--port", std::to_string(port),
-                    "--time-scale", "25", "--grace", "20", "--log-level", "info",
-                    "--max-connections-per-address", "1000", "--http-rate", "1000", "--http-burst",
-                    "1000", "--data", data}) {
-        const std::string prefix = "listening on 127.0.0.1:";
-        const auto line = process_.wait_line(ChildProcess::Stream::Out, prefix,
-                                             std::chrono::steady_clock::now() + 15s);
-        if (line) {
-            port_ = static_cast<std::uint16_t>(std::stoi(line->substr(prefix.size())));
-        }
-    }
-    std::uint16_t port() const { return port_; }
-    std::string url() const { return "ws://127.0.0.1:" + std::to_string(port_); }
-    ChildProcess& process() { return process_; }
-    // The number in the "recovered N matches" line of the log (-1 if none came).
-    int recovered() {
-        const auto deadline = std::chrono::steady_clock::now() + 10s;
-        while (auto line = process_.wait_line(ChildProcess::Stream::Err, "", deadline)) {
-            const auto at = line->find("recovered ");
-            if (at != std::string::npos && line->find(" matches", at) != std::string::npos) {
-                return std::stoi(line->substr(at + 10));
-            }
-        }
+// The number in the "recovered N matches" line of this start's log (-1 if none came).
+int recovered(const test_support::ServerProcess& server) {
+    const auto line = server.wait_log("] recovered ", std::chrono::steady_clock::now() + 10s);
+    if (!line) {
         return -1;
     }
-
-private:
-    ChildProcess process_;
-    std::uint16_t port_ = 0;
-};
+    return std::stoi(line->substr(line->find("recovered ") + 10));
+}
 
 std::unique_ptr<bots::Strategy> sampling(std::uint64_t seed) {
     bots::StrategyOptions options;
@@ -172,15 +139,15 @@ struct Pair {
 
 // Every match the creator played: finished, and its journal replays clean with consecutive
 // turns. Returns the strokes.
-int expect_journals_clean(std::uint16_t port, std::size_t count) {
-    const auto json = nlohmann::json::parse(get_body(port, "/matches?player=creator&limit=100"));
+int expect_journals_clean(const test_support::ServerProcess& server, std::size_t count) {
+    const auto json = nlohmann::json::parse(server.get("/matches?player=creator&limit=100").body);
     const auto& matches = json["matches"];
     EXPECT_EQ(matches.size(), count);
     int strokes = 0;
     for (const auto& m : matches) {
         const std::string id = m["id"];
         EXPECT_FALSE(m["result"].is_null()) << id;
-        const JournalCheck check = check_journal(get_body(port, "/matches/" + id));
+        const JournalCheck check = check_journal(server.get("/matches/" + id).body);
         EXPECT_TRUE(check.problem.empty()) << id << ": " << check.problem;
         EXPECT_TRUE(check.game_over) << id;
         EXPECT_TRUE(check.turns_consecutive) << id;
@@ -196,7 +163,7 @@ int expect_journals_clean(std::uint16_t port, std::size_t count) {
 void kill_and_recover(const std::function<bool(const proto::ServerMessage&)>& moment,
                       bool by_themselves = false) {
     TempDir dir;
-    auto server = std::make_unique<ServerProcess>(dir.file("c.db"), 0);
+    auto server = start_server(dir.file("c.db"));
     const std::uint16_t port = server->port();
     ASSERT_NE(port, 0);
     Pair pair(server->url(), 7);
@@ -204,7 +171,7 @@ void kill_and_recover(const std::function<bool(const proto::ServerMessage&)>& mo
     bool killed = false;
     pair.hook = [&](const proto::ServerMessage& m) {
         if (!killed && pair.shots >= 3 && moment(m)) {
-            server->process().kill_now();
+            server->kill9();
             killed = true;
             if (!by_themselves) {
                 pair.drop(); // before the creator's step sees its connection lost
@@ -216,21 +183,18 @@ void kill_and_recover(const std::function<bool(const proto::ServerMessage&)>& mo
                         << pair.joiner->summary().failure;
     pair.hook = nullptr;
 
-    server = std::make_unique<ServerProcess>(dir.file("c.db"), port);
+    ASSERT_TRUE(server->restart()) << server->log();
     ASSERT_EQ(server->port(), port);
-    EXPECT_EQ(server->recovered(), 1);
+    EXPECT_EQ(recovered(*server), 1);
     if (!by_themselves) {
         pair.resume();
     }
     pair.run([] { return false; }, 25s);
     pair.expect_finished();
     if (::testing::Test::HasFailure()) {
-        (void)server->process().wait_exit(std::chrono::steady_clock::now() + 100ms);
-        for (const auto& line : server->process().lines(ChildProcess::Stream::Err)) {
-            std::fprintf(stderr, "server: %s\n", line.c_str());
-        }
+        std::fprintf(stderr, "server:\n%s", server->log().c_str());
     }
-    EXPECT_GT(expect_journals_clean(port, 1), 3);
+    EXPECT_GT(expect_journals_clean(*server, 1), 3);
 }
 
 TEST(RecoveryProcess, KilledWhileAPlayerAimsTheBotsResumeAndFinish) {
@@ -253,13 +217,13 @@ TEST(RecoveryProcess, KilledWhileAShotMovesTheBotsResumeByThemselvesAndFinish) {
 
 TEST(RecoveryProcess, AJournalOfAnotherPhysicsVersionIsNotResumedAndStaysInTheStore) {
     TempDir dir;
-    auto server = std::make_unique<ServerProcess>(dir.file("c.db"), 0);
+    auto server = start_server(dir.file("c.db"));
     const std::uint16_t port = server->port();
     ASSERT_NE(port, 0);
     Pair pair(server->url(), 9);
     pair.run([&] { return pair.shots >= 2; }, 20s);
     ASSERT_GE(pair.shots, 2);
-    server->process().stop(10s);
+    server->terminate(10s);
     pair.drop();
     std::string id;
     {
@@ -277,19 +241,16 @@ TEST(RecoveryProcess, AJournalOfAnotherPhysicsVersionIsNotResumedAndStaysInTheSt
         write.bind(2, id);
         ASSERT_EQ(write.exec(), 1);
     }
-    server = std::make_unique<ServerProcess>(dir.file("c.db"), port);
+    ASSERT_TRUE(server->restart()) << server->log();
     ASSERT_EQ(server->port(), port);
-    EXPECT_EQ(server->recovered(), 0);
-    bool logged = false;
-    for (const auto& line : server->process().lines(ChildProcess::Stream::Err)) {
-        logged = logged || (line.find("match " + id + " not recovered (left in the store)") !=
-                                std::string::npos &&
-                            line.find("physics") != std::string::npos);
-    }
-    EXPECT_TRUE(logged);
-    const auto journal = nlohmann::json::parse(get_body(port, "/matches/" + id));
+    EXPECT_EQ(recovered(*server), 0);
+    const auto logged = server->wait_log("match " + id + " not recovered (left in the store)",
+                                         std::chrono::steady_clock::now() + 1s);
+    ASSERT_TRUE(logged) << server->log();
+    EXPECT_NE(logged->find("physics"), std::string::npos) << *logged;
+    const auto journal = nlohmann::json::parse(server->get("/matches/" + id).body);
     EXPECT_EQ(journal["match"]["versions"]["physics"].get<int>(), kPhysicsVersion + 1);
-    const auto list = nlohmann::json::parse(get_body(port, "/matches?player=creator&limit=5"));
+    const auto list = nlohmann::json::parse(server->get("/matches?player=creator&limit=5").body);
     ASSERT_EQ(list["matches"].size(), 1U);
     EXPECT_TRUE(list["matches"][0]["finished_ms"].is_null());
     // Its players' tokens are unknown: no seat to give back.
@@ -302,7 +263,7 @@ TEST(RecoveryProcess, AJournalOfAnotherPhysicsVersionIsNotResumedAndStaysInTheSt
 
 TEST(RecoveryProcess, SigtermWithTwentyMatchesRunningAllTwentyFinishAfterTheRestart) {
     TempDir dir;
-    auto server = std::make_unique<ServerProcess>(dir.file("c.db"), 0);
+    auto server = start_server(dir.file("c.db"));
     const std::uint16_t port = server->port();
     ASSERT_NE(port, 0);
     constexpr int kMatches = 20;
@@ -328,14 +289,14 @@ TEST(RecoveryProcess, SigtermWithTwentyMatchesRunningAllTwentyFinishAfterTheRest
         ASSERT_GE(pair->shots, 2) << pair->creator->summary().failure;
         ASSERT_FALSE(pair->creator->done()) << "a match ended before the restart";
     }
-    server->process().stop(10s); // SIGTERM: connections closed, the store flushed
+    server->terminate(10s); // SIGTERM: connections closed, the store flushed
     for (auto& pair : pairs) {
         pair->drop();
     }
 
-    server = std::make_unique<ServerProcess>(dir.file("c.db"), port);
+    ASSERT_TRUE(server->restart()) << server->log();
     ASSERT_EQ(server->port(), port);
-    EXPECT_EQ(server->recovered(), kMatches);
+    EXPECT_EQ(recovered(*server), kMatches);
     for (auto& pair : pairs) {
         pair->resume();
     }
@@ -343,7 +304,7 @@ TEST(RecoveryProcess, SigtermWithTwentyMatchesRunningAllTwentyFinishAfterTheRest
     for (const auto& pair : pairs) {
         pair->expect_finished();
     }
-    const int strokes = expect_journals_clean(port, kMatches);
+    const int strokes = expect_journals_clean(*server, kMatches);
     EXPECT_GT(strokes, 3 * kMatches);
     std::fprintf(stderr, "%d strokes; first match's end: %s\n", strokes,
                  pairs[0]->creator->summary().last_reason.c_str());

@@ -5,15 +5,10 @@
 #include "harness.hpp"
 #include "journal_check.hpp"
 
-#include "support/child_process.hpp"
+#include "support/server_process.hpp"
 #include "support/temp_dir.hpp"
 
 #include <SQLiteCpp/SQLiteCpp.h>
-#include <boost/asio/connect.hpp>
-#include <boost/asio/io_context.hpp>
-#include <boost/asio/ip/tcp.hpp>
-#include <boost/asio/read.hpp>
-#include <boost/asio/write.hpp>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -30,7 +25,6 @@ namespace carrom::integration {
 namespace {
 
 using namespace std::chrono_literals;
-using test_support::ChildProcess;
 namespace fs = std::filesystem;
 
 // A temporary directory anyone may use (the read-only test runs carrom-server as nobody).
@@ -48,56 +42,26 @@ std::string read_bytes(const std::string& path) {
     return buffer.str();
 }
 
-struct Http {
-    int status = 0;
-    std::string body;
-};
+using test_support::ServerProcess;
+using Http = ServerProcess::Http;
 
-// One plain HTTP/1.0 GET on 127.0.0.1.
-Http get(std::uint16_t port, const std::string& target) {
-    boost::asio::io_context ioc;
-    boost::asio::ip::tcp::socket socket(ioc);
-    boost::system::error_code ec;
-    socket.connect({boost::asio::ip::make_address("127.0.0.1"), port}, ec);
-    if (ec) {
-        return {};
-    }
-    const std::string request = "GET " + target + " HTTP/1.0\r\nHost: localhost\r\n\r\n";
-    boost::asio::write(socket, boost::asio::buffer(request), ec);
-    std::string bytes;
-    boost::asio::read(socket, boost::asio::dynamic_buffer(bytes), ec);
-    Http answer;
-    if (bytes.size() > 12) {
-        answer.status = std::stoi(bytes.substr(9, 3));
-    }
-    const auto end = bytes.find("\r\n\r\n");
-    if (end != std::string::npos) {
-        answer.body = bytes.substr(end + 4);
-    }
-    return answer;
+// carrom-server with the store at `data`, no shot clock, logging warnings.
+ServerProcess::Options server_options(const std::string& data,
+                                      const std::vector<std::string>& env = {}) {
+    ServerProcess::Options options;
+    options.program = CARROM_SERVER_PATH;
+    options.data = data;
+    options.args = {"--shot-clock",
+                    "0",
+                    "--time-scale",
+                    "25",
+                    "--log-level",
+                    "warn",
+                    "--max-connections-per-address",
+                    "1000"};
+    options.env = env;
+    return options;
 }
-
-class ServerProcess {
-public:
-    ServerProcess(const std::string& data, const std::vector<std::string>& env = {})
-        : process_({CARROM_SERVER_PATH, "--host", "127.0.0.1", "--port", "0", "--shot-clock", "0",
-                    "--time-scale", "25", "--log-level", "warn", "--max-connections-per-address",
-                    "1000", "--http-rate", "1000", "--http-burst", "1000", "--data", data},
-                   env) {
-        const std::string prefix = "listening on 127.0.0.1:";
-        const auto line = process_.wait_line(ChildProcess::Stream::Out, prefix,
-                                             std::chrono::steady_clock::now() + 15s);
-        if (line) {
-            port_ = static_cast<std::uint16_t>(std::stoi(line->substr(prefix.size())));
-        }
-    }
-    std::uint16_t port() const { return port_; }
-    std::string url() const { return "ws://127.0.0.1:" + std::to_string(port_); }
-
-private:
-    ChildProcess process_;
-    std::uint16_t port_ = 0;
-};
 
 std::vector<MatchSpec> short_matches(int count) {
     std::vector<MatchSpec> specs;
@@ -113,8 +77,8 @@ std::vector<MatchSpec> short_matches(int count) {
 }
 
 // Every match of the list: served, finished with a result, its journal replays clean.
-int expect_journals_clean(std::uint16_t port, std::size_t count) {
-    const Http list = get(port, "/matches?player=creator&limit=100");
+int expect_journals_clean(const ServerProcess& server, std::size_t count) {
+    const Http list = server.get("/matches?player=creator&limit=100");
     EXPECT_EQ(list.status, 200) << list.body;
     const auto json = nlohmann::json::parse(list.body);
     EXPECT_EQ(json["format"], 1);
@@ -126,7 +90,7 @@ int expect_journals_clean(std::uint16_t port, std::size_t count) {
         EXPECT_EQ(m["players"], nlohmann::json::array({"creator", "joiner"}));
         EXPECT_FALSE(m["result"].is_null()) << id;
         EXPECT_FALSE(m["finished_ms"].is_null()) << id;
-        const Http journal = get(port, "/matches/" + id);
+        const Http journal = server.get("/matches/" + id);
         EXPECT_EQ(journal.status, 200) << id;
         const JournalCheck check = check_journal(journal.body);
         EXPECT_TRUE(check.problem.empty()) << id << ": " << check.problem;
@@ -140,30 +104,30 @@ int expect_journals_clean(std::uint16_t port, std::size_t count) {
 
 TEST(StoreProcess, BotMatchesAreJournaledServedAndReplayClean) {
     TempDir dir;
-    ServerProcess server(dir.file("c.db"));
+    ServerProcess server(server_options(dir.file("c.db")));
     ASSERT_NE(server.port(), 0);
     const int count = 50; // the 50-match check
     const auto runs = play_matches(server.url(), short_matches(count));
     for (const auto& run : runs) {
         ASSERT_TRUE(run.creator.finished && run.joiner.finished) << run.creator.failure;
     }
-    const int strokes = expect_journals_clean(server.port(), count);
+    const int strokes = expect_journals_clean(server, count);
     EXPECT_GT(strokes, count);
-    EXPECT_EQ(get(server.port(), "/matches/nosuchmatch").status, 404);
-    EXPECT_EQ(get(server.port(), "/matches/bad%20id").status, 400);
-    EXPECT_EQ(get(server.port(), "/matches?player=creator&limit=101").status, 400);
-    EXPECT_EQ(get(server.port(), "/matches?limit=5").status, 400);
-    const Http two = get(server.port(), "/matches?player=joiner&limit=2");
+    EXPECT_EQ(server.get("/matches/nosuchmatch").status, 404);
+    EXPECT_EQ(server.get("/matches/bad%20id").status, 400);
+    EXPECT_EQ(server.get("/matches?player=creator&limit=101").status, 400);
+    EXPECT_EQ(server.get("/matches?limit=5").status, 400);
+    const Http two = server.get("/matches?player=joiner&limit=2");
     EXPECT_EQ(nlohmann::json::parse(two.body)["matches"].size(), 2U);
 }
 
 TEST(StoreProcess, WithoutAStoreTheMatchApiIsDisabled) {
-    ServerProcess server("none");
+    ServerProcess server(server_options("none"));
     ASSERT_NE(server.port(), 0);
-    const Http answer = get(server.port(), "/matches/abc");
+    const Http answer = server.get("/matches/abc");
     EXPECT_EQ(answer.status, 503);
     EXPECT_EQ(nlohmann::json::parse(answer.body)["error"]["code"], "store_disabled");
-    const Http metrics = get(server.port(), "/metrics");
+    const Http metrics = server.get("/metrics");
     EXPECT_NE(metrics.body.find("carrom_store_errors_total 0"), std::string::npos);
 }
 
@@ -184,7 +148,7 @@ Refusal start_refused(const std::string& path, bool unprivileged = false) {
 }
 
 void make_database(const std::string& path) {
-    ServerProcess server(path);
+    ServerProcess server(server_options(path));
     ASSERT_NE(server.port(), 0);
 }
 
@@ -234,9 +198,9 @@ TEST(StoreProcess, ADataFileTheStoreCannotUseStopsTheStartAndStaysUntouched) {
 TEST(StoreProcess, WriteFailuresDegradeTheServerAndTheMatchesGoOn) {
     TempDir dir;
     const std::string fail = dir.file("fail");
-    ServerProcess server(dir.file("c.db"), {"CARROM_TEST_STORE_FAIL_FILE=" + fail});
+    ServerProcess server(server_options(dir.file("c.db"), {"CARROM_TEST_STORE_FAIL_FILE=" + fail}));
     ASSERT_NE(server.port(), 0);
-    EXPECT_EQ(get(server.port(), "/healthz").body, "ok\n");
+    EXPECT_EQ(server.get("/healthz").body, "ok\n");
     const int count = 6;
     auto matches = std::async(std::launch::async,
                               [&] { return play_matches(server.url(), short_matches(count)); });
@@ -244,11 +208,11 @@ TEST(StoreProcess, WriteFailuresDegradeTheServerAndTheMatchesGoOn) {
     std::ofstream(fail) << "fail\n";
     bool degraded = false;
     for (int i = 0; i < 100 && !degraded; ++i) {
-        degraded = get(server.port(), "/healthz").body.starts_with("degraded");
+        degraded = server.get("/healthz").body.starts_with("degraded");
         std::this_thread::sleep_for(50ms);
     }
     EXPECT_TRUE(degraded);
-    const std::string metrics = get(server.port(), "/metrics").body;
+    const std::string metrics = server.get("/metrics").body;
     EXPECT_EQ(metrics.find("carrom_store_errors_total 0\n"), std::string::npos) << metrics;
     EXPECT_NE(metrics.find("carrom_store_degraded 1\n"), std::string::npos) << metrics;
     std::this_thread::sleep_for(1s); // the matches go on meanwhile
@@ -259,11 +223,11 @@ TEST(StoreProcess, WriteFailuresDegradeTheServerAndTheMatchesGoOn) {
     }
     bool healthy = false;
     for (int i = 0; i < 200 && !healthy; ++i) {
-        healthy = get(server.port(), "/healthz").body == "ok\n";
+        healthy = server.get("/healthz").body == "ok\n";
         std::this_thread::sleep_for(50ms);
     }
     EXPECT_TRUE(healthy);
-    expect_journals_clean(server.port(), count);
+    expect_journals_clean(server, count);
 }
 
 } // namespace

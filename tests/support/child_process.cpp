@@ -38,10 +38,11 @@ std::vector<std::string> ChildProcess::environment(const std::vector<std::string
 }
 
 ChildProcess::ChildProcess(const std::vector<std::string>& argv,
-                           const std::vector<std::string>& env) {
+                           const std::vector<std::string>& env, const std::string& stderr_path) {
     int out[2] = {-1, -1};
     int err[2] = {-1, -1};
-    if (argv.empty() || ::pipe(out) != 0 || ::pipe(err) != 0) {
+    const bool err_to_file = !stderr_path.empty();
+    if (argv.empty() || ::pipe(out) != 0 || (!err_to_file && ::pipe(err) != 0)) {
         close_fd(out[0]);
         close_fd(out[1]);
         return;
@@ -49,9 +50,14 @@ ChildProcess::ChildProcess(const std::vector<std::string>& argv,
     posix_spawn_file_actions_t actions;
     posix_spawn_file_actions_init(&actions);
     posix_spawn_file_actions_adddup2(&actions, out[1], STDOUT_FILENO);
-    posix_spawn_file_actions_adddup2(&actions, err[1], STDERR_FILENO);
     posix_spawn_file_actions_addclose(&actions, out[0]);
-    posix_spawn_file_actions_addclose(&actions, err[0]);
+    if (err_to_file) {
+        posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, stderr_path.c_str(),
+                                         O_WRONLY | O_CREAT | O_APPEND, 0644);
+    } else {
+        posix_spawn_file_actions_adddup2(&actions, err[1], STDERR_FILENO);
+        posix_spawn_file_actions_addclose(&actions, err[0]);
+    }
     posix_spawnattr_t attr;
     posix_spawnattr_init(&attr);
     posix_spawnattr_setflags(&attr, POSIX_SPAWN_SETPGROUP);
@@ -73,12 +79,14 @@ ChildProcess::ChildProcess(const std::vector<std::string>& argv,
     }
     posix_spawn_file_actions_destroy(&actions);
     posix_spawnattr_destroy(&attr);
-    ::close(out[1]);
-    ::close(err[1]);
+    close_fd(out[1]);
+    close_fd(err[1]);
     out_.fd = out[0];
     err_.fd = err[0];
     for (int fd : {out_.fd, err_.fd}) {
-        ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) | O_NONBLOCK);
+        if (fd >= 0) {
+            ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) | O_NONBLOCK);
+        }
     }
 }
 

@@ -17,8 +17,12 @@ public:
     enum class Stream { Out, Err };
 
     // `env`: "NAME=value" entries set (or replaced) in the child's copy of this environment.
+    // `stderr_path`: when not empty, the child's stderr is appended to this file (created if
+    // missing) instead of a pipe, and lines(Stream::Err) stays empty; a chatty child cannot
+    // block on a pipe nobody reads.
     explicit ChildProcess(const std::vector<std::string>& argv,
-                          const std::vector<std::string>& env = {});
+                          const std::vector<std::string>& env = {},
+                          const std::string& stderr_path = {});
     ~ChildProcess();
     ChildProcess(const ChildProcess&) = delete;
     ChildProcess& operator=(const ChildProcess&) = delete;
