@@ -73,7 +73,7 @@ ShotStream::Step ShotStream::advance(double t_s, std::int64_t seq) {
     step.snapshot.seq = seq;
     step.snapshot.turn = turn_;
     step.snapshot.t_s = t;
-    const std::vector<Body> now = state_at(physics_, trajectory_, t);
+    const std::vector<Body>& now = cursor_.at(physics_, trajectory_, t);
     for (std::size_t i = 0; i < now.size() && i < last_sent_.size(); ++i) {
         const Body b = quantised(now[i]);
         Body& last = last_sent_[i];

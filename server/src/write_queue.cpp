@@ -46,12 +46,12 @@ WriteQueue::Push WriteQueue::push(room::Outgoing message) {
     return Push::Queued;
 }
 
-std::optional<room::Outgoing> WriteQueue::start_write() {
+const room::Outgoing* WriteQueue::start_write() {
     if (writing_ || queue_.empty()) {
-        return std::nullopt;
+        return nullptr;
     }
     writing_ = true;
-    return queue_.front();
+    return &queue_.front();
 }
 
 void WriteQueue::finish_write() {

@@ -8,6 +8,7 @@
 #include "carrom/event.hpp"
 #include "carrom/proto/server_messages.hpp"
 #include "carrom/trajectory.hpp"
+#include "carrom/trajectory_cursor.hpp"
 
 #include <cstdint>
 #include <span>
@@ -42,6 +43,7 @@ public:
 private:
     PhysicsConfig physics_;
     Trajectory trajectory_;
+    TrajectoryCursor cursor_; // each tick costs the segments since the previous one
     std::vector<Event> events_;
     std::size_t next_event_ = 0;
     double end_time_s_;

@@ -6,7 +6,6 @@
 
 #include <cstddef>
 #include <deque>
-#include <optional>
 
 namespace carrom::server {
 
@@ -25,8 +24,9 @@ public:
     enum class Push { Queued, DroppedSnapshot, DroppedCue, Overflow };
     Push push(room::Outgoing message);
 
-    // The next message to write, if none is in flight; marks it in flight.
-    std::optional<room::Outgoing> start_write();
+    // The next message to write, if none is in flight (else null); marks it in flight. It stays
+    // in the queue, and the pointer valid, until finish_write: the writer copies nothing.
+    const room::Outgoing* start_write();
     // The in-flight write finished.
     void finish_write();
     // Forgets every message not yet in flight (a session closing a slow client keeps only the
