@@ -69,9 +69,10 @@ TEST(BotCli, TraceHasEveryShotSentAndTheSnapshotsThatFollowIt) {
     const std::string creator_err = temp_path("trace_creator.err");
     CommandRun creator;
     std::thread creator_thread([&] {
-        creator = run_command(bot + " --url " + server.url() + " --create --rule-set freestyle" +
-                              " --target-points 30 --shot-clock 0 --strategy sampling --seed 5" +
-                              " --timeout 60 --trace " + trace + " 2> " + creator_err);
+        creator =
+            run_command(bot + " --url " + server.url() + " --create --rule-set freestyle" +
+                        " --target-points 30 --shot-clock 0 --strategy sampling --seed 5" +
+                        " --timeout 60 --log-level info --trace " + trace + " 2> " + creator_err);
     });
     std::string code;
     for (int i = 0; i < 200 && code.empty(); ++i) {
@@ -91,6 +92,7 @@ TEST(BotCli, TraceHasEveryShotSentAndTheSnapshotsThatFollowIt) {
     std::remove(creator_err.c_str());
     ASSERT_EQ(creator.exit, 0) << creator.out;
     ASSERT_EQ(joiner.exit, 0) << joiner.out;
+    // Logged at info on stderr; stdout holds the JSON summary alone.
     const auto summary = nlohmann::json::parse(creator.out);
 
     std::ifstream in(trace);

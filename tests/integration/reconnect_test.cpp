@@ -272,7 +272,7 @@ TEST(Reconnect, BotsRetryThroughAServerRestartAndStopAtTheLostSeat) {
             << failure;
         EXPECT_EQ(s["errors"].value("shutting_down", 0), 1) << s.dump();
         std::string log;
-        for (const auto& line : bot->lines(ChildProcess::Stream::Out)) {
+        for (const auto& line : bot->lines(ChildProcess::Stream::Err)) { // spdlog: stderr
             log += line + "\n";
         }
         EXPECT_NE(log.find("code 1012: the server is restarting"), std::string::npos) << log;
