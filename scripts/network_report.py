@@ -30,6 +30,7 @@ import argparse
 import json
 import os
 import pathlib
+import shutil
 import signal
 import statistics
 import subprocess
@@ -284,26 +285,67 @@ def play(profile, server_bin, bot_bin, work, tag, limit):
         link.close()
 
 
+def plot(results, path):
+    """First motion (median, p95 whiskers) for shooter and opponent, and bytes/s, per profile."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    rows = [r for r in results if "error" not in r]
+    labels = [r["profile"] for r in rows]
+    fig, ax = plt.subplots(1, 2, figsize=(12, 4.2), gridspec_kw={"width_ratios": [2, 1]})
+    x = range(len(rows))
+    for offset, key, name, colour in ((-0.2, "shooter_first_motion_ms", "shooter", "#4a7"),
+                                      (0.2, "opponent_first_motion_ms", "opponent", "#47a")):
+        med = [r[key]["median"] or 0 for r in rows]
+        p95 = [max(0, (r[key]["p95"] or 0) - (r[key]["median"] or 0)) for r in rows]
+        ax[0].bar([i + offset for i in x], med, width=0.4, yerr=[[0] * len(rows), p95],
+                  capsize=3, color=colour, label=f"{name} (median, whisker to p95)")
+    ax[0].set_xticks(list(x), labels, fontsize=8)
+    ax[0].set_ylabel("ms from the shot leaving the shooter\nto its first snapshot")
+    ax[0].set_yscale("symlog", linthresh=10)
+    ax[0].legend(fontsize=8)
+    ax[0].set_title("First motion", fontsize=10)
+    ax[1].bar(list(x), [r["bytes_per_s_per_client"] / 1000 for r in rows], color="#a74")
+    ax[1].set_xticks(list(x), labels, fontsize=8, rotation=30)
+    ax[1].set_ylabel("kB/s received per client (whole match)")
+    ax[1].set_title("Traffic", fontsize=10)
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+
+
 def fmt(value, digits=0):
     return "-" if value is None else f"{value:.{digits}f}"
 
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    parser.add_argument("--server", required=True, help="carrom-server binary")
-    parser.add_argument("--bot", required=True, help="carrom-bot binary")
+    parser.add_argument("--server", help="carrom-server binary")
+    parser.add_argument("--bot", help="carrom-bot binary")
     parser.add_argument("--profiles", default=",".join(PROFILES),
                         help="comma-separated: " + ", ".join(PROFILES))
     parser.add_argument("--json", help="write the results here as well")
     parser.add_argument("--limit", type=int, default=400, help="seconds per profile, at most")
     parser.add_argument("--keep", help="keep the logs and traces in this directory")
+    parser.add_argument("--plot", help="draw the figures into this PNG (needs matplotlib)")
+    parser.add_argument("--from-json", help="no matches: print (and plot) these results")
     args = parser.parse_args()
+    if args.from_json:
+        results = json.loads(pathlib.Path(args.from_json).read_text())
+        return report(results, args)
+    if not args.server or not args.bot:
+        sys.exit("network_report: --server and --bot are needed (or --from-json)")
     if os.geteuid() != 0:
         sys.exit("network_report: needs root (network namespaces, nftables, tc)")
     profiles = [p for p in args.profiles.split(",") if p]
     unknown = [p for p in profiles if p not in PROFILES]
     if unknown:
         sys.exit(f"network_report: unknown profile(s) {', '.join(unknown)}")
+    needs = {"ip": "iproute2", "tc": "iproute2"}
+    if any(PROFILES[p][3] for p in profiles):
+        needs["nft"] = "nftables"
+    missing = sorted({pkg for tool, pkg in needs.items() if shutil.which(tool) is None})
+    if missing:
+        sys.exit(f"network_report: install {' '.join(missing)} first (apt-get install)")
     results = []
     with tempfile.TemporaryDirectory(prefix="carrom-netreport-") as tmp:
         work = pathlib.Path(args.keep or tmp)
@@ -319,6 +361,12 @@ def main():
                 detail = getattr(error, "stderr", "") or ""
                 results.append({"profile": profile, "description": PROFILES[profile][0],
                                 "finished": False, "error": f"{error} {detail}".strip()})
+    if args.json:
+        pathlib.Path(args.json).write_text(json.dumps(results, indent=2) + "\n")
+    return report(results, args)
+
+
+def report(results, args):
     print("| profile | finished, same score | shots | first motion, shooter: median / p95 ms "
           "| opponent: median / p95 ms | bytes/s per client | dropped snapshots | resumes |")
     print("| --- | --- | --- | --- | --- | --- | --- | --- |")
@@ -331,8 +379,8 @@ def main():
               f"{fmt(s['median'])} / {fmt(s['p95'])} | {fmt(o['median'])} / {fmt(o['p95'])} | "
               f"{fmt(r['bytes_per_s_per_client'])} | {r['seq_gaps']} | "
               f"{sum(r['resumes'].values())} |")
-    if args.json:
-        pathlib.Path(args.json).write_text(json.dumps(results, indent=2) + "\n")
+    if args.plot:
+        plot(results, args.plot)
     return 0 if all(r.get("finished") for r in results) else 1
 
 

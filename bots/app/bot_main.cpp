@@ -86,7 +86,7 @@ int main(int argc, char** argv) {
     int boards = 0;
     double shot_clock_s = -1.0;
     double timeout_s = 3600.0;
-    double resume_for_s = 65.0;
+    double resume_for_s = 130.0;
     int think_ms = 300;
 
     CLI::App app{"carrom-bot: a headless carrom player (prints a JSON summary at the end)"};

@@ -15,6 +15,7 @@ import * as proto from '../../web/js/protocol.js';
 import { parseRoomHash, roomHash } from '../../web/js/room_link.js';
 import { ScreenMapping } from '../../web/js/screen_mapping.js';
 import { ServerClock } from '../../web/js/server_clock.js';
+import { Session, SESSION_DEFAULTS } from '../../web/js/session.js';
 import { synthSound } from '../../web/js/sound.js';
 import { loudnessFromImpulse, SoundCueQueue } from '../../web/js/sound_cues.js';
 
@@ -458,4 +459,38 @@ test('a shot played long after the join keyframe sounds every cue once, when ren
     assert.ok(c.rendered >= c.time && c.rendered - c.time < 0.05, `cue at ${t} s played ${c.rendered - c.time} s after`);
   });
   near(played[0].volume, loudnessFromImpulse(1300), 1e-12);
+});
+
+// ---- session: a silent link ----
+
+// A connection that opens at once, records what is sent and never answers anything.
+class MuteConnection {
+  static made = [];
+  constructor(url, hooks) {
+    this.hooks = hooks;
+    this.sent = [];
+    this.closed = false;
+    MuteConnection.made.push(this);
+    setTimeout(() => hooks.onOpen(), 0);
+  }
+  send(m) { this.sent.push(m); }
+  close() { this.closed = true; }
+}
+
+test('a link on which nothing arrives is taken for lost and reopened', async () => {
+  assert.equal(SESSION_DEFAULTS.silenceTimeout, 10.0);
+  assert.equal(SESSION_DEFAULTS.giveUpAfter, 130.0);
+  MuteConnection.made = [];
+  const statuses = [];
+  const config = { ...SESSION_DEFAULTS, pingInterval: 0.05, firstRetry: 0.05, silenceTimeout: 0.3 };
+  const session = new Session('ws://127.0.0.1:1', null, { onMessage() {}, onChange() { statuses.push(session.status); } },
+    config, MuteConnection);
+  session.start('ann');
+  await new Promise((resolve) => setTimeout(resolve, 200));
+  assert.equal(MuteConnection.made.length, 1, 'not before the silence timeout');
+  await new Promise((resolve) => setTimeout(resolve, 400));
+  assert.ok(MuteConnection.made[0].closed, 'the silent link is closed');
+  assert.ok(MuteConnection.made.length >= 2, 'a new link is opened');
+  assert.ok(statuses.some((s) => s.includes('the link is silent, taken for lost')), statuses.join(' | '));
+  session.stopLink();
 });

@@ -1,7 +1,10 @@
 // The connection's life (client/src/client_session.cpp): open a WebSocket, say hello, ask for a
 // room (create, join, spectate or quick match), ping for the round trip and the server clock,
 // and when the link drops open a new one and resume the seat with the token, backing off 0.5 s
-// doubling to 5 s and giving up after 60 s (the server's default grace). The token and whether
+// doubling to 5 s and giving up after 130 s (the server's default idle timeout, after which it
+// notices a silent link, plus its grace, plus a margin). A link on which nothing (not even a pong
+// to the pings every 2 s) arrived for 10 s is taken for lost: a browser's WebSocket may wait
+// minutes before it notices a dead path by itself. The token and whether
 // we hold a seat are kept in sessionStorage, so a reload of the page resumes the seat too.
 //
 // Phases: idle, connecting, greeting, lobby, joining, in_room, reconnecting, failed.
@@ -12,7 +15,8 @@ export const SESSION_DEFAULTS = Object.freeze({
   pingInterval: 2.0,
   firstRetry: 0.5,
   maxRetry: 5.0,
-  giveUpAfter: 60.0,
+  giveUpAfter: 130.0,
+  silenceTimeout: 10.0,
 });
 
 // Errors that answer a room request with no: the player picks something else in the lobby.
@@ -113,6 +117,7 @@ export class Session {
 
   onOpen(link) {
     if (link !== this.link) return;
+    this.lastHeard = now();
     link.send(proto.hello(this.name, this.resuming ? this.token : undefined));
     this.setStatus('greeting', 'Saying hello...');
     clearInterval(this.pingTimer);
@@ -120,7 +125,15 @@ export class Session {
   }
 
   ping() {
-    if (!this.link || !['lobby', 'joining', 'in_room'].includes(this.phase)) return;
+    if (!this.link || !['greeting', 'lobby', 'joining', 'in_room'].includes(this.phase)) return;
+    const silent = now() - this.lastHeard;
+    if (silent >= this.config.silenceTimeout) {
+      const link = this.link;
+      this.onLinkLost(link, `Nothing arrived for ${seconds(silent)}: the link is silent, taken for lost`, 0);
+      link.close();
+      return;
+    }
+    if (this.phase === 'greeting') return;
     const nonce = this.nextNonce++;
     this.pings.set(nonce, now());
     while (this.pings.size > 16) this.pings.delete(this.pings.keys().next().value);
@@ -166,6 +179,7 @@ export class Session {
 
   onMessage(link, m, localS) {
     if (link !== this.link) return;
+    this.lastHeard = now();
     // In the lobby no room is ours: what a room we just left still sends is not shown.
     if (this.phase === 'lobby' && ROOM_TRAFFIC[m.type]) return;
     switch (m.type) {

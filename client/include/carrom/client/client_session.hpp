@@ -41,7 +41,7 @@ struct SessionConfig {
     double first_retry_s = 0.5; // reconnect back-off starts here and doubles
     double max_retry_s = 5.0;
     // How long to keep trying: the server's default grace period (60 s) plus a margin.
-    double give_up_after_s = 65.0;
+    double give_up_after_s = 130.0;
     // Each delay d drawn uniformly from [d/2, d] with this seed (so that many clients cut at
     // once do not come back at once); none: exactly d.
     std::optional<std::uint64_t> jitter_seed;

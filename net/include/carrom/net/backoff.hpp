@@ -17,7 +17,7 @@ struct BackoffSettings {
     std::chrono::milliseconds cap{5000};
     // How long after the loss to keep trying: the server's grace period (default 60 s) plus a
     // margin for clocks and the last try's connect time.
-    std::chrono::milliseconds give_up_after{65000};
+    std::chrono::milliseconds give_up_after{130000};
 };
 
 class Backoff {
