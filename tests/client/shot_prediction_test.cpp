@@ -254,7 +254,10 @@ TEST(ShotPrediction, AServerThatDiffersByFivePixelsIsReachedWithin100Ms) {
     EXPECT_GE(c.model.prediction_stats().corrections, 1);
     EXPECT_NEAR(c.model.prediction_stats().max_difference_px, 5.0, 0.05);
     expect_final_is_keyframe(c, c.inbox);
-    EXPECT_NE(c.model.log().all().size(), 0u);
+    const auto& lines = c.model.log().all();
+    EXPECT_TRUE(std::any_of(lines.begin(), lines.end(), [](const HudLine& l) {
+        return l.text == "The server corrected the predicted shot: 1 piece moved, by up to 5.00 px";
+    }));
 }
 
 // The real case: the server's board is exact, the client's quantised. The break amplifies the
@@ -302,6 +305,12 @@ TEST(ShotPrediction, ARefusedShotGoesBackToTheBoardAtRest) {
         ASSERT_NE(d, nullptr);
         EXPECT_EQ(d->pos_px, b.pos_px) << "body " << b.id;
     }
+    c.model.take_sounds();
+    for (double t = kShootAt + 2.0 * kOneWay; t < kShootAt + 3.0; t += kFrame) {
+        c.frame(t);
+    }
+    EXPECT_TRUE(c.model.take_sounds().empty()); // the predicted collisions are not heard
+    EXPECT_FALSE(c.model.animating());
 }
 
 TEST(ShotPrediction, NotOnTheOpponentsTurn) {
