@@ -267,6 +267,9 @@ bool MatchModel::predict(const proto::Shoot& shot, double local_s) {
     rest.bodies = std::move(board);
     buffer_.push(rest);
     turn_offsets_[view_.turn] = start;
+    while (turn_offsets_.size() > kTurnsKept) {
+        turn_offsets_.erase(turn_offsets_.begin());
+    }
     predicted_cues_ = prediction_.cues();
     view_.phase = proto::Phase::Moving;
     return true;
