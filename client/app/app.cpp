@@ -256,9 +256,11 @@ void App::handle_match_input(const sf::Event& e) {
     }
     if (shot) {
         const int turn = model_.view().turn;
-        if (session_.send_game(proto::Shoot{turn, shot->x_px, shot->angle_rad, shot->power})) {
+        const proto::Shoot shoot{turn, shot->x_px, shot->angle_rad, shot->power};
+        if (session_.send_game(shoot)) {
             shot_sent_turn_ = turn;
             aim_.end_turn();
+            model_.predict(shoot, clock_.now()); // drawn from the next frame on
         }
     }
 }

@@ -4,6 +4,7 @@
 #include "carrom/scene.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <type_traits>
 
 namespace carrom::client {
@@ -43,7 +44,8 @@ std::string player_name_at_end(const MatchView& view, int seat) {
 MatchModel::MatchModel(const PhysicsConfig& physics, const PlayoutConfig& playout,
                        const InterpolationConfig& interpolation)
     : physics_(physics), playout_config_(playout), interpolation_config_(interpolation),
-      playout_(playout), buffer_(make_board_geometry(physics), interpolation) {
+      playout_(playout), buffer_(make_board_geometry(physics), interpolation),
+      prediction_(physics) {
     for (const Body& b : standard_layout(physics)) {
         kinds_[b.id] = b.kind;
     }
@@ -60,20 +62,24 @@ void MatchModel::reset() {
     turn_offsets_.clear();
     pending_cues_.clear();
     last_proto_seq_.reset();
+    prediction_.drop();
+    predicted_cues_.clear();
 }
 
 void MatchModel::handle(const proto::ServerMessage& message, double local_s) {
-    std::visit(
-        Overloaded{
-            [&](const proto::Welcome& m) { server_clock_.one_way(m.server_time_ms, local_s); },
-            [&](const proto::RoomState& m) { on_room_state(m, local_s); },
-            [&](const proto::Snapshot& m) { on_snapshot(m, local_s); },
-            [&](const proto::Event& m) { on_event(m, local_s); },
-            [&](const proto::ShotResult& m) { on_shot_result(m, local_s); },
-            [&](const proto::Error& m) { on_error(m, local_s); },
-            [&](const proto::Pong&) {}, // the session measures round trips
-        },
-        message);
+    std::visit(Overloaded{
+                   [&](const proto::Welcome& m) {
+                       server_clock_.one_way(m.server_time_ms, local_s);
+                       drop_unconfirmed_prediction(); // a new connection: the shot may be lost
+                   },
+                   [&](const proto::RoomState& m) { on_room_state(m, local_s); },
+                   [&](const proto::Snapshot& m) { on_snapshot(m, local_s); },
+                   [&](const proto::Event& m) { on_event(m, local_s); },
+                   [&](const proto::ShotResult& m) { on_shot_result(m, local_s); },
+                   [&](const proto::Error& m) { on_error(m, local_s); },
+                   [&](const proto::Pong&) {}, // the session measures round trips
+               },
+               message);
 }
 
 bool MatchModel::my_turn() const {
@@ -215,14 +221,66 @@ void MatchModel::on_snapshot(const proto::Snapshot& m, double local_s) {
     for (int id : m.pocketed) {
         s.bodies.push_back({id, kind_of(id), previous_pos(id), {}, true});
     }
-    if (buffer_.push(s)) {
+    const bool predicted = prediction_.active() && m.turn == prediction_.turn() && !at_rest;
+    if (!buffer_.push(s)) {
+        return;
+    }
+    if (predicted) {
+        // Placed on the prediction's timeline, which runs ahead of the server's stream by the
+        // round trip: not a measure of the network for the playout clock. The stroke's last
+        // keyframe is the board after the rules (the striker on the next baseline, returned
+        // pieces placed): no physics to compare, the hand-over to it is a blend.
+        if (m.keyframe) {
+            prediction_.mark_server_done();
+        } else {
+            prediction_.confirm(*buffer_.newest_state(), s.time_s, local_s);
+        }
+    } else {
         playout_.on_snapshot(s.time_s, local_s);
     }
+}
+
+bool MatchModel::predict(const proto::Shoot& shot, double local_s) {
+    if (!my_turn() || shot.turn != view_.turn || prediction_.active() || buffer_.empty()) {
+        return false;
+    }
+    std::vector<BodyState> board = board_now();
+    const bool at_rest = std::all_of(board.begin(), board.end(), [](const BodyState& b) {
+        return b.pocketed || b.vel_px_s == Vec2{};
+    });
+    if (!at_rest) {
+        return false;
+    }
+    // The stroke starts at the time drawn now, so the next frame shows it moving. The board at
+    // rest is placed again just before it (the newest state may lie ahead of the drawn time by
+    // the playout delay), so that the server's snapshots of the stroke follow it in the buffer.
+    const double start = playout_.render_time(local_s);
+    if (!prediction_.start(view_.turn, board, seat_baseline(view_.you),
+                           Shot{shot.x_px, shot.angle_rad, shot.power}, start)) {
+        return false;
+    }
+    buffer_.clear();
+    Snapshot rest;
+    rest.seq = next_seq_++;
+    rest.time_s = start - 1e-3;
+    rest.keyframe = true;
+    rest.bodies = std::move(board);
+    buffer_.push(rest);
+    turn_offsets_[view_.turn] = start;
+    while (turn_offsets_.size() > kTurnsKept) {
+        turn_offsets_.erase(turn_offsets_.begin());
+    }
+    predicted_cues_ = prediction_.cues();
+    view_.phase = proto::Phase::Moving;
+    return true;
 }
 
 void MatchModel::cue(int turn, double t_s, SoundKind kind, double volume) {
     if (volume <= 0.0) {
         return;
+    }
+    if (prediction_.claim_cue(turn, kind, t_s)) {
+        return; // predicted, and played already
     }
     const auto offset = turn_offsets_.find(turn);
     if (offset == turn_offsets_.end()) {
@@ -335,23 +393,69 @@ void MatchModel::on_shot_result(const proto::ShotResult& m, double local_s) {
     }
 }
 
+void MatchModel::drop_unconfirmed_prediction() {
+    if (!prediction_.active() || prediction_.confirmed()) {
+        return;
+    }
+    // Back to the board at rest.
+    turn_offsets_.erase(prediction_.turn());
+    prediction_.drop();
+    predicted_cues_.clear();
+    if (view_.phase == proto::Phase::Moving) {
+        view_.phase = proto::Phase::Aiming;
+    }
+}
+
 void MatchModel::on_error(const proto::Error& m, double local_s) {
+    drop_unconfirmed_prediction(); // the shot was refused
     log_.post(error_sentence(m), Tone::Error, local_s);
 }
 
 std::vector<RenderedBody> MatchModel::render(double local_s) {
     const double t = playout_.render_time(local_s);
     last_render_s_ = t;
-    std::vector<RenderedBody> bodies = buffer_.sample(t);
+    std::vector<RenderedBody> bodies =
+        prediction_.active() ? render_predicted(t, local_s) : buffer_.sample(t);
     coins_ = count_coins(bodies);
     for (const SoundCue& c : cues_.take_due(t)) {
         due_.push_back(c);
+    }
+    while (!predicted_cues_.empty() && predicted_cues_.front().time_s <= t) {
+        due_.push_back(predicted_cues_.front());
+        predicted_cues_.erase(predicted_cues_.begin());
     }
     // While aiming, the striker is drawn where the shooter places it, not where it last stopped.
     if (view_.phase == proto::Phase::Aiming && !animating()) {
         std::erase_if(bodies, [](const RenderedBody& b) { return b.kind == BodyKind::Striker; });
     }
     return bodies;
+}
+
+std::vector<RenderedBody> MatchModel::render_predicted(double t_s, double local_s) {
+    // The server's states reach the drawn time, or its stroke is over.
+    const bool server_reaches =
+        prediction_.confirmed() &&
+        (prediction_.server_done() || (!buffer_.empty() && buffer_.newest_time() >= t_s));
+    if (!server_reaches) {
+        return prediction_.draw(t_s, local_s, nullptr);
+    }
+    std::vector<RenderedBody> server = buffer_.sample(t_s);
+    if (prediction_.server_done() && !prediction_.blending(local_s)) {
+        // The server's last state of the stroke is drawn: the prediction is over.
+        prediction_.stop();
+        const PredictionStats& stats = prediction_.stats();
+        if (stats.corrections > corrections_logged_) {
+            char largest[32];
+            std::snprintf(largest, sizeof largest, "%.2f", stats.stroke_max_difference_px);
+            log_.post("The server corrected the predicted shot: " +
+                          count_words(stats.corrections - corrections_logged_, "piece", "pieces") +
+                          " moved, by up to " + largest + " px",
+                      Tone::Info, local_s);
+            corrections_logged_ = stats.corrections;
+        }
+        return server;
+    }
+    return prediction_.draw(t_s, local_s, &server);
 }
 
 std::vector<SoundCue> MatchModel::take_sounds() {
@@ -361,7 +465,7 @@ std::vector<SoundCue> MatchModel::take_sounds() {
 }
 
 bool MatchModel::animating() const {
-    return view_.phase == proto::Phase::Moving ||
+    return view_.phase == proto::Phase::Moving || prediction_.active() ||
            (!buffer_.empty() && last_render_s_ < buffer_.newest_time());
 }
 

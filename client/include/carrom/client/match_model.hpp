@@ -13,9 +13,11 @@
 #include "carrom/client/interpolation_buffer.hpp"
 #include "carrom/client/playout_clock.hpp"
 #include "carrom/client/server_clock.hpp"
+#include "carrom/client/shot_prediction.hpp"
 #include "carrom/client/snapshot.hpp"
 #include "carrom/client/sound_synth.hpp"
 #include "carrom/config.hpp"
+#include "carrom/proto/client_messages.hpp"
 #include "carrom/proto/server_messages.hpp"
 
 #include <cstdint>
@@ -77,6 +79,11 @@ public:
                         const InterpolationConfig& interpolation = {});
 
     void handle(const proto::ServerMessage& message, double local_s);
+    // Our shot was just sent: on our turn, with the board at rest, simulate it with the exact
+    // engine and draw it from the next frame on, until the server's snapshots take over
+    // (ShotPrediction). False when nothing is predicted (not our turn, pieces moving, another
+    // turn, or a scene the engine refuses).
+    bool predict(const proto::Shoot& shot, double local_s);
     // Forget the room (left it, or the seat is gone).
     void reset();
 
@@ -108,6 +115,11 @@ public:
     const HudLog& log() const { return log_; }
     const PlayoutClock& playout() const { return playout_; }
     const InterpolationBuffer& buffer() const { return buffer_; }
+    // Strokes predicted, bodies corrected by the server's snapshots, the largest difference.
+    const PredictionStats& prediction_stats() const { return prediction_.stats(); }
+    const ShotPrediction& prediction() const { return prediction_; }
+    // The continuous time of the last render().
+    double rendered_time_s() const { return last_render_s_; }
 
 private:
     void on_room_state(const proto::RoomState& m, double local_s);
@@ -118,6 +130,8 @@ private:
     void cue(int turn, double t_s, SoundKind kind, double volume);
     BodyKind kind_of(int id) const;
     double continuous_now(double local_s) const;
+    std::vector<RenderedBody> render_predicted(double t_s, double local_s);
+    void drop_unconfirmed_prediction();
 
     PhysicsConfig physics_;
     PlayoutConfig playout_config_;
@@ -141,6 +155,9 @@ private:
     std::uint64_t next_seq_ = 1;
     double last_render_s_ = 0.0;
     CoinsOnBoard coins_;
+    ShotPrediction prediction_;
+    std::vector<SoundCue> predicted_cues_; // sorted by time, played as the render time passes
+    int corrections_logged_ = 0;
 };
 
 } // namespace carrom::client

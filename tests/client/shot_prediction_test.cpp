@@ -1,0 +1,351 @@
+// Shot prediction on the real MatchModel: the shooter's stroke drawn at once with the exact
+// engine, then the server's snapshots (made by room::ShotStream from rules::play_shot, exactly as
+// the server makes them) taking over.
+
+#include "carrom/client/match_model.hpp"
+#include "carrom/exact_engine.hpp"
+#include "carrom/proto/codec.hpp"
+#include "carrom/room/shot_stream.hpp"
+#include "carrom/rules/match.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+#include <numbers>
+#include <optional>
+
+namespace carrom::client {
+namespace {
+
+constexpr double kFrame = 1.0 / 60.0;
+constexpr double kShootAt = 1.0;
+constexpr double kOneWay = 0.05; // 100 ms round trip
+
+struct Delivery {
+    double local_s;
+    proto::ServerMessage message;
+};
+
+struct Server {
+    rules::MatchState match;
+    std::vector<Body> server_bodies; // the server's own (unquantised) board before the stroke
+    rules::PlayResult result;
+    Trajectory trajectory; // the server's exact trajectory of the stroke
+    double end_s = 0.0;
+};
+
+Baseline baseline_of(rules::Side side) {
+    return side == rules::Side::Top ? Baseline::Top : Baseline::Bottom;
+}
+
+proto::RoomState room_state(const rules::MatchState& m) {
+    proto::RoomState r;
+    r.code = "PRD234";
+    r.you = m.turn_seat;
+    r.rule_set = proto::RuleSet::Icf;
+    r.seats.resize(m.seats.size());
+    for (std::size_t i = 0; i < m.seats.size(); ++i) {
+        r.seats[i] = {true,  "P" + std::to_string(i), true,
+                      false, proto::Colour::None,     baseline_of(m.seats[i].side)};
+    }
+    r.scores.assign(m.seats.size(), 0);
+    r.dues.assign(m.seats.size(), 0);
+    r.turn = m.turn_number;
+    r.to_play = m.turn_seat;
+    r.phase = proto::Phase::Aiming;
+    r.server_time_ms = 1'000'000;
+    for (const Body& b : m.bodies) {
+        r.bodies.push_back({b.id,
+                            b.kind,
+                            {proto::quantise(b.pos_px.x), proto::quantise(b.pos_px.y)},
+                            {},
+                            b.pocketed});
+    }
+    return r;
+}
+
+const Shot kBreak{300.0, -std::numbers::pi / 2.0, 20.0};
+
+// The board the client is sent is quantised to 0.01 px. The server's own board is either that
+// same board (`on_grid`: the prediction starts from exactly the server's input) or the exact
+// standard layout (the prediction starts up to 0.005 px off, and a break amplifies that).
+Server play(const Shot& shot, bool on_grid) {
+    Server s;
+    s.match = rules::new_match(rules::RuleSet::Icf, rules::RulesConfig{}, PhysicsConfig{});
+    if (on_grid) {
+        for (Body& b : s.match.bodies) {
+            b.pos_px = {proto::quantise(b.pos_px.x), proto::quantise(b.pos_px.y)};
+        }
+    }
+    ExactEngine engine(s.match.physics);
+    rules::PlayOptions options;
+    options.record_trajectory = true;
+    s.result = rules::play_shot(s.match, s.match.turn_seat, shot, engine, options);
+    EXPECT_FALSE(s.result.error.has_value());
+    s.trajectory = s.result.outcome.physics.trajectory;
+    s.end_s = s.result.outcome.physics.end_time_s;
+    return s;
+}
+
+// The server's messages of the stroke as the room sends them (snapshots at 60 Hz from when the
+// shot arrives, physics events before each, the final keyframe of the board with the striker on
+// the next shooter's baseline), each arriving kOneWay after it is sent. `nudge` moves one body in
+// every message that carries it (a server whose physics differs).
+std::vector<Delivery> stream(const Server& s, std::optional<int> nudge_id, Vec2 nudge) {
+    const SimResult& physics = s.result.outcome.physics;
+    room::ShotStream stream(s.match.physics, physics.trajectory, physics.events, physics.end_time_s,
+                            s.match.turn_number);
+    auto nudged = [&](proto::Snapshot snap) {
+        for (proto::SnapshotBody& b : snap.bodies) {
+            if (nudge_id && b.id == *nudge_id) {
+                b.pos_px += nudge;
+            }
+        }
+        return snap;
+    };
+    std::vector<Delivery> out;
+    const double sent0 = kShootAt + kOneWay; // the server plays the shot when it arrives
+    std::int64_t seq = 100;
+    for (int k = 0;; ++k) {
+        room::ShotStream::Step step = stream.advance(k * kFrame, ++seq);
+        const double arrive = sent0 + std::min(k * kFrame, s.end_s) + kOneWay;
+        for (proto::Event& e : step.events) {
+            out.push_back({arrive, proto::ServerMessage{std::move(e)}});
+        }
+        out.push_back({arrive, proto::ServerMessage{nudged(step.snapshot)}});
+        if (step.finished) {
+            std::vector<Body> board = s.result.state.bodies;
+            board.push_back(rules::striker_for(
+                s.match.physics,
+                s.result.state.seats[static_cast<std::size_t>(s.result.state.turn_seat)].side,
+                Shot{300.0, 0.0, 0.0}));
+            out.push_back({arrive, proto::ServerMessage{nudged(room::make_keyframe(
+                                       board, ++seq, s.match.turn_number, s.end_s))}});
+            break;
+        }
+    }
+    return out;
+}
+
+struct Client {
+    MatchModel model{PhysicsConfig{}};
+    std::vector<Delivery> inbox;
+    std::size_t next = 0;
+    double local_s = 0.0;
+
+    // One frame: deliver what has arrived, then render.
+    std::vector<RenderedBody> frame(double at_s) {
+        local_s = at_s;
+        while (next < inbox.size() && inbox[next].local_s <= at_s) {
+            model.handle(inbox[next].message, inbox[next].local_s);
+            ++next;
+        }
+        return model.render(at_s);
+    }
+};
+
+void start(Client& c, const Server& s) {
+    c.model.handle(room_state(s.match), 0.0);
+    for (double t = 0.0; t < kShootAt; t += kFrame) {
+        c.frame(t);
+    }
+}
+
+proto::Shoot shoot_of(const Server& s, const Shot& shot) {
+    return proto::Shoot{s.match.turn_number, shot.x_px, shot.angle_rad, shot.power};
+}
+
+const RenderedBody* find(const std::vector<RenderedBody>& bodies, int id) {
+    const auto it = std::find_if(bodies.begin(), bodies.end(),
+                                 [id](const RenderedBody& b) { return b.id == id; });
+    return it != bodies.end() ? &*it : nullptr;
+}
+
+// The worst distance, over the frames from local from_s until the stroke ends, between each
+// drawn body and the server's exact state at the same shot time (plus the nudge for one body).
+double worst_after(Client& c, const Server& s, double from_s, std::optional<int> nudge_id,
+                   Vec2 nudge, double& rms_px) {
+    double worst = 0.0;
+    double sum2 = 0.0;
+    long samples = 0;
+    const double offset = c.model.prediction().offset_s();
+    for (double t = kShootAt + kFrame; t < kShootAt + s.end_s + 1.0; t += kFrame) {
+        const std::vector<RenderedBody> drawn = c.frame(t);
+        const double shot_t = c.model.rendered_time_s() - offset;
+        if (t < from_s || shot_t > s.end_s) {
+            continue;
+        }
+        for (const Body& b : state_at(s.match.physics, s.trajectory, shot_t)) {
+            const RenderedBody* d = find(drawn, b.id);
+            if (b.pocketed || d == nullptr || d->falling) {
+                continue;
+            }
+            const Vec2 truth = b.pos_px + (nudge_id && b.id == *nudge_id ? nudge : Vec2{});
+            const double error = length(d->pos_px - truth);
+            worst = std::max(worst, error);
+            sum2 += error * error;
+            ++samples;
+        }
+    }
+    rms_px = samples > 0 ? std::sqrt(sum2 / static_cast<double>(samples)) : 0.0;
+    return worst;
+}
+
+void expect_final_is_keyframe(Client& c, const std::vector<Delivery>& inbox) {
+    const auto last = std::find_if(inbox.rbegin(), inbox.rend(), [](const Delivery& d) {
+        const auto* snap = std::get_if<proto::Snapshot>(&d.message);
+        return snap != nullptr && snap->keyframe;
+    });
+    ASSERT_NE(last, inbox.rend());
+    const auto& key = std::get<proto::Snapshot>(last->message);
+    EXPECT_FALSE(c.model.prediction().active());
+    const std::vector<RenderedBody> drawn = c.frame(c.local_s + kFrame);
+    for (const proto::SnapshotBody& b : key.bodies) {
+        const RenderedBody* d = find(drawn, b.id);
+        ASSERT_NE(d, nullptr) << "body " << b.id;
+        EXPECT_EQ(d->pos_px, b.pos_px) << "body " << b.id; // exactly
+    }
+    for (int id : key.pocketed) {
+        EXPECT_EQ(find(drawn, id), nullptr) << "body " << id;
+    }
+}
+
+TEST(ShotPrediction, TheFirstFrameAfterTheShotShowsTheStrikerMoving) {
+    const Server s = play(kBreak, true);
+    Client c;
+    start(c, s);
+    ASSERT_TRUE(c.model.predict(shoot_of(s, kBreak), kShootAt));
+    const std::vector<RenderedBody> drawn = c.frame(kShootAt + kFrame);
+    const RenderedBody* striker = find(drawn, kStrikerId);
+    ASSERT_NE(striker, nullptr);
+    const double baseline = baseline_y(s.match.physics, Baseline::Bottom);
+    EXPECT_LT(striker->pos_px.y, baseline - 1.0); // moving up the board already
+    EXPECT_TRUE(c.model.animating());
+}
+
+TEST(ShotPrediction, TheServersSnapshotsOfTheSameStrokeConfirmItWithoutCorrections) {
+    const Server s = play(kBreak, true);
+    Client c;
+    start(c, s);
+    c.inbox = stream(s, std::nullopt, {});
+    ASSERT_TRUE(c.model.predict(shoot_of(s, kBreak), kShootAt));
+    const double blend_done = kShootAt + 2.0 * kOneWay + 0.1;
+    double rms = 0.0;
+    EXPECT_LT(worst_after(c, s, blend_done, std::nullopt, {}, rms), 0.01);
+    EXPECT_EQ(c.model.prediction_stats().corrections, 0);
+    EXPECT_LT(c.model.prediction_stats().max_difference_px, 0.5);
+    EXPECT_EQ(c.model.prediction_stats().strokes, 1);
+    expect_final_is_keyframe(c, c.inbox);
+}
+
+TEST(ShotPrediction, AServerThatDiffersByFivePixelsIsReachedWithin100Ms) {
+    const Server s = play(kBreak, true);
+    Client c;
+    start(c, s);
+    const Vec2 nudge{5.0, 0.0};
+    c.inbox = stream(s, kStrikerId, nudge);
+    ASSERT_TRUE(c.model.predict(shoot_of(s, kBreak), kShootAt));
+    // The first snapshot (it carries the striker) arrives a round trip after the shot.
+    const double blend_done = kShootAt + 2.0 * kOneWay + 0.1 + kFrame;
+    double rms = 0.0;
+    EXPECT_LT(worst_after(c, s, blend_done, kStrikerId, nudge, rms), 0.01);
+    EXPECT_GE(c.model.prediction_stats().corrections, 1);
+    EXPECT_NEAR(c.model.prediction_stats().max_difference_px, 5.0, 0.05);
+    expect_final_is_keyframe(c, c.inbox);
+    const auto& lines = c.model.log().all();
+    EXPECT_TRUE(std::any_of(lines.begin(), lines.end(), [](const HudLine& l) {
+        return l.text == "The server corrected the predicted shot: 1 piece moved, by up to 5.00 px";
+    }));
+}
+
+// The real case: the server's board is exact, the client's quantised. The break amplifies the
+// 0.005 px start difference to pixels; the drawn board follows the server's within the blend and
+// ends on its keyframe exactly. The figures are in docs/interpolation.md.
+TEST(ShotPrediction, AnExactServerBoardIsFollowedAndEndsOnItsKeyframe) {
+    const Server s = play(kBreak, false);
+    Client c;
+    start(c, s);
+    c.inbox = stream(s, std::nullopt, {});
+    ASSERT_TRUE(c.model.predict(shoot_of(s, kBreak), kShootAt));
+    const double blend_done = kShootAt + 2.0 * kOneWay + 0.1;
+    double rms = 0.0;
+    const double worst = worst_after(c, s, blend_done, std::nullopt, {}, rms);
+    const PredictionStats& stats = c.model.prediction_stats();
+    std::cout << "exact server board, standard break: corrections " << stats.corrections
+              << ", largest difference " << stats.max_difference_px
+              << " px; drawn against the server's trajectory after the first blend: RMS " << rms
+              << " px, max " << worst << " px\n";
+    EXPECT_GT(stats.corrections, 0);
+    EXPECT_LT(rms, 0.5);
+    expect_final_is_keyframe(c, c.inbox);
+}
+
+TEST(ShotPrediction, ARefusedShotGoesBackToTheBoardAtRest) {
+    const Server s = play(kBreak, true);
+    Client c;
+    start(c, s);
+    const std::vector<BodyState> rest = c.model.board_now();
+    ASSERT_TRUE(c.model.predict(shoot_of(s, kBreak), kShootAt));
+    c.frame(kShootAt + kFrame);
+    c.inbox.push_back({kShootAt + 2.0 * kOneWay,
+                       proto::ServerMessage{proto::Error{std::string(proto::code::kInMotion),
+                                                         "Wait until the pieces stop."}}});
+    const std::vector<RenderedBody> drawn = c.frame(kShootAt + 2.0 * kOneWay);
+    EXPECT_FALSE(c.model.prediction().active());
+    EXPECT_EQ(c.model.view().phase, proto::Phase::Aiming);
+    EXPECT_FALSE(c.model.animating());
+    EXPECT_EQ(find(drawn, kStrikerId), nullptr); // drawn where the shooter places it
+    for (const BodyState& b : rest) {
+        if (b.id == kStrikerId || b.pocketed) {
+            continue;
+        }
+        const RenderedBody* d = find(drawn, b.id);
+        ASSERT_NE(d, nullptr);
+        EXPECT_EQ(d->pos_px, b.pos_px) << "body " << b.id;
+    }
+    c.model.take_sounds();
+    for (double t = kShootAt + 2.0 * kOneWay; t < kShootAt + 3.0; t += kFrame) {
+        c.frame(t);
+    }
+    EXPECT_TRUE(c.model.take_sounds().empty()); // the predicted collisions are not heard
+    EXPECT_FALSE(c.model.animating());
+}
+
+TEST(ShotPrediction, NotOnTheOpponentsTurn) {
+    const Server s = play(kBreak, true);
+    Client c;
+    proto::RoomState r = room_state(s.match);
+    r.you = 1 - r.to_play;
+    c.model.handle(r, 0.0);
+    c.frame(0.5);
+    EXPECT_FALSE(c.model.predict(shoot_of(s, kBreak), kShootAt));
+    EXPECT_FALSE(c.model.prediction().active());
+}
+
+TEST(ShotPrediction, PredictedSoundsPlayOnceWhenTheServersEventsArrive) {
+    const Server s = play(kBreak, true);
+    Client c;
+    start(c, s);
+    c.inbox = stream(s, std::nullopt, {});
+    ASSERT_TRUE(c.model.predict(shoot_of(s, kBreak), kShootAt));
+    std::size_t sounds = 0;
+    for (double t = kShootAt + kFrame; t < kShootAt + s.end_s + 1.0; t += kFrame) {
+        c.frame(t);
+        sounds += c.model.take_sounds().size();
+    }
+    std::size_t expected = 0;
+    for (const Event& e : s.result.outcome.physics.events) {
+        if (e.kind == EventKind::Pocket ||
+            ((e.kind == EventKind::Collision || e.kind == EventKind::Cushion) &&
+             loudness_from_impulse(e.impulse) > 0.0)) {
+            ++expected;
+        }
+    }
+    EXPECT_GT(expected, 0u);
+    EXPECT_EQ(sounds, expected);
+}
+
+} // namespace
+} // namespace carrom::client
