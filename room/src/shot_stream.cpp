@@ -37,8 +37,7 @@ proto::Snapshot make_keyframe(std::span<const Body> bodies, std::int64_t seq, in
     snap.turn = turn;
     snap.t_s = t_s;
     snap.keyframe = true;
-    for (const Body& raw : bodies) {
-        const Body b = quantised(raw);
+    for (const Body& b : bodies) {
         if (b.pocketed) {
             snap.pocketed.push_back(b.id);
         } else {

@@ -17,6 +17,9 @@
 namespace carrom::room {
 
 // A keyframe of `bodies`: every unpocketed body in "bodies", every pocketed id in "pocketed".
+// Values are sent as given: a board at rest goes out exact (room_state carries the same exact
+// board), so a client that simulates the next stroke from it (shot prediction) starts from the
+// server's own input; the stream's keyframes mid-shot pass its quantised last state.
 proto::Snapshot make_keyframe(std::span<const Body> bodies, std::int64_t seq, int turn, double t_s);
 
 class ShotStream {
