@@ -22,6 +22,7 @@ Measured from the bots' --trace files (CLOCK_MONOTONIC, shared by all processes)
   first motion     from a shot leaving the shooter to the first snapshot of that turn reaching
                    the shooter, and the opponent: median and 95th percentile, ms;
   bytes/s          bytes the players' end received over the match, per client;
+  longest freeze   the longest wait between two snapshots of one shot at either bot, ms;
   gaps, resumes    snapshots the server dropped for a slow reader; seats resumed;
   result           both bots finished the match and agree on the score.
 Exit 0 when every profile's match finished with both bots agreeing, 1 otherwise.
@@ -166,6 +167,20 @@ def first_motion(traces):
     return shooter_ms, opponent_ms
 
 
+def longest_freeze(traces):
+    """Longest wait, ms, between two snapshots of one shot reaching a bot (the picture froze)."""
+    longest = 0.0
+    for lines in traces.values():
+        previous = None
+        for line in lines:
+            if line["kind"] != "snapshot":
+                continue
+            if previous is not None and previous["turn"] == line["turn"] and not previous["keyframe"]:
+                longest = max(longest, line["ms"] - previous["ms"])
+            previous = line
+    return longest
+
+
 def percentile(values, p):
     if not values:
         return None
@@ -268,6 +283,7 @@ def play(profile, server_bin, bot_bin, work, tag, limit):
             "opponent_first_motion_ms": {"median": percentile(opponent, 50),
                                          "p95": percentile(opponent, 95)},
             "bytes_per_s_per_client": rx / max(elapsed, 1e-9) / 2,
+            "longest_freeze_ms": longest_freeze(traces),
             "match_s": elapsed,
             "seq_gaps": sum(s.get("seq_gaps", 0) for s in summaries.values()),
             "resumes": {n: s.get("resumes", 0) for n, s in summaries.items()},
@@ -292,7 +308,7 @@ def plot(results, path):
     import matplotlib.pyplot as plt
     rows = [r for r in results if "error" not in r]
     labels = [r["profile"] for r in rows]
-    fig, ax = plt.subplots(1, 2, figsize=(12, 4.2), gridspec_kw={"width_ratios": [2, 1]})
+    fig, ax = plt.subplots(1, 3, figsize=(14, 4.2), gridspec_kw={"width_ratios": [2, 1, 1]})
     x = range(len(rows))
     for offset, key, name, colour in ((-0.2, "shooter_first_motion_ms", "shooter", "#4a7"),
                                       (0.2, "opponent_first_motion_ms", "opponent", "#47a")):
@@ -300,15 +316,20 @@ def plot(results, path):
         p95 = [max(0, (r[key]["p95"] or 0) - (r[key]["median"] or 0)) for r in rows]
         ax[0].bar([i + offset for i in x], med, width=0.4, yerr=[[0] * len(rows), p95],
                   capsize=3, color=colour, label=f"{name} (median, whisker to p95)")
-    ax[0].set_xticks(list(x), labels, fontsize=8)
+    ax[0].set_xticks(list(x), labels, fontsize=8, rotation=30)
     ax[0].set_ylabel("ms from the shot leaving the shooter\nto its first snapshot")
     ax[0].set_yscale("symlog", linthresh=10)
     ax[0].legend(fontsize=8)
     ax[0].set_title("First motion", fontsize=10)
-    ax[1].bar(list(x), [r["bytes_per_s_per_client"] / 1000 for r in rows], color="#a74")
+    ax[1].bar(list(x), [r.get("longest_freeze_ms", 0) for r in rows], color="#a47")
     ax[1].set_xticks(list(x), labels, fontsize=8, rotation=30)
-    ax[1].set_ylabel("kB/s received per client (whole match)")
-    ax[1].set_title("Traffic", fontsize=10)
+    ax[1].set_yscale("symlog", linthresh=10)
+    ax[1].set_ylabel("ms between two snapshots of a shot")
+    ax[1].set_title("Longest freeze", fontsize=10)
+    ax[2].bar(list(x), [r["bytes_per_s_per_client"] / 1000 for r in rows], color="#a74")
+    ax[2].set_xticks(list(x), labels, fontsize=8, rotation=30)
+    ax[2].set_ylabel("kB/s received per client (whole match)")
+    ax[2].set_title("Traffic", fontsize=10)
     fig.tight_layout()
     fig.savefig(path, dpi=110)
 
@@ -368,15 +389,17 @@ def main():
 
 def report(results, args):
     print("| profile | finished, same score | shots | first motion, shooter: median / p95 ms "
-          "| opponent: median / p95 ms | bytes/s per client | dropped snapshots | resumes |")
-    print("| --- | --- | --- | --- | --- | --- | --- | --- |")
+          "| opponent: median / p95 ms | longest freeze, ms | bytes/s per client "
+          "| dropped snapshots | resumes |")
+    print("| --- | --- | --- | --- | --- | --- | --- | --- | --- |")
     for r in results:
         if "error" in r:
-            print(f"| {r['description']} | no: {r['error']} | | | | | | |")
+            print(f"| {r['description']} | no: {r['error']} | | | | | | | |")
             continue
         s, o = r["shooter_first_motion_ms"], r["opponent_first_motion_ms"]
         print(f"| {r['description']} | {'yes' if r['finished'] else 'NO'} | {r['shots']} | "
               f"{fmt(s['median'])} / {fmt(s['p95'])} | {fmt(o['median'])} / {fmt(o['p95'])} | "
+              f"{fmt(r.get('longest_freeze_ms'))} | "
               f"{fmt(r['bytes_per_s_per_client'])} | {r['seq_gaps']} | "
               f"{sum(r['resumes'].values())} |")
     if args.plot:
