@@ -103,6 +103,14 @@ void Server::shutdown() {
         t.join();
     }
     impl_->threads.clear();
+    {
+        std::lock_guard lock(core.sessions_mutex);
+        for (auto& [ptr, weak] : core.sessions) {
+            if (auto s = weak.lock()) {
+                s->release_room(); // no thread runs the sessions any more
+            }
+        }
+    }
     // No store confirmation reaches a room or ioc from now on: the store may outlive both.
     core.confirmations->close();
     if (core.match_reader) {

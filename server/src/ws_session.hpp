@@ -56,6 +56,9 @@ public:
 
     // Quick match paired this session into a room (any thread).
     void assign_room(std::shared_ptr<RoomActor> room);
+    // Forgets the room (Server::shutdown, once the I/O threads are joined): a room holds its
+    // members and a member its room, and a session still open at the end would keep both.
+    void release_room() { room_.reset(); }
     // Server shutdown (any thread).
     void shutdown();
 
