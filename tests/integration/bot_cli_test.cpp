@@ -18,6 +18,23 @@ std::string temp_path(const std::string& name) {
     return ::testing::TempDir() + "carrom_bot_cli_" + std::to_string(getpid()) + "_" + name;
 }
 
+// The room code a creating carrom-bot prints on stderr ("room CODE"), read from its stderr
+// file within 5 s; "" if none came.
+std::string wait_for_room_code(const std::string& err_path) {
+    std::string code;
+    for (int i = 0; i < 200 && code.empty(); ++i) {
+        std::this_thread::sleep_for(25ms);
+        std::ifstream err(err_path);
+        std::string word;
+        while (err >> word) {
+            if (word == "room" && err >> code) {
+                break;
+            }
+        }
+    }
+    return code;
+}
+
 TEST(BotCli, TwoBotProcessesPlayAMatch) {
     TestServer server;
     const std::string bot = CARROM_BOT_PATH;
@@ -29,17 +46,7 @@ TEST(BotCli, TwoBotProcessesPlayAMatch) {
                               " --target-points 30 --shot-clock 0 --strategy sampling --seed 3" +
                               " --timeout " + timeout + " 2> " + creator_err);
     });
-    std::string code;
-    for (int i = 0; i < 200 && code.empty(); ++i) {
-        std::this_thread::sleep_for(25ms);
-        std::ifstream err(creator_err);
-        std::string word;
-        while (err >> word) {
-            if (word == "room" && err >> code) {
-                break;
-            }
-        }
-    }
+    const std::string code = wait_for_room_code(creator_err);
     ASSERT_EQ(code.size(), 6u);
     const CommandRun joiner = run_command(bot + " --url " + server.url() + " --join " + code +
                                           " --strategy random --seed 4 --timeout " + timeout);
@@ -74,17 +81,7 @@ TEST(BotCli, TraceHasEveryShotSentAndTheSnapshotsThatFollowIt) {
                         " --target-points 30 --shot-clock 0 --strategy sampling --seed 5" +
                         " --timeout 60 --log-level info --trace " + trace + " 2> " + creator_err);
     });
-    std::string code;
-    for (int i = 0; i < 200 && code.empty(); ++i) {
-        std::this_thread::sleep_for(25ms);
-        std::ifstream err(creator_err);
-        std::string word;
-        while (err >> word) {
-            if (word == "room" && err >> code) {
-                break;
-            }
-        }
-    }
+    const std::string code = wait_for_room_code(creator_err);
     ASSERT_EQ(code.size(), 6u);
     const CommandRun joiner = run_command(bot + " --url " + server.url() + " --join " + code +
                                           " --strategy random --seed 6 --timeout 60");
