@@ -1,6 +1,7 @@
 #include "carrom/client/interpolation_buffer.hpp"
 
 #include "carrom/client/hermite.hpp"
+#include "carrom/trajectory.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -43,6 +44,12 @@ std::vector<BodyState> apply_delta(const std::vector<BodyState>& previous,
     return out;
 }
 
+// Where a body that is at p with velocity v at time t0 is at time t under the damped free motion
+// (t may be before t0: the same motion run backwards).
+Vec2 free_motion(Vec2 p, Vec2 v, double damping_per_s, double dt_s) {
+    return p + v * travel_factor_s(damping_per_s, dt_s);
+}
+
 RenderedBody rendered(const BodyState& b, Vec2 pos) {
     RenderedBody r;
     r.id = b.id;
@@ -56,6 +63,11 @@ RenderedBody rendered(const BodyState& b, Vec2 pos) {
 InterpolationBuffer::InterpolationBuffer(const BoardGeometry& geometry,
                                          const InterpolationConfig& config)
     : geometry_(geometry), config_(config) {}
+
+void InterpolationBuffer::set_motion(double damping_per_s, bool every_change_sent) {
+    config_.damping_per_s = damping_per_s;
+    every_change_sent_ = every_change_sent;
+}
 
 void InterpolationBuffer::clear() {
     frames_.clear();
@@ -130,9 +142,17 @@ void InterpolationBuffer::record_falls(const Frame& before, const Frame& after) 
         PocketFall fall;
         fall.id = b.id;
         fall.kind = b.kind;
-        fall.start_s = before.time_s;
-        fall.from_px = a->pos_px;
-        fall.from_vel_px_s = a->vel_px_s;
+        if (every_change_sent_) {
+            // The pocketing is itself a change of motion: it happened at after's instant, and
+            // the body got there along the free motion from before.
+            fall.start_s = after.time_s;
+            fall.from_px = free_motion(a->pos_px, a->vel_px_s, config_.damping_per_s, dt);
+            fall.from_vel_px_s = a->vel_px_s * std::exp(-config_.damping_per_s * dt);
+        } else {
+            fall.start_s = before.time_s;
+            fall.from_px = a->pos_px;
+            fall.from_vel_px_s = a->vel_px_s;
+        }
         const Vec2 heading = a->pos_px + a->vel_px_s * dt;
         fall.pocket_px =
             geometry_.pockets[static_cast<std::size_t>(nearest_pocket(geometry_, heading))];
@@ -197,7 +217,33 @@ std::optional<RenderedBody> InterpolationBuffer::body_between(const Frame& a, co
     if (gap > config_.hold_gap_s && a.at_rest) {
         return rendered(bb, ba->pos_px); // the board rested; the next run starts at b
     }
-    const double s = std::clamp((t_s - a.time_s) / gap, 0.0, 1.0);
+    const double k = config_.damping_per_s;
+    const double tol = config_.free_motion_tolerance_px;
+    const double dt_a = t_s - a.time_s;
+    // No change of motion between a and b: the free motion from a reaches b.
+    if (length(free_motion(ba->pos_px, ba->vel_px_s, k, gap) - bb.pos_px) <= tol) {
+        return rendered(bb, free_motion(ba->pos_px, ba->vel_px_s, k, dt_a));
+    }
+    // One change of motion at an unknown instant c: forwards from a before c, backwards from b
+    // after c. With u = e^(-k (t - t_a)) their difference is linear in u,
+    //   d(u) = (p_a - p_b) + (v_a - v_b) / k + u (v_b e^(k gap) - v_a) / k,
+    // and c is where it vanishes (solved in least squares; accepted when the residual is within
+    // the tolerance).
+    if (k > 0.0) {
+        const Vec2 d0 = ba->pos_px - bb.pos_px + (ba->vel_px_s - bb.vel_px_s) * (1.0 / k);
+        const Vec2 w = (bb.vel_px_s * std::exp(k * gap) - ba->vel_px_s) * (1.0 / k);
+        const double ww = dot(w, w);
+        if (ww > 0.0) {
+            const double u = std::clamp(-dot(d0, w) / ww, std::exp(-k * gap), 1.0);
+            if (length(d0 + w * u) <= tol) {
+                const double change_s = a.time_s - std::log(u) / k;
+                return rendered(bb, t_s <= change_s
+                                        ? free_motion(ba->pos_px, ba->vel_px_s, k, dt_a)
+                                        : free_motion(bb.pos_px, bb.vel_px_s, k, t_s - b.time_s));
+            }
+        }
+    }
+    const double s = std::clamp(dt_a / gap, 0.0, 1.0);
     return rendered(bb, hermite(ba->pos_px, ba->vel_px_s, bb.pos_px, bb.vel_px_s, gap, s));
 }
 
@@ -218,10 +264,13 @@ std::vector<RenderedBody> InterpolationBuffer::sample(double t_s) const {
     }
     if (after == frames_.end()) {
         const Frame& last = frames_.back();
-        const double ahead = std::min(t_s - last.time_s, config_.max_extrapolation_s);
+        const double ahead = std::min(t_s - last.time_s,
+                                      every_change_sent_ ? config_.max_extrapolation_every_change_s
+                                                         : config_.max_extrapolation_s);
         for (const BodyState& b : last.bodies) {
             if (!b.pocketed) {
-                out.push_back(rendered(b, b.pos_px + b.vel_px_s * ahead));
+                out.push_back(
+                    rendered(b, free_motion(b.pos_px, b.vel_px_s, config_.damping_per_s, ahead)));
             } else if (auto fall = falling_body(b.id, t_s)) {
                 out.push_back(*fall);
             }

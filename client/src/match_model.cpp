@@ -66,6 +66,14 @@ void MatchModel::reset() {
     predicted_cues_.clear();
 }
 
+void MatchModel::apply_motion(const proto::MotionInfo& motion) {
+    // A server that sends a delta at every change of motion makes the free motion past the
+    // newest state exact: the delay only covers the jitter, and the board may be drawn further
+    // ahead of the newest state (docs/interpolation.md, "The render time").
+    playout_.set_interval_factor(motion.contact_snapshots ? 0.0 : playout_config_.interval_factor);
+    buffer_.set_motion(motion.damping_per_s, motion.contact_snapshots);
+}
+
 void MatchModel::handle(const proto::ServerMessage& message, double local_s) {
     std::visit(Overloaded{
                    [&](const proto::Welcome& m) {
@@ -145,6 +153,7 @@ void MatchModel::on_room_state(const proto::RoomState& m, double local_s) {
     view_.queen = m.queen;
     view_.winner = m.winner;
     view_.deadline_ms = m.shot_clock_deadline_ms;
+    apply_motion(m.motion);
     const bool over_on_arrival = m.phase == proto::Phase::GameOver && !view_.result;
     if (m.phase != proto::Phase::GameOver) {
         view_.result.reset(); // a new game (a rematch)

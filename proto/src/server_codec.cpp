@@ -138,7 +138,10 @@ json encode_body(const RoomState& m) {
              {"phase", to_string(m.phase)},
              {"queen", encode_queen(m.queen)},
              {"winner", m.winner},
-             {"bodies", std::move(bodies)}};
+             {"bodies", std::move(bodies)},
+             {"motion",
+              {{"damping_per_s", m.motion.damping_per_s},
+               {"contact_snapshots", m.motion.contact_snapshots}}}};
     if (m.shot_clock_deadline_ms) {
         out["shot_clock_deadline_ms"] = *m.shot_clock_deadline_ms;
     }
@@ -177,6 +180,14 @@ void decode_body(FieldReader& r, RoomState& m) {
     decode_queen(r, "queen", m.queen);
     m.winner = r.small_int("winner", -1, kMaxSeatIndex);
     decode_object_array(r, "bodies", kMaxBodies, m.bodies, decode_board_body);
+    if (r.has("motion")) {
+        if (const json* motion = r.object("motion")) {
+            FieldReader o(*motion, "motion.");
+            m.motion.damping_per_s = o.number("damping_per_s", 0.0, 100.0);
+            m.motion.contact_snapshots = o.boolean("contact_snapshots");
+            r.merge(o);
+        }
+    }
 }
 
 // --- snapshot ---

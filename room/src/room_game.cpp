@@ -117,7 +117,7 @@ std::optional<proto::Error> Room::play(int seat, const Shot& shot) {
     physics.trajectory = {};
     physics.events.clear();
     streaming_ = std::make_unique<Streaming>(
-        Streaming{std::move(stream), std::move(result), match_, now, now, 0, std::nullopt});
+        Streaming{std::move(stream), std::move(result), match_, now, now, now, 0, std::nullopt});
     if (seq >= 0) {
         streaming_->awaiting_seq = seq;
     } else {
@@ -134,6 +134,7 @@ void Room::journal_written(const std::string& match_id, std::int64_t seq) {
     const std::int64_t now = clock_.now_ms();
     streaming_->start_ms = now;
     streaming_->next_ms = now;
+    streaming_->next_base_ms = now;
     stream_tick(now);
 }
 
@@ -144,8 +145,44 @@ void Room::stream_tick(std::int64_t now_ms) {
     Streaming& s = *streaming_;
     counters_.observe_snapshot_lag_ms(static_cast<double>(now_ms - s.next_ms));
     const double t_s = config_.time_scale * static_cast<double>(now_ms - s.start_ms) / 1000.0;
+    // A delta at every change of motion since the last snapshot, at its own instant, then one at
+    // t_s when the regular rate has one due (or the shot ends).
+    // The first whole millisecond at or after a stream time: when its delta is due.
+    const auto due_ms = [&](double t) {
+        return s.start_ms + static_cast<std::int64_t>(std::ceil(t / config_.time_scale * 1000.0));
+    };
+    if (config_.contact_snapshots) {
+        while (const std::optional<double> change = s.stream.next_motion_change(t_s)) {
+            if (send_stream_step(*change, due_ms(*change))) {
+                return;
+            }
+        }
+    }
+    if (now_ms >= s.next_base_ms || t_s >= s.stream.end_time_s()) {
+        if (send_stream_step(t_s, std::min(s.next_base_ms, due_ms(s.stream.end_time_s())))) {
+            return;
+        }
+        const double period_ms = 1000.0 / config_.snapshot_hz;
+        while (s.next_base_ms <= now_ms) {
+            ++s.index;
+            s.next_base_ms = s.start_ms + std::llround(s.index * period_ms);
+        }
+    }
+    s.next_ms = s.next_base_ms;
+    if (config_.contact_snapshots) {
+        s.next_ms = std::min(s.next_ms, std::max(due_ms(s.stream.end_time_s()), now_ms + 1));
+        const std::optional<double> change = s.stream.next_motion_change(s.stream.end_time_s());
+        if (change) {
+            // Never before the change: its delta is at its own instant, which must have passed.
+            s.next_ms = std::min(s.next_ms, std::max(due_ms(*change), now_ms + 1));
+        }
+    }
+}
+
+bool Room::send_stream_step(double t_s, std::int64_t due_ms) {
+    Streaming& s = *streaming_;
     ShotStream::Step step = s.stream.advance(t_s, ++seq_);
-    step.snapshot.due_ms = s.next_ms;
+    step.snapshot.due_ms = due_ms;
     for (auto& event : step.events) {
         const bool pocket = std::holds_alternative<proto::PocketEvent>(event);
         broadcast(proto::ServerMessage{std::move(event)},
@@ -167,13 +204,9 @@ void Room::stream_tick(std::int64_t now_ms) {
     }
     if (step.finished) {
         finish_shot();
-        return;
+        return true;
     }
-    const double period_ms = 1000.0 / config_.snapshot_hz;
-    while (s.next_ms <= now_ms) {
-        ++s.index;
-        s.next_ms = s.start_ms + std::llround(s.index * period_ms);
-    }
+    return false;
 }
 
 void Room::finish_shot() {

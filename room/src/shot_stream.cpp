@@ -88,6 +88,17 @@ ShotStream::Step ShotStream::advance(double t_s, std::int64_t seq) {
     return step;
 }
 
+std::optional<double> ShotStream::next_motion_change(double t_s) const {
+    // Segments are in time order; the cursor has applied every segment at or before last_t_s_.
+    const std::vector<Segment>& segments = trajectory_.segments;
+    const auto after = std::upper_bound(segments.begin(), segments.end(), last_t_s_,
+                                        [](double t, const Segment& seg) { return t < seg.t_s; });
+    if (after == segments.end() || after->t_s > std::min(t_s, end_time_s_)) {
+        return std::nullopt;
+    }
+    return after->t_s;
+}
+
 proto::Snapshot ShotStream::keyframe(std::int64_t seq) const {
     return make_keyframe(last_sent_, seq, turn_, last_t_s_);
 }

@@ -35,9 +35,14 @@ int main(int argc, char** argv) {
     app.add_option("--threads", s.threads, "I/O threads")
         ->envname("CARROM_THREADS")
         ->check(CLI::Range(1, 256));
-    app.add_option("--snapshot-hz", s.snapshot_hz, "Snapshots per second while pieces move")
+    app.add_option("--snapshot-hz", s.snapshot_hz,
+                   "Regular snapshots per second while pieces move (besides the contact ones)")
         ->envname("CARROM_SNAPSHOT_HZ")
         ->check(CLI::Range(1.0, 240.0));
+    app.add_option("--contact-snapshots", s.contact_snapshots,
+                   "A snapshot at every change of motion (contact, stop, pocketing): "
+                   "true or false")
+        ->envname("CARROM_CONTACT_SNAPSHOTS");
     app.add_option("--time-scale", s.time_scale,
                    "Match seconds per wall second while a shot plays (tests; 1 = real time)")
         ->envname("CARROM_TIME_SCALE")
@@ -170,8 +175,9 @@ int main(int argc, char** argv) {
         const auto port = server.listen();
         std::printf("listening on %s:%u\n", s.host.c_str(), static_cast<unsigned>(port));
         std::fflush(stdout);
-        spdlog::info("carrom-server on {}:{} ({} threads, {} Hz snapshots)", s.host, port,
-                     s.threads, s.snapshot_hz);
+        spdlog::info("carrom-server on {}:{} ({} threads, {} Hz snapshots{})", s.host, port,
+                     s.threads, s.snapshot_hz,
+                     s.contact_snapshots ? " plus one per change of motion" : "");
         if (web) {
             spdlog::info("web client at http://{}:{}/ ({}: {} files, {} bytes)", s.host, port,
                          web_root.empty() ? "embedded" : web_root, web->file_count(),

@@ -57,6 +57,7 @@ ServerCore::create_room(proto::RuleSet rule_set, const proto::RoomOptions& optio
     config.rule_set = rule_set;
     config.rules = room::make_rules_config(rule_set, options, settings.shot_clock_s);
     config.snapshot_hz = settings.snapshot_hz;
+    config.contact_snapshots = settings.contact_snapshots;
     config.time_scale = settings.time_scale;
     config.grace_s = settings.grace_s;
     config.server_version = CARROM_SERVER_VERSION;
@@ -154,6 +155,7 @@ int ServerCore::restore_matches() {
         config.rules = journal.created.rules;
         config.physics = journal.created.physics;
         config.snapshot_hz = settings.snapshot_hz;
+        config.contact_snapshots = settings.contact_snapshots;
         config.time_scale = settings.time_scale;
         config.grace_s = settings.grace_s;
         config.server_version = CARROM_SERVER_VERSION;

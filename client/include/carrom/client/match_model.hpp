@@ -122,6 +122,8 @@ public:
     double rendered_time_s() const { return last_render_s_; }
 
 private:
+    // The server's motion model (room_state "motion") for the buffer and the playout clock.
+    void apply_motion(const proto::MotionInfo& motion);
     void on_room_state(const proto::RoomState& m, double local_s);
     void on_snapshot(const proto::Snapshot& m, double local_s);
     void on_event(const proto::Event& m, double local_s);

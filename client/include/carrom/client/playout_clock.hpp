@@ -41,6 +41,9 @@ public:
 
     bool has_data() const { return has_data_; }
     double delay_s() const;
+    // A server that sends a snapshot at every change of motion needs no interval in the delay
+    // (the free motion is exact past the newest state): 0; otherwise 2.
+    void set_interval_factor(double factor) { config_.interval_factor = factor; }
     double interval_s() const { return interval_s_; }
     double jitter_s() const { return jitter_s_; }
     double base_transit_s() const;

@@ -4,6 +4,7 @@
 // client with a skewed clock counts down by the difference. Match times t_s are seconds since the
 // start of the current shot.
 
+#include "carrom/config.hpp"
 #include "carrom/proto/error.hpp"
 #include "carrom/proto/types.hpp"
 #include "carrom/proto/version.hpp"
@@ -45,6 +46,16 @@ struct MatchOptions {          // options with every default resolved
 
 // "room_state": everything a client needs to draw the room; sent on join, rejoin, seat changes
 // and after every shot.
+// How the pieces move between snapshots: every body follows the damped free motion
+// p(t) = p0 + v0 (1 - e^(-k t)) / k between changes of motion, and with contact_snapshots the
+// server sends a delta at the instant of every change (contact, stop, pocketing), so a client
+// can draw from the newest state forward exactly until the next one arrives.
+struct MotionInfo {
+    double damping_per_s = PhysicsConfig{}.damping_per_s; // "damping_per_s": k, 1/s
+    bool contact_snapshots = false;                       // "contact_snapshots"
+    friend bool operator==(const MotionInfo&, const MotionInfo&) = default;
+};
+
 struct RoomState {
     std::string code;                // "code"
     int you = -1;                    // "you": the receiver's seat, -1 for a spectator
@@ -63,6 +74,7 @@ struct RoomState {
     QueenInfo queen;                                    // "queen": {"state", "seat"}
     int winner = -1;                                    // "winner": seat, -1 while none
     std::vector<BoardBody> bodies; // "bodies": the full board, every body with its kind
+    MotionInfo motion;             // "motion", optional on the wire (absent: the defaults above)
     friend bool operator==(const RoomState&, const RoomState&) = default;
 };
 

@@ -32,7 +32,10 @@ struct RoomConfig {
     proto::RuleSet rule_set = proto::RuleSet::Icf;
     rules::RulesConfig rules{};
     PhysicsConfig physics{};
-    double snapshot_hz = 60.0;
+    // Deltas while a shot plays: one at every change of motion (contact, stop, pocketing) when
+    // contact_snapshots, plus snapshot_hz per second in between.
+    double snapshot_hz = 10.0;
+    bool contact_snapshots = true;
     double grace_s = 60.0;
     double time_scale = 1.0;    // match seconds per wall second while a shot plays
     std::string server_version; // journaled in MatchCreated.versions.server
@@ -157,6 +160,9 @@ private:
     std::int64_t wall_ms() const { return clock_.unix_ms(); }
     void start_turn();
     void stream_tick(std::int64_t now_ms);
+    // Sends the stream's delta at t_s (and the events before it); true when the shot ended
+    // (finish_shot ran and streaming_ is gone).
+    bool send_stream_step(double t_s, std::int64_t due_ms);
     void finish_shot();
     // A running game is forfeited by seat (journaled; game_end's reason is wire_reason).
     void forfeit(int seat, proto::ForfeitReason reason, std::string_view wire_reason);
@@ -196,8 +202,9 @@ private:
         rules::PlayResult result;
         rules::MatchState before;
         std::int64_t start_ms = 0;
-        std::int64_t next_ms = 0; // next snapshot due
-        int index = 0;            // snapshots sent
+        std::int64_t next_ms = 0;      // next wake: the next change of motion or next_base_ms
+        std::int64_t next_base_ms = 0; // next snapshot due at the regular rate
+        int index = 0;                 // regular snapshots sent
         // The stroke's journal entry not yet confirmed written: nothing of it is streamed.
         std::optional<std::int64_t> awaiting_seq;
     };

@@ -1,7 +1,8 @@
 #pragma once
 // Turns one shot's recorded trajectory into the snapshot stream: deltas sampled at whatever
-// times the caller asks for (the room asks at the snapshot rate, in real time), the physics
-// events due before each snapshot, and keyframes of the last state sent. Values are quantised
+// times the caller asks for (the room asks at every change of motion and at the snapshot rate,
+// in real time), the physics events due before each snapshot, and keyframes of the last state
+// sent. Values are quantised
 // to 0.01 px and 0.01 px/s; a body is in a delta when a quantised value changed.
 
 #include "carrom/config.hpp"
@@ -11,6 +12,7 @@
 #include "carrom/trajectory_cursor.hpp"
 
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -36,6 +38,12 @@ public:
     };
     // The state at t_s (clamped to [last t, end]) as a delta with sequence number seq.
     Step advance(double t_s, std::int64_t seq);
+
+    // The first instant after the last snapshot, and at or before t_s, where some body's motion
+    // changes (a contact, a stop, a pocketing: a trajectory segment starts); nullopt if none.
+    // Between two such instants every body follows the damped free motion exactly, so a delta
+    // at each of them lets a client draw the shot exactly.
+    std::optional<double> next_motion_change(double t_s) const;
 
     // The last state sent (or the initial one), as a keyframe.
     proto::Snapshot keyframe(std::int64_t seq) const;

@@ -13,7 +13,8 @@ struct ServerSettings {
     std::string host = "127.0.0.1";
     std::uint16_t port = 7777;            // 0 = ephemeral (the bound port is printed)
     int threads = 2;                      // I/O threads
-    double snapshot_hz = 60.0;            // snapshots per second while pieces move
+    double snapshot_hz = 10.0;            // regular snapshots per second while pieces move
+    bool contact_snapshots = true;        // plus a snapshot at every change of motion
     double time_scale = 1.0;              // match seconds per wall second (tests speed play up)
     std::size_t max_message_bytes = 4096; // client text frame limit
     double max_rate = 30.0;               // client messages per second (sustained)
