@@ -203,10 +203,15 @@ std::optional<RenderedBody> InterpolationBuffer::falling_body(int id, double t_s
 std::optional<RenderedBody> InterpolationBuffer::body_between(const Frame& a, const Frame& b,
                                                               const BodyState& bb,
                                                               double t_s) const {
+    const BodyState* ba = find_body(a.bodies, bb.id);
     if (bb.pocketed) {
+        if (every_change_sent_ && ba != nullptr && !ba->pocketed && t_s < b.time_s) {
+            // Pocketed at b's instant: until then it moves on freely from a.
+            return rendered(
+                bb, free_motion(ba->pos_px, ba->vel_px_s, config_.damping_per_s, t_s - a.time_s));
+        }
         return falling_body(bb.id, t_s);
     }
-    const BodyState* ba = find_body(a.bodies, bb.id);
     if (ba == nullptr) {
         return rendered(bb, bb.pos_px); // appears with the newer state
     }

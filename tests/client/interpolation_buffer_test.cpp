@@ -79,8 +79,15 @@ TEST(InterpolationBuffer, DeltasKeepUnlistedBodiesAtRest) {
     EXPECT_EQ(s[1].vel_px_s, (Vec2{40, 0}));
 }
 
+// Constant velocity is the free motion with k = 0.
+InterpolationConfig undamped() {
+    InterpolationConfig cfg;
+    cfg.damping_per_s = 0.0;
+    return cfg;
+}
+
 TEST(InterpolationBuffer, InterpolatesBetweenStatesWithVelocities) {
-    InterpolationBuffer buf(kGeometry);
+    InterpolationBuffer buf(kGeometry, undamped());
     buf.push(snap(1, 0.0, true, {body(1, {100, 100}, {100, 0})}));
     buf.push(snap(2, 0.1, false, {body(1, {110, 100}, {100, 0})}));
     const auto r = buf.sample(0.05);
@@ -91,7 +98,7 @@ TEST(InterpolationBuffer, InterpolatesBetweenStatesWithVelocities) {
 }
 
 TEST(InterpolationBuffer, BeforeTheOldestAndAfterTheNewest) {
-    InterpolationConfig cfg;
+    InterpolationConfig cfg = undamped();
     cfg.max_extrapolation_s = 0.05;
     InterpolationBuffer buf(kGeometry, cfg);
     buf.push(snap(1, 1.0, true, {body(1, {100, 100}, {100, 0})}));

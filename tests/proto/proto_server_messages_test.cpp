@@ -112,6 +112,34 @@ TEST(ProtoServer, RoomStateValidation) {
     EXPECT_EQ(error_of(j), "bad_field"); // over kMaxBodies
 }
 
+TEST(ProtoServer, RoomStateMotionIsOptional) {
+    RoomState room = sample_room();
+    room.motion = {2.5, true};
+    EXPECT_EQ(round_trip(room), ServerMessage{room});
+    const json j = to_json(ServerMessage{room});
+    EXPECT_EQ(j["motion"], json::parse(R"({"damping_per_s":2.5,"contact_snapshots":true})"));
+    json absent = j;
+    absent.erase("motion");
+    const auto decoded = decode_server(absent.dump());
+    ASSERT_TRUE(decoded.ok());
+    const auto& state = std::get<RoomState>(*decoded.message);
+    EXPECT_EQ(state.motion.damping_per_s, PhysicsConfig{}.damping_per_s);
+    EXPECT_FALSE(state.motion.contact_snapshots);
+}
+
+TEST(ProtoServer, RoomStateMotionValidation) {
+    const json good = to_json(ServerMessage{sample_room()});
+    for (const char* bad : {R"(5)", R"({"damping_per_s":-1,"contact_snapshots":true})",
+                            R"({"damping_per_s":1000,"contact_snapshots":true})",
+                            R"({"damping_per_s":"k","contact_snapshots":true})",
+                            R"({"damping_per_s":1,"contact_snapshots":"yes"})",
+                            R"({"contact_snapshots":true})", R"({"damping_per_s":1})"}) {
+        json j = good;
+        j["motion"] = json::parse(bad);
+        EXPECT_EQ(error_of(j), "bad_field") << bad;
+    }
+}
+
 TEST(ProtoServer, RoomStateBodyErrorNamesTheIndex) {
     json j = to_json(ServerMessage{sample_room()});
     j["bodies"][2]["vy"] = "fast";

@@ -18,13 +18,17 @@ inline constexpr double kUp = -std::numbers::pi / 2.0;
 
 class RoomTest : public ::testing::Test {
 protected:
-    RoomTest() : room_("ABCDEF", config(), clock_, counters_) {}
+    RoomTest() : RoomTest(config()) {}
+    explicit RoomTest(const RoomConfig& c) : room_("ABCDEF", c, clock_, counters_) {}
 
+    // A plain 60 Hz stream (most tests count on its regular spacing); the server's default,
+    // 10 Hz plus a delta at every change of motion, is in room_contact_snapshots_test.cpp.
     static RoomConfig config() {
         RoomConfig c;
         c.rule_set = proto::RuleSet::Icf;
         c.rules.shot_clock_s = 0.0;
         c.snapshot_hz = 60.0;
+        c.contact_snapshots = false;
         c.grace_s = 60.0;
         return c;
     }

@@ -57,11 +57,15 @@ TEST_F(SocketTest, HelloCreateJoinShootStreamsToPlayersAndSpectators) {
         EXPECT_EQ(snaps_b[i].seq, snaps_b[i - 1].seq + 1);
     }
     EXPECT_TRUE(snaps_b.back().keyframe);
-    // Real time: the shot's snapshots cover its duration at about 60 Hz.
+    // Real time: the shot's snapshots cover its duration, at the default 10 Hz plus one at
+    // every change of motion, in time order.
     const double duration = snaps_b.back().t_s;
     EXPECT_GT(duration, 0.3);
-    EXPECT_NEAR(static_cast<double>(snaps_b.size() - 1), duration * 60.0,
-                duration * 60.0 * 0.2 + 3);
+    EXPECT_GE(static_cast<double>(snaps_b.size() - 1), duration * 10.0);
+    for (std::size_t i = 1; i < snaps_b.size(); ++i) {
+        EXPECT_GE(snaps_b[i].t_s, snaps_b[i - 1].t_s);
+        EXPECT_LE(snaps_b[i].t_s - snaps_b[i - 1].t_s, 0.1 + 0.2); // a loaded machine is late
+    }
     const auto state = b->wait_for<proto::RoomState>();
     ASSERT_TRUE(state);
     EXPECT_EQ(state->turn, 1);
