@@ -5,9 +5,9 @@ import assert from 'node:assert/strict';
 import test from 'node:test';
 
 import { AimController, checkPlacement, clampBaselineX, powerFromDrag } from '../../web/js/aim_controller.js';
-import { makeBoardGeometry, nearestPocket } from '../../web/js/board_geometry.js';
+import { makeBoardGeometry, nearestPocket, PHYSICS } from '../../web/js/board_geometry.js';
 import { hermite } from '../../web/js/hermite.js';
-import { InterpolationBuffer, INTERPOLATION_DEFAULTS } from '../../web/js/interpolation_buffer.js';
+import { InterpolationBuffer, INTERPOLATION_DEFAULTS, travelFactor } from '../../web/js/interpolation_buffer.js';
 import { MatchModel } from '../../web/js/match_model.js';
 import { gameEndSentence, pocketList } from '../../web/js/plain_words.js';
 import { PlayoutClock, PLAYOUT_DEFAULTS } from '../../web/js/playout_clock.js';
@@ -133,8 +133,11 @@ test('deltas keep unlisted bodies at rest', () => {
   assert.deepEqual([s[0].x, s[1].x, s[1].vx], [100, 205, 40]);
 });
 
+// Without damping (k = 0) uniform motion is the free motion.
+const undamped = { ...INTERPOLATION_DEFAULTS, dampingPerS: 0 };
+
 test('interpolates between states with velocities', () => {
-  const b = new InterpolationBuffer(geometry);
+  const b = new InterpolationBuffer(geometry, undamped);
   b.push(snap(1, 0, true, [body(1, 100, 100, 100, 0)]));
   b.push(snap(2, 0.1, false, [body(1, 110, 100, 100, 0)]));
   const r = b.sample(0.05);
@@ -144,7 +147,7 @@ test('interpolates between states with velocities', () => {
 });
 
 test('before the oldest and after the newest', () => {
-  const b = new InterpolationBuffer(geometry);
+  const b = new InterpolationBuffer(geometry, undamped);
   b.push(snap(1, 1, true, [body(1, 100, 100, 100, 0)]));
   b.push(snap(2, 1.1, false, [body(1, 110, 100, 100, 0)]));
   near(b.sample(0.5)[0].x, 100, 1e-9);
@@ -493,4 +496,155 @@ test('a link on which nothing arrives is taken for lost and reopened', async () 
   assert.ok(MuteConnection.made.length >= 2, 'a new link is opened');
   assert.ok(statuses.some((s) => s.includes('the link is silent, taken for lost')), statuses.join(' | '));
   session.stopLink();
+});
+
+// ---- free motion between snapshots (docs/interpolation.md, "Sampling a time") ----
+
+const K = 60 * Math.log(1 / 0.985); // the server's default damping, 1/s
+// A body's state dt after (x, y, vx, vy) along the damped free motion.
+const freeAt = (s, dt, k = K) => {
+  const f = k === 0 ? dt : -Math.expm1(-k * dt) / k;
+  const decay = Math.exp(-k * dt);
+  return { x: s.x + s.vx * f, y: s.y + s.vy * f, vx: s.vx * decay, vy: s.vy * decay };
+};
+const stateBody = (id, s, pocketed = false) => body(id, s.x, s.y, s.vx, s.vy, pocketed);
+
+test('the travel factor is -expm1(-k dt) / k, and dt for k = 0', () => {
+  near(travelFactor(K, 0.1), (1 - Math.exp(-K * 0.1)) / K, 1e-15);
+  near(travelFactor(K, -0.1), (1 - Math.exp(K * 0.1)) / K, 1e-15);
+  assert.equal(travelFactor(0, 0.37), 0.37);
+  assert.equal(INTERPOLATION_DEFAULTS.dampingPerS, K);
+  assert.equal(PHYSICS.dampingPerS, K);
+});
+
+test('free motion between two states with no change of motion is drawn exactly', () => {
+  const b = new InterpolationBuffer(geometry);
+  const a = { x: 100, y: 200, vx: 300, vy: -150 };
+  b.push(snap(1, 1, true, [stateBody(1, a)]));
+  b.push(snap(2, 1.1, false, [stateBody(1, freeAt(a, 0.1))]));
+  for (const dt of [0, 0.001, 0.025, 0.05, 0.0777, 0.099]) {
+    const r = b.sample(1 + dt)[0];
+    near(r.x, freeAt(a, dt).x, 1e-9, `x at ${dt}`);
+    near(r.y, freeAt(a, dt).y, 1e-9, `y at ${dt}`);
+  }
+});
+
+test('one change of motion between two states is drawn exactly before and after its instant', () => {
+  // Moving right and down, the body bounces off a cushion at c = 0.063 s (vx reversed at 0.8).
+  const a = { x: 100, y: 300, vx: 400, vy: 50 };
+  const c = 0.063;
+  const hit = freeAt(a, c);
+  const after = { ...hit, vx: -0.8 * hit.vx };
+  const truth = (t) => (t <= c ? freeAt(a, t) : freeAt(after, t - c));
+  const b = new InterpolationBuffer(geometry);
+  b.push(snap(1, 0, true, [stateBody(1, a)]));
+  b.push(snap(2, 0.1, false, [stateBody(1, truth(0.1))]));
+  let furthestFromHermite = 0;
+  for (const t of [0.001, 0.02, 0.05, 0.062, 0.0629, 0.0631, 0.064, 0.08, 0.0999]) {
+    const r = b.sample(t)[0];
+    near(r.x, truth(t).x, 1e-9, `x at ${t}`);
+    near(r.y, truth(t).y, 1e-9, `y at ${t}`);
+    const h = hermite(a, { x: a.vx, y: a.vy }, truth(0.1), { x: truth(0.1).vx, y: truth(0.1).vy }, 0.1, t / 0.1);
+    furthestFromHermite = Math.max(furthestFromHermite, Math.hypot(h.x - r.x, h.y - r.y));
+  }
+  assert.ok(furthestFromHermite > 1, `the Hermite curve is ${furthestFromHermite} px away at most`);
+});
+
+test('two changes of motion between two states fall back to the Hermite curve', () => {
+  // A bounce off a side cushion at 0.03 s, then off the bottom one at 0.07 s.
+  const a = { x: 520, y: 500, vx: 600, vy: 500 };
+  const one = freeAt(a, 0.03);
+  const two = freeAt({ ...one, vx: -0.8 * one.vx }, 0.04);
+  const end = freeAt({ ...two, vy: -0.8 * two.vy }, 0.03);
+  const b = new InterpolationBuffer(geometry);
+  b.push(snap(1, 0, true, [stateBody(1, a)]));
+  b.push(snap(2, 0.1, false, [stateBody(1, end)]));
+  for (const t of [0.01, 0.03, 0.05, 0.09]) {
+    const h = hermite(a, { x: a.vx, y: a.vy }, end, { x: end.vx, y: end.vy }, 0.1, t / 0.1);
+    const r = b.sample(t)[0];
+    near(r.x, h.x, 1e-9, `x at ${t}`);
+    near(r.y, h.y, 1e-9, `y at ${t}`);
+  }
+});
+
+test('past the newest state: free motion for 0.25 s with contact snapshots, 50 ms without', () => {
+  const a = { x: 100, y: 300, vx: 400, vy: -100 };
+  for (const [every, cap] of [[true, 0.25], [false, 0.05]]) {
+    const b = new InterpolationBuffer(geometry);
+    b.setMotion(K, every);
+    b.push(snap(1, 2, true, [stateBody(1, a)]));
+    for (const ahead of [0.01, 0.04, 0.2, 0.25, 0.3, 1]) {
+      const r = b.sample(2 + ahead)[0];
+      const want = freeAt(a, Math.min(ahead, cap));
+      near(r.x, want.x, 1e-9, `x ${ahead} s ahead, contact snapshots ${every}`);
+      near(r.y, want.y, 1e-9, `y ${ahead} s ahead, contact snapshots ${every}`);
+    }
+  }
+});
+
+test('with contact snapshots a pocket fall starts at the newer state, where the free motion brings the body', () => {
+  const a = { x: 500, y: 500, vx: 300, vy: 300 };
+  const b = new InterpolationBuffer(geometry);
+  b.setMotion(K, true);
+  b.push(snap(1, 0, true, [stateBody(3, a), body(4, 300, 300)]));
+  b.push(snap(2, 0.08, false, [body(3, 0, 0, 0, 0, true)]));
+  assert.equal(b.falls.length, 1);
+  const fall = b.falls[0];
+  assert.equal(fall.start, 0.08);
+  const at = freeAt(a, 0.08);
+  near(fall.fromX, at.x, 1e-9);
+  near(fall.fromY, at.y, 1e-9);
+  near(fall.fromVx, at.vx, 1e-9);
+  assert.equal(fall.pocket, geometry.pockets[3]);
+  const r = find(b.sample(0.09), 3);
+  assert.ok(r.falling && r.scale < 1);
+  // Without contact snapshots it starts at the older state, from its position.
+  const old = new InterpolationBuffer(geometry);
+  old.push(snap(1, 0, true, [stateBody(3, a)]));
+  old.push(snap(2, 0.08, false, [body(3, 0, 0, 0, 0, true)]));
+  assert.deepEqual([old.falls[0].start, old.falls[0].fromX], [0, 500]);
+});
+
+test('with interval factor 0 the playout delay is clamp(jitter, 10 ms, 300 ms)', () => {
+  for (const [late, want] of [[0, 0.010], [0.004, 0.010], [0.03, 0.03], [0.12, 0.12], [0.5, 0.3]]) {
+    const c = new PlayoutClock();
+    c.setIntervalFactor(0);
+    for (let i = 0; i < 30; i += 1) c.onSnapshot(i / 10, 50 + i / 10);
+    c.onSnapshot(3, 53 + late);
+    near(c.interval, 0.1, 0.01, 'interval');
+    near(c.delay(), want, 1e-9, `delay with ${late} s late`);
+  }
+  assert.equal(PLAYOUT_DEFAULTS.intervalFactor, 2);
+});
+
+test('room_state motion: present, absent (the defaults) and invalid', () => {
+  const decode = (extra) => proto.decodeServer(JSON.stringify(roomState(extra)));
+  assert.deepEqual(decode({ motion: { damping_per_s: 2.5, contact_snapshots: true } }).message.motion,
+    { damping_per_s: 2.5, contact_snapshots: true });
+  assert.deepEqual(decode({ motion: { damping_per_s: 0, contact_snapshots: false } }).message.motion,
+    { damping_per_s: 0, contact_snapshots: false });
+  assert.deepEqual(decode({}).message.motion, { damping_per_s: K, contact_snapshots: false });
+  const refused = [
+    [5, "room_state: field 'motion' must be an object"],
+    [null, "room_state: field 'motion' must be an object"],
+    [{ contact_snapshots: true }, "room_state: field 'motion.damping_per_s' must be a number in [0, 100]"],
+    [{ damping_per_s: -0.1, contact_snapshots: true }, "room_state: field 'motion.damping_per_s' must be a number in [0, 100]"],
+    [{ damping_per_s: 100.5, contact_snapshots: true }, "room_state: field 'motion.damping_per_s' must be a number in [0, 100]"],
+    [{ damping_per_s: '1', contact_snapshots: true }, "room_state: field 'motion.damping_per_s' must be a number in [0, 100]"],
+    [{ damping_per_s: 1 }, "room_state: field 'motion.contact_snapshots' must be a boolean"],
+    [{ damping_per_s: 1, contact_snapshots: 1 }, "room_state: field 'motion.contact_snapshots' must be a boolean"],
+  ];
+  for (const [motion, error] of refused) assert.equal(decode({ motion }).error, error, JSON.stringify(motion));
+});
+
+test('the model gives room_state motion to the buffer and the playout clock', () => {
+  const m = new MatchModel();
+  m.handle(proto.decodeServer(JSON.stringify(roomState({ motion: { damping_per_s: 2.5, contact_snapshots: true } }))).message, 10);
+  assert.equal(m.buffer.config.dampingPerS, 2.5);
+  assert.equal(m.buffer.everyChangeSent, true);
+  assert.equal(m.playout.config.intervalFactor, 0);
+  m.handle(roomState(), 11); // no motion: an older server
+  assert.equal(m.buffer.config.dampingPerS, K);
+  assert.equal(m.buffer.everyChangeSent, false);
+  assert.equal(m.playout.config.intervalFactor, 2);
 });

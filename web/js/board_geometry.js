@@ -10,6 +10,7 @@ export const PHYSICS = Object.freeze({
   maxPower: 25, // shot power range [0, maxPower]
   baselineOffset: 80, // baseline distance from the near edge
   baselineEndMargin: 60, // baseline x range: frame + margin + striker radius
+  dampingPerS: 60 * Math.log(1 / 0.985), // k of the free motion between changes of motion, 1/s
 });
 
 export const STRIKER_ID = 19;

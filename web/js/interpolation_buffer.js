@@ -1,22 +1,43 @@
 // Snapshots in, the board at any server time out (client/src/interpolation_buffer.cpp;
 // docs/interpolation.md). Keeps a short history of full board states (a delta is applied onto
-// the previous state), interpolates each body between the two states around the requested time
-// with a cubic Hermite curve through their positions and velocities, and animates a pocketed
-// piece into its pocket (sliding to the pocket centre while it shrinks and fades).
+// the previous state) and draws each body between the two states around the requested time
+// along the damped free motion p(t) = p0 + v0 (1 - e^(-k dt)) / k when that explains both states
+// (no change of motion between them, or exactly one, whose instant it solves for), else along a
+// cubic Hermite curve through their positions and velocities; and animates a pocketed piece into
+// its pocket (sliding to the pocket centre while it shrinks and fades).
 //
 // A body state: {id, kind, x, y, vx, vy, pocketed}; board px, px/s. Times: server match time, s.
 // A rendered body: {id, kind, x, y, scale, alpha, falling}.
 
 import { hermite } from './hermite.js';
-import { nearestPocket } from './board_geometry.js';
+import { nearestPocket, PHYSICS } from './board_geometry.js';
 
 export const INTERPOLATION_DEFAULTS = Object.freeze({
   pocketAnim: 0.15, // time a piece takes to vanish into its pocket
   pocketEndScale: 0.35, // its size at the end of that animation
   holdGap: 0.25, // a longer gap after a board at rest is a jump, not a glide
-  maxExtrapolation: 0.05,
+  maxExtrapolation: 0.05, // past the newest state, along the free motion
+  // the same when the server sends a delta at every change of motion (the free motion past the
+  // newest state is then exact until the next delta arrives)
+  maxExtrapolationEveryChange: 0.25,
+  dampingPerS: PHYSICS.dampingPerS, // k of the free motion, 1/s
+  freeMotionTolerance: 0.05, // px: how closely the free motion must explain a state
   history: 2.0, // states older than this behind the newest are dropped
 });
+
+// How far a body travels in dt along the damped free motion per px/s of velocity:
+// (1 - e^(-k dt)) / k, dt for k = 0 (common/src/trajectory.cpp travel_factor_s). dt may be
+// negative: the same motion run backwards.
+export function travelFactor(k, dt) {
+  if (k === 0) return dt;
+  return -Math.expm1(-k * dt) / k;
+}
+
+// Where a body at (x, y) with velocity (vx, vy) is dt later along the free motion.
+function freeMotion(x, y, vx, vy, k, dt) {
+  const f = travelFactor(k, dt);
+  return { x: x + vx * f, y: y + vy * f };
+}
 
 const byId = (a, b) => a.id - b.id;
 
@@ -56,6 +77,14 @@ export class InterpolationBuffer {
     this.config = config;
     this.frames = []; // {seq, time, bodies (sorted by id), atRest}
     this.falls = []; // {id, kind, start, fromX, fromY, fromVx, fromVy, pocket}
+    this.everyChangeSent = false;
+  }
+
+  // The server's motion model (room_state "motion"): k, and whether it sends a delta at the
+  // instant of every change of motion (contact, stop, pocketing).
+  setMotion(dampingPerS, everyChangeSent) {
+    this.config = { ...this.config, dampingPerS };
+    this.everyChangeSent = everyChangeSent;
   }
 
   clear() {
@@ -112,10 +141,21 @@ export class InterpolationBuffer {
       const a = findBody(before.bodies, b.id);
       if (!b.pocketed || a === null || a.pocketed) continue;
       const heading = { x: a.x + a.vx * dt, y: a.y + a.vy * dt };
-      this.falls.push({
+      const fall = {
         id: b.id, kind: b.kind, start: before.time, fromX: a.x, fromY: a.y, fromVx: a.vx,
         fromVy: a.vy, pocket: this.geometry.pockets[nearestPocket(this.geometry, heading)],
-      });
+      };
+      if (this.everyChangeSent) {
+        // The pocketing is itself a change of motion: it happened at after's instant, and the
+        // body got there along the free motion from before.
+        const k = this.config.dampingPerS;
+        const p = freeMotion(a.x, a.y, a.vx, a.vy, k, dt);
+        const decay = Math.exp(-k * dt);
+        Object.assign(fall, {
+          start: after.time, fromX: p.x, fromY: p.y, fromVx: a.vx * decay, fromVy: a.vy * decay,
+        });
+      }
+      this.falls.push(fall);
     }
   }
 
@@ -155,14 +195,47 @@ export class InterpolationBuffer {
     if (ba.pocketed) return null; // back on the board from the newer state on
     const gap = b.time - a.time;
     if (gap > this.config.holdGap && a.atRest) return rendered(bb, ba.x, ba.y); // a jump
-    const s = Math.min(Math.max((t - a.time) / gap, 0), 1);
+    const k = this.config.dampingPerS;
+    const tol = this.config.freeMotionTolerance;
+    const dtA = t - a.time;
+    // No change of motion between a and b: the free motion from a reaches b.
+    const reach = freeMotion(ba.x, ba.y, ba.vx, ba.vy, k, gap);
+    if (Math.hypot(reach.x - bb.x, reach.y - bb.y) <= tol) {
+      const p = freeMotion(ba.x, ba.y, ba.vx, ba.vy, k, dtA);
+      return rendered(bb, p.x, p.y);
+    }
+    // One change of motion at an unknown instant c: forwards from a before c, backwards from b
+    // after c. With u = e^(-k (t - t_a)) their difference is linear in u,
+    //   d(u) = (p_a - p_b) + (v_a - v_b) / k + u (v_b e^(k gap) - v_a) / k,
+    // and c is where it vanishes (solved in least squares; accepted when the residual is within
+    // the tolerance).
+    if (k > 0) {
+      const d0x = ba.x - bb.x + (ba.vx - bb.vx) * (1 / k);
+      const d0y = ba.y - bb.y + (ba.vy - bb.vy) * (1 / k);
+      const grow = Math.exp(k * gap);
+      const wx = (bb.vx * grow - ba.vx) * (1 / k);
+      const wy = (bb.vy * grow - ba.vy) * (1 / k);
+      const ww = wx * wx + wy * wy;
+      if (ww > 0) {
+        const u = Math.min(Math.max(-(d0x * wx + d0y * wy) / ww, Math.exp(-k * gap)), 1);
+        if (Math.hypot(d0x + wx * u, d0y + wy * u) <= tol) {
+          const change = a.time - Math.log(u) / k;
+          const p = t <= change ? freeMotion(ba.x, ba.y, ba.vx, ba.vy, k, dtA)
+            : freeMotion(bb.x, bb.y, bb.vx, bb.vy, k, t - b.time);
+          return rendered(bb, p.x, p.y);
+        }
+      }
+    }
+    const s = Math.min(Math.max(dtA / gap, 0), 1);
     const p = hermite({ x: ba.x, y: ba.y }, { x: ba.vx, y: ba.vy }, { x: bb.x, y: bb.y },
       { x: bb.vx, y: bb.vy }, gap, s);
     return rendered(bb, p.x, p.y);
   }
 
   // The bodies to draw at server time t, sorted by id. Before the oldest state: the oldest;
-  // after the newest: the newest, extrapolated for at most maxExtrapolation.
+  // after the newest: the newest, continued along the free motion for at most
+  // maxExtrapolationEveryChange when the server sends every change of motion, else
+  // maxExtrapolation.
   sample(t) {
     const out = [];
     const frames = this.frames;
@@ -175,10 +248,13 @@ export class InterpolationBuffer {
     }
     if (after === frames.length) {
       const last = frames[frames.length - 1];
-      const ahead = Math.min(t - last.time, this.config.maxExtrapolation);
+      const c = this.config;
+      const ahead = Math.min(t - last.time,
+        this.everyChangeSent ? c.maxExtrapolationEveryChange : c.maxExtrapolation);
       for (const b of last.bodies) {
         if (!b.pocketed) {
-          out.push(rendered(b, b.x + b.vx * ahead, b.y + b.vy * ahead));
+          const p = freeMotion(b.x, b.y, b.vx, b.vy, c.dampingPerS, ahead);
+          out.push(rendered(b, p.x, p.y));
         } else {
           const fall = this.fallingBody(b.id, t);
           if (fall) out.push(fall);

@@ -13,10 +13,11 @@
 import { makeBoardGeometry, PHYSICS } from './board_geometry.js';
 import { HudLog } from './hud_log.js';
 import { InterpolationBuffer } from './interpolation_buffer.js';
-import { PlayoutClock } from './playout_clock.js';
+import { PLAYOUT_DEFAULTS, PlayoutClock } from './playout_clock.js';
 import {
   countWords, errorSentence, gameEndSentence, pocketList, queenSentence,
 } from './plain_words.js';
+import { DEFAULT_MOTION } from './protocol.js';
 import { ServerClock } from './server_clock.js';
 import { loudnessFromImpulse, SoundCueQueue } from './sound_cues.js';
 
@@ -127,10 +128,20 @@ export class MatchModel {
     return this.buffer.empty() ? now : Math.max(now, this.buffer.newestTime() + 1e-3);
   }
 
+  // The server's motion model (room_state "motion") for the buffer and the playout clock. A server
+  // that sends a delta at every change of motion makes the free motion past the newest state
+  // exact: the delay only covers the jitter, and the board may be drawn further ahead of the
+  // newest state (docs/interpolation.md, "The render time").
+  applyMotion(motion = DEFAULT_MOTION) {
+    this.playout.setIntervalFactor(motion.contact_snapshots ? 0 : PLAYOUT_DEFAULTS.intervalFactor);
+    this.buffer.setMotion(motion.damping_per_s, motion.contact_snapshots);
+  }
+
   onRoomState(m, localS) {
     if (this.view.inRoom && m.code !== this.view.code) this.reset();
     const joined = !this.view.inRoom;
     this.serverClock.oneWay(m.server_time_ms, localS);
+    this.applyMotion(m.motion ?? DEFAULT_MOTION);
     const v = this.view;
     if (v.phase === 'game_over' && m.phase !== 'game_over') {
       v.gameEnd = null; // a rematch started

@@ -3,8 +3,9 @@
 //
 //   render time = local time - base transit - delay
 //   base transit = smallest (arrival - server time) over the last 180 snapshots
-//   delay = 2 snapshot intervals + jitter (a decaying peak of how much later than the fastest
-//           path snapshots arrive), clamped to [10, 300] ms
+//   delay = intervalFactor snapshot intervals + jitter (a decaying peak of how much later than
+//           the fastest path snapshots arrive), clamped to [10, 300] ms; intervalFactor is 2,
+//           and 0 when the server sends a delta at every change of motion
 //
 // The rendered time follows the local clock and is pulled towards its target by at most 10 % of
 // the elapsed time (never backwards); errors over 0.25 s are corrected at once. Units: s.
@@ -55,6 +56,12 @@ export class PlayoutClock {
     this.lastServer = serverTime;
     this.lastArrival = localTime;
     this.hasData = true;
+  }
+
+  // A server that sends a snapshot at every change of motion needs no interval in the delay (the
+  // free motion is exact past the newest state): 0; otherwise 2.
+  setIntervalFactor(factor) {
+    this.config = { ...this.config, intervalFactor: factor };
   }
 
   baseTransit() {

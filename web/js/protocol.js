@@ -133,6 +133,12 @@ function oneOf(o, k, values) {
   return o[k];
 }
 
+// room_state's motion when the server sends none (an older server): the default k
+// (common/include/carrom/config.hpp) and only the regular snapshots.
+export const DEFAULT_MOTION = Object.freeze({
+  damping_per_s: 60 * Math.log(1 / 0.985), contact_snapshots: false,
+});
+
 const KINDS = ['black', 'white', 'queen', 'striker'];
 const PHASES = ['waiting', 'aiming', 'moving', 'board_over', 'game_over'];
 const QUEEN_STATES = ['on_board', 'pending', 'covered', 'none'];
@@ -180,6 +186,16 @@ function roomState(m) {
     num(b, 'vy', `${p}.vy`);
     need(isBool(b.pocketed), `${p}.pocketed`, 'a boolean');
   });
+  if (m.motion === undefined) {
+    m.motion = { ...DEFAULT_MOTION };
+  } else {
+    const o = m.motion;
+    need(o !== null && typeof o === 'object' && !Array.isArray(o), 'motion', 'an object');
+    need(isNum(o.damping_per_s) && o.damping_per_s >= 0 && o.damping_per_s <= 100,
+      'motion.damping_per_s', 'a number in [0, 100]');
+    need(isBool(o.contact_snapshots), 'motion.contact_snapshots', 'a boolean');
+    m.motion = { damping_per_s: o.damping_per_s, contact_snapshots: o.contact_snapshots };
+  }
 }
 
 function snapshot(m) {
