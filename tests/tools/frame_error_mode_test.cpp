@@ -5,7 +5,6 @@
 
 #include "proto/journal_support.hpp"
 
-#include "carrom/proto/codec.hpp"
 #include "carrom/proto/journal_json.hpp"
 #include "carrom/scene.hpp"
 #include "carrom/trajectory.hpp"
@@ -55,10 +54,9 @@ std::vector<FrameLine> exact_frames(const MatchJournal& journal) {
         }
         std::vector<Body> rest = o.physics.bodies;
         for (Body& b : rest) {
-            b.pos_px = {quantise(b.pos_px.x), quantise(b.pos_px.y)};
             for (const rules::ReturnedPiece& p : o.returned) {
                 if (p.id == b.id) {
-                    b.pos_px = {quantise(p.pos_px.x), quantise(p.pos_px.y)};
+                    b.pos_px = p.pos_px;
                     b.pocketed = false;
                 }
             }

@@ -1,6 +1,5 @@
 #include "frame_error_mode.hpp"
 
-#include "carrom/proto/codec.hpp"
 #include "carrom/proto/journal_json.hpp"
 #include "carrom/proto/journal_replay.hpp"
 #include "carrom/scene.hpp"
@@ -33,8 +32,9 @@ constexpr double kFinalTolerancePx = 0.005;
 // intervals (the median interval of the log) while the stroke was still moving.
 constexpr double kFreezeIntervals = 2.0;
 // The server's last keyframe of a stroke holds the board after the rules: the striker on the next
-// baseline, returned pieces placed. A client interpolates those bodies there over the last
-// snapshot interval (60 Hz) of the stroke; in that interval they are not compared.
+// baseline, returned pieces placed. A client interpolates those bodies there from its last
+// snapshot of the stroke, so they are compared only while they move in the exact trajectory and
+// not in the stroke's last snapshot interval (60 Hz).
 constexpr double kLastIntervalS = 1.0 / 60.0;
 
 struct Frame {
@@ -66,10 +66,6 @@ void print(std::ostream& out, const Json& j, bool pretty) {
 int fail(std::ostream& err, const std::string& code, const std::string& message) {
     print(err, proto::error_to_json({code, "", message}), false);
     return kExitBadInput;
-}
-
-Vec2 quantised(Vec2 p) {
-    return {proto::quantise(p.x), proto::quantise(p.y)};
 }
 
 // The frame lines of the log ("kind": "frame"); other lines are skipped.
@@ -125,12 +121,12 @@ std::vector<Stroke> strokes_of(const proto::ReplayResult& replayed) {
         s.end_s = o.physics.end_time_s;
         for (const Body& b : o.physics.bodies) {
             if (!b.pocketed && b.id != kStrikerId) {
-                s.final_board[b.id] = quantised(b.pos_px);
+                s.final_board[b.id] = b.pos_px;
             }
         }
         s.placed.push_back(kStrikerId);
         for (const rules::ReturnedPiece& r : o.returned) {
-            s.final_board[r.id] = quantised(r.pos_px);
+            s.final_board[r.id] = r.pos_px;
             s.placed.push_back(r.id);
         }
         strokes.push_back(std::move(s));
@@ -152,11 +148,14 @@ double median_interval_ms(const std::vector<Frame>& frames) {
     return gaps[gaps.size() / 2];
 }
 
-// Exact positions of the unpocketed bodies at t_s, by id.
+// Exact positions at t_s, by id, of the unpocketed bodies, less those the rules move at the end
+// once they rest.
 std::map<int, Vec2> exact_at(const PhysicsConfig& physics, const Stroke& s, double t_s) {
     std::map<int, Vec2> out;
+    const bool last_interval = t_s >= s.end_s - kLastIntervalS;
     for (const Body& b : state_at(physics, s.trajectory, t_s)) {
-        if (!b.pocketed) {
+        const bool placed = std::find(s.placed.begin(), s.placed.end(), b.id) != s.placed.end();
+        if (!b.pocketed && !(placed && (last_interval || b.vel_px_s == Vec2{}))) {
             out[b.id] = b.pos_px;
         }
     }
@@ -198,11 +197,6 @@ Json measure(const PhysicsConfig& physics, const Stroke& s, const std::vector<Fr
         std::map<int, Vec2> exact;
         if (moving) {
             exact = exact_at(physics, s, f.t_s);
-            if (f.t_s >= s.end_s - kLastIntervalS) {
-                for (int id : s.placed) {
-                    exact.erase(id);
-                }
-            }
             for (const auto& [id, p] : f.bodies) {
                 const auto it = exact.find(id);
                 if (it == exact.end()) {
