@@ -61,9 +61,9 @@ bool is_keyframe(std::string_view text) {
 class MatchPair::Player : public std::enable_shared_from_this<MatchPair::Player> {
 public:
     Player(asio::io_context& ioc, MatchPair& pair, const LoadOptions& options, LoadStats& stats,
-           bool creator, std::uint64_t seed)
-        : pair_(pair), options_(options), stats_(stats), creator_(creator), ws_(ioc), think_(ioc),
-          think_rng_(seed ^ 0x9e3779b97f4a7c15ULL), strategy_(seed) {}
+           bool creator, int generation, std::uint64_t seed)
+        : pair_(pair), options_(options), stats_(stats), creator_(creator), generation_(generation),
+          ws_(ioc), think_(ioc), think_rng_(seed ^ 0x9e3779b97f4a7c15ULL), strategy_(seed) {}
 
     void start(std::string code) {
         code_ = std::move(code);
@@ -75,19 +75,27 @@ public:
 
     bool held() const { return open_ && seated_ && !broken_; }
 
+    // Leaves the room and closes the connection; a player still connecting closes once its
+    // connection opens.
     void close() {
-        if (!open_ || closing_) {
+        if (closing_) {
             return;
         }
         closing_ = true;
         think_.cancel();
-        send(proto::encode(proto::Leave{}));
+        if (open_) {
+            send(proto::encode(proto::Leave{}));
+        }
     }
 
 private:
     void on_connect(beast::error_code ec) {
         if (ec) {
             return fail();
+        }
+        if (closing_) {
+            beast::get_lowest_layer(ws_).close();
+            return;
         }
         beast::get_lowest_layer(ws_).expires_never();
         ws_.set_option(websocket::stream_base::timeout::suggested(beast::role_type::client));
@@ -103,9 +111,15 @@ private:
         }
         open_ = true;
         ws_.text(true);
+        read();
+        if (closing_) {
+            close_sent_ = true;
+            ws_.async_close(websocket::close_code::normal,
+                            [self = shared_from_this()](beast::error_code) {});
+            return;
+        }
         send(proto::encode(
             proto::Hello{proto::kProtocolVersion, creator_ ? "load-a" : "load-b", std::nullopt}));
-        read();
     }
 
     void read() {
@@ -159,6 +173,9 @@ private:
         // Lateness against the room's schedule: receive time minus the time the server's 60 Hz
         // schedule wanted this snapshot sent (due_ms, the server's steady clock; steady_clock
         // is CLOCK_MONOTONIC, shared by every process on this host).
+        if (!options_.keep_samples) {
+            return;
+        }
         const std::int64_t due_ms = snapshot_due_ms(text);
         if (due_ms >= 0 && stats_.measuring) {
             const double now_ms =
@@ -197,7 +214,7 @@ private:
             proto::CreateRoom create;
             create.rule_set = options_.rule_set;
             create.options.shot_clock_s = 0.0;
-            create.options.target_points = 1000; // the game lasts the whole run
+            create.options.target_points = options_.target_points;
             create.options.boards = 99;
             send(proto::encode(create));
         } else {
@@ -208,7 +225,7 @@ private:
     void on_message(const proto::RoomState& room, Clock::time_point) {
         if (creator_ && code_.empty()) {
             code_ = room.code;
-            pair_.on_room_code(room.code);
+            pair_.on_room_code(generation_, room.code);
         }
         seated_ = room.you >= 0 && room.seats.size() == 2 && room.seats[0].occupied &&
                   room.seats[1].occupied;
@@ -227,7 +244,14 @@ private:
             maybe_shoot();
         } else if (std::holds_alternative<proto::GameEndEvent>(event)) {
             end_moving(now);
-            send(proto::encode(proto::Rematch{}));
+            if (options_.replace) {
+                pair_.on_game_end(generation_);
+            } else {
+                if (creator_) {
+                    ++stats_.matches_finished;
+                }
+                send(proto::encode(proto::Rematch{}));
+            }
         }
     }
 
@@ -240,6 +264,7 @@ private:
 
     void on_message(const proto::Error& error, Clock::time_point) {
         ++stats_.errors;
+        ++stats_.errors_by_code[error.code];
         if (error.code == proto::code::kIllegalPlacement ||
             error.code == proto::code::kIllegalShot) {
             last_turn_ = -1;
@@ -330,6 +355,7 @@ private:
     LoadOptions options_;
     LoadStats& stats_;
     bool creator_;
+    int generation_; // of the pair's slot
     websocket::stream<beast::tcp_stream> ws_;
     asio::steady_timer think_;
     std::mt19937_64 think_rng_; // the spread of think delays
@@ -357,14 +383,44 @@ MatchPair::MatchPair(asio::io_context& ioc, const LoadOptions& options, LoadStat
 
 MatchPair::~MatchPair() = default;
 
+namespace {
+
+// The players' seeds of a generation: the first one's as they always were, later ones apart so
+// that a new match does not replay the previous one.
+std::uint64_t player_seed(std::uint64_t pair_seed, int generation, bool creator) {
+    const std::uint64_t later = static_cast<std::uint64_t>(generation) - 1U;
+    const std::uint64_t apart = 0x9e3779b97f4a7c15U;
+    return pair_seed * 2U + (creator ? 1U : 2U) + later * apart;
+}
+
+} // namespace
+
 void MatchPair::start() {
-    creator_ = std::make_shared<Player>(ioc_, *this, options_, stats_, true, seed_ * 2 + 1);
+    ++generation_;
+    ++stats_.matches_started;
+    shot_turn = -1;
+    joiner_.reset();
+    creator_ = std::make_shared<Player>(ioc_, *this, options_, stats_, true, generation_,
+                                        player_seed(seed_, generation_, true));
     creator_->start("");
 }
 
-void MatchPair::on_room_code(const std::string& code) {
-    joiner_ = std::make_shared<Player>(ioc_, *this, options_, stats_, false, seed_ * 2 + 2);
+void MatchPair::on_room_code(int generation, const std::string& code) {
+    if (generation != generation_) {
+        return;
+    }
+    joiner_ = std::make_shared<Player>(ioc_, *this, options_, stats_, false, generation_,
+                                       player_seed(seed_, generation_, false));
     joiner_->start(code);
+}
+
+void MatchPair::on_game_end(int generation) {
+    if (generation != generation_) {
+        return; // the other player's game_end of a match already replaced
+    }
+    ++stats_.matches_finished;
+    close();
+    start();
 }
 
 bool MatchPair::held() const {

@@ -11,6 +11,7 @@
 
 #include <chrono>
 #include <cstdint>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -24,9 +25,12 @@ struct LoadStats {
     std::int64_t messages = 0; // received, every kind
     std::int64_t bytes = 0;    // received payload bytes
     std::int64_t snapshots = 0;
-    std::int64_t shots = 0;    // shot_result received by the shooter
-    std::int64_t errors = 0;   // error messages received
-    std::int64_t failures = 0; // connections that broke or never opened
+    std::int64_t shots = 0;                             // shot_result received by the shooter
+    std::int64_t errors = 0;                            // error messages received
+    std::int64_t failures = 0;                          // connections that broke or never opened
+    std::map<std::string, std::int64_t> errors_by_code; // error messages received, by code
+    std::int64_t matches_started = 0;                   // pairs whose creator began to connect
+    std::int64_t matches_finished = 0; // games that ended (game_end), counted once per match
     // Per delta snapshot: receive time - the time the room's schedule had it due (due_ms), ms.
     std::vector<double> lag_ms;
     std::vector<std::int64_t> lag_due_ms; // due_ms of each lag_ms sample, for the timeline
@@ -45,9 +49,18 @@ struct LoadOptions {
     // Each delay is drawn uniformly from [think - think_spread, think + think_spread] (players
     // are not in step); 0: every delay is exactly `think`.
     std::chrono::milliseconds think_spread{0};
+    int target_points = 1000; // of each room: 1000 makes the game last a whole run
+    // At the end of a game both players leave and a new match takes its place (false: they
+    // play a rematch in the same room).
+    bool replace = false;
+    // Keep the per-snapshot lag samples (about 24 bytes per snapshot); false for long runs,
+    // whose lag figures are then 0.
+    bool keep_samples = true;
 };
 
 // Two players of one room. The creator makes the room; the joiner starts once it has a code.
+// With LoadOptions::replace the pair is a slot: when its game ends both players leave and two
+// new players start a new match in a new room (a new generation).
 class MatchPair {
 public:
     MatchPair(boost::asio::io_context& ioc, const LoadOptions& options, LoadStats& stats,
@@ -62,7 +75,8 @@ public:
     Clock::time_point shot_sent_at{};
     int shot_turn = -1;
 
-    void on_room_code(const std::string& code); // from the creator
+    void on_room_code(int generation, const std::string& code); // from the creator
+    void on_game_end(int generation);                           // from either player
     class Player;
 
 private:
@@ -72,6 +86,7 @@ private:
     std::shared_ptr<Player> creator_;
     std::shared_ptr<Player> joiner_;
     std::uint64_t seed_;
+    int generation_ = 0; // matches started in this slot
 };
 
 } // namespace carrom::load

@@ -1,13 +1,13 @@
 // carrom-load: drives N concurrent two-player matches against one carrom-server on 127.0.0.1
 // and measures what docs/server-load.md reports: matches held, messages per second, snapshot lag
 // p50/p99, bytes per client per second while pieces move, server memory per match and CPU.
-// Bounded: at most 5,000 matches and 600 s of measurement; 127.0.0.1 only.
+// Bounded: at most 5,000 matches and 7,200 s of measurement; 127.0.0.1 only.
 #include "load_client.hpp"
+#include "load_process.hpp"
+
+#include "carrom/proto/limits.hpp"
 
 #include <CLI/CLI.hpp>
-#include <boost/asio/connect.hpp>
-#include <boost/asio/read.hpp>
-#include <boost/asio/write.hpp>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -28,139 +28,12 @@
 namespace {
 
 using namespace carrom;
+using load::cpu_seconds;
+using load::fetch_metrics;
+using load::rss_kib;
+using load::spawn_server;
 namespace asio = boost::asio;
 using tcp = asio::ip::tcp;
-
-// --- the server process ---------------------------------------------------------------------
-
-struct SpawnedServer {
-    pid_t pid = -1;
-    std::uint16_t port = 0;
-};
-
-// Starts the server on 127.0.0.1 with an ephemeral port and reads its "listening on" line.
-std::optional<SpawnedServer> spawn_server(const std::string& binary,
-                                          const std::vector<std::string>& extra) {
-    int out[2];
-    if (pipe(out) != 0) {
-        return std::nullopt;
-    }
-    const pid_t pid = fork();
-    if (pid < 0) {
-        return std::nullopt;
-    }
-    if (pid == 0) {
-        dup2(out[1], STDOUT_FILENO);
-        close(out[0]);
-        close(out[1]);
-        // Every load client connects from 127.0.0.1.
-        std::vector<std::string> args = {
-            binary,   "--host",      "127.0.0.1", "--port",
-            "0",      "--log-level", "warn",      "--max-connections-per-address",
-            "1000000"};
-        // No match store unless a --server-arg names one (--data PATH).
-        if (std::find(extra.begin(), extra.end(), "--data") == extra.end()) {
-            args.insert(args.end(), {"--data", "none"});
-        }
-        args.insert(args.end(), extra.begin(), extra.end());
-        std::vector<char*> argv;
-        for (auto& a : args) {
-            argv.push_back(a.data());
-        }
-        argv.push_back(nullptr);
-        execv(binary.c_str(), argv.data());
-        _exit(127);
-    }
-    close(out[1]);
-    FILE* in = fdopen(out[0], "r");
-    char line[256];
-    SpawnedServer server{pid, 0};
-    while (in && std::fgets(line, sizeof line, in)) {
-        unsigned port = 0;
-        if (std::sscanf(line, "listening on 127.0.0.1:%u", &port) == 1) {
-            server.port = static_cast<std::uint16_t>(port);
-            break;
-        }
-    }
-    // Keep draining its stdout so the server never blocks on a full pipe.
-    std::thread([in] {
-        char sink[256];
-        while (in && std::fgets(sink, sizeof sink, in)) {
-        }
-        if (in) {
-            std::fclose(in);
-        }
-    }).detach();
-    if (server.port == 0) {
-        kill(pid, SIGKILL);
-        waitpid(pid, nullptr, 0);
-        return std::nullopt;
-    }
-    return server;
-}
-
-// VmRSS of a process, KiB (0 if unreadable).
-long rss_kib(pid_t pid) {
-    std::ifstream status("/proc/" + std::to_string(pid) + "/status");
-    std::string key;
-    while (status >> key) {
-        if (key == "VmRSS:") {
-            long value = 0;
-            status >> value;
-            return value;
-        }
-        status.ignore(1 << 12, '\n');
-    }
-    return 0;
-}
-
-// utime + stime of a process, seconds.
-double cpu_seconds(pid_t pid) {
-    std::ifstream stat("/proc/" + std::to_string(pid) + "/stat");
-    std::string text((std::istreambuf_iterator<char>(stat)), std::istreambuf_iterator<char>());
-    const auto close = text.rfind(')');
-    if (close == std::string::npos) {
-        return 0.0;
-    }
-    std::istringstream fields(text.substr(close + 2));
-    std::string field;
-    double ticks = 0.0;
-    for (int i = 3; i <= 15 && fields >> field; ++i) {
-        if (i == 14 || i == 15) {
-            ticks += std::stod(field);
-        }
-    }
-    return ticks / static_cast<double>(sysconf(_SC_CLK_TCK));
-}
-
-// GET /metrics as name -> value (histogram buckets keep their label in the name).
-std::map<std::string, double> fetch_metrics(std::uint16_t port) {
-    std::map<std::string, double> values;
-    try {
-        asio::io_context ioc;
-        tcp::socket socket(ioc);
-        socket.connect({asio::ip::make_address("127.0.0.1"), port});
-        const std::string request =
-            "GET /metrics HTTP/1.1\r\nHost: 127.0.0.1\r\nConnection: close\r\n\r\n";
-        asio::write(socket, asio::buffer(request));
-        std::string response;
-        boost::system::error_code ec;
-        asio::read(socket, asio::dynamic_buffer(response), ec);
-        std::istringstream lines(response.substr(response.find("\r\n\r\n") + 4));
-        std::string line;
-        while (std::getline(lines, line)) {
-            if (line.empty() || line[0] == '#') {
-                continue;
-            }
-            const auto space = line.rfind(' ');
-            if (space != std::string::npos) {
-                values[line.substr(0, space)] = std::stod(line.substr(space + 1));
-            }
-        }
-    } catch (const std::exception&) {
-    }
-    return values;
-}
 
 // The server's own snapshot send lag: the bucket bound holding quantile q of the increase.
 std::string server_lag_quantile(const std::map<std::string, double>& before,
@@ -239,6 +112,27 @@ double load_average() {
     return value;
 }
 
+// The running totals of one shard, for the progress lines.
+struct Totals {
+    std::int64_t held = 0;
+    std::int64_t matches_started = 0;
+    std::int64_t matches_finished = 0;
+    std::int64_t errors = 0;
+    std::int64_t failures = 0;
+    std::int64_t shots = 0;
+    std::int64_t messages = 0;
+    Totals& operator+=(const Totals& o) {
+        held += o.held;
+        matches_started += o.matches_started;
+        matches_finished += o.matches_finished;
+        errors += o.errors;
+        failures += o.failures;
+        shots += o.shots;
+        messages += o.messages;
+        return *this;
+    }
+};
+
 void raise_fd_limit() {
     rlimit limit{};
     if (getrlimit(RLIMIT_NOFILE, &limit) == 0) {
@@ -264,6 +158,11 @@ int main(int argc, char** argv) {
     std::uint64_t seed = 1;
     std::string json_out;
     int client_threads = 2;
+    int target_points = 1000;
+    bool replace = false;
+    bool no_samples = false;
+    std::string progress_out;
+    double progress_s = 60.0;
 
     CLI::App app{"carrom-load: N concurrent bot matches against a carrom-server on 127.0.0.1"};
     app.option_defaults()->always_capture_default();
@@ -280,7 +179,7 @@ int main(int argc, char** argv) {
         ->check(CLI::Range(0.0, 120.0));
     app.add_option("--warmup", warmup_s, "Seconds after the ramp before measuring")
         ->check(CLI::Range(0.0, 120.0));
-    app.add_option("--duration", duration_s, "Seconds measured")->check(CLI::Range(1.0, 600.0));
+    app.add_option("--duration", duration_s, "Seconds measured")->check(CLI::Range(1.0, 7200.0));
     app.add_option("--think-ms", think_ms,
                    "Delay before each shot, ms (0: the board is nearly "
                    "always moving)")
@@ -294,6 +193,17 @@ int main(int argc, char** argv) {
     app.add_option("--client-threads", client_threads, "Threads for the clients")
         ->check(CLI::Range(1, 16));
     app.add_option("--json-out", json_out, "Also write the JSON result here");
+    app.add_option("--target-points", target_points, "Points that win a game")
+        ->check(CLI::Range(1, proto::kMaxTargetPoints));
+    app.add_flag("--replace", replace,
+                 "When a game ends both players leave and a new match starts in its place "
+                 "(default: a rematch in the same room)");
+    app.add_flag("--no-samples", no_samples,
+                 "Keep no per-snapshot lag samples (long runs); the lag figures are then 0");
+    app.add_option("--progress-out", progress_out,
+                   "Append a JSON line of running totals here every --progress-s seconds");
+    app.add_option("--progress-s", progress_s, "Seconds between progress lines")
+        ->check(CLI::Range(1.0, 3600.0));
     CLI11_PARSE(app, argc, argv);
     if (think_spread_ms > think_ms) {
         std::cerr << "--think-spread-ms must not exceed --think-ms.\n";
@@ -324,6 +234,9 @@ int main(int argc, char** argv) {
     proto::parse(rule_set_name, options.rule_set);
     options.think = std::chrono::milliseconds(think_ms);
     options.think_spread = std::chrono::milliseconds(think_spread_ms);
+    options.target_points = target_points;
+    options.replace = replace;
+    options.keep_samples = !no_samples;
     // Shards: each client thread runs its own io_context with its own matches and stats, so
     // nothing is shared between threads.
     struct Shard {
@@ -374,7 +287,40 @@ int main(int argc, char** argv) {
         });
     }
     const auto start = load::Clock::now();
-    std::this_thread::sleep_for(std::chrono::duration<double>(duration_s));
+    const auto end = start + std::chrono::duration_cast<load::Clock::duration>(
+                                 std::chrono::duration<double>(duration_s));
+    if (!progress_out.empty()) {
+        std::ofstream progress(progress_out, std::ios::app);
+        const auto every = std::chrono::duration_cast<load::Clock::duration>(
+            std::chrono::duration<double>(progress_s));
+        for (auto next = start + every; next <= end; next += every) {
+            std::this_thread::sleep_until(next);
+            Totals totals;
+            for (auto& shard : shards) {
+                totals += on_io(shard->ioc, [&] {
+                    const auto& st = shard->stats;
+                    return Totals{static_cast<std::int64_t>(held_in(*shard)),
+                                  st.matches_started,
+                                  st.matches_finished,
+                                  st.errors,
+                                  st.failures,
+                                  st.shots,
+                                  st.messages};
+                });
+            }
+            const nlohmann::json line = {
+                {"t_s", std::chrono::duration<double>(load::Clock::now() - start).count()},
+                {"held", totals.held},
+                {"matches_started", totals.matches_started},
+                {"matches_finished", totals.matches_finished},
+                {"errors_received", totals.errors},
+                {"client_failures", totals.failures},
+                {"shots", totals.shots},
+                {"messages", totals.messages}};
+            progress << line.dump() << std::endl;
+        }
+    }
+    std::this_thread::sleep_until(end);
     const long rss_loaded = pid > 0 ? rss_kib(pid) : 0;
     std::int64_t held = 0;
     load::LoadStats measured;
@@ -390,6 +336,11 @@ int main(int argc, char** argv) {
         measured.shots += stats.shots;
         measured.errors += stats.errors;
         measured.failures += stats.failures;
+        measured.matches_started += stats.matches_started;
+        measured.matches_finished += stats.matches_finished;
+        for (const auto& [code, count] : stats.errors_by_code) {
+            measured.errors_by_code[code] += count;
+        }
         measured.lag_ms.insert(measured.lag_ms.end(), stats.lag_ms.begin(), stats.lag_ms.end());
         measured.lag_due_ms.insert(measured.lag_due_ms.end(), stats.lag_due_ms.begin(),
                                    stats.lag_due_ms.end());
@@ -432,6 +383,11 @@ int main(int argc, char** argv) {
         {"think_ms", think_ms},
         {"think_spread_ms", think_spread_ms},
         {"client_threads", client_threads},
+        {"target_points", target_points},
+        {"replace", replace},
+        {"matches_started", measured.matches_started},
+        {"matches_finished", measured.matches_finished},
+        {"errors_by_code", measured.errors_by_code},
         {"duration_s", elapsed},
         {"held_at_start", held_before},
         {"held_at_end", held},
@@ -476,5 +432,6 @@ int main(int argc, char** argv) {
     if (!json_out.empty()) {
         std::ofstream(json_out) << out.dump(2) << "\n";
     }
-    return measured.failures == 0 && held == matches ? 0 : 1;
+    // With --replace a slot may be between two matches at the end (not yet seated).
+    return measured.failures == 0 && (replace || held == matches) ? 0 : 1;
 }

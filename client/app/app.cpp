@@ -10,6 +10,7 @@
 #include "carrom/client/screen_mapping.hpp"
 #include "draw_util.hpp"
 #include "font.hpp"
+#include "frame_log.hpp"
 #include "game_over_panel.hpp"
 #include "hud_painter.hpp"
 #include "lobby_view.hpp"
@@ -171,6 +172,7 @@ private:
     std::optional<AutoPlayer> auto_player_; // --autoplay
     std::optional<proto::RoomState> room_;  // the newest room state (what --autoplay plays from)
     int auto_turn_ = -1;                    // the turn --autoplay last aimed in
+    FrameLog frame_log_;                    // --frame-log
 };
 
 void App::handle_event(const sf::Event& e) {
@@ -260,7 +262,8 @@ void App::handle_match_input(const sf::Event& e) {
         if (session_.send_game(shoot)) {
             shot_sent_turn_ = turn;
             aim_.end_turn();
-            model_.predict(shoot, clock_.now()); // drawn from the next frame on
+            const bool predicted = model_.predict(shoot, clock_.now()); // drawn from next frame
+            frame_log_.shoot(shoot, predicted);
         }
     }
 }
@@ -579,6 +582,12 @@ int App::run() {
         std::cerr << "carrom-client: could not open a window (is DISPLAY set?)\n";
         return 1;
     }
+    if (!options_.frame_log_path.empty()) {
+        if (auto problem = frame_log_.open(options_.frame_log_path)) {
+            std::cerr << "carrom-client: " << *problem << "\n";
+            return 2;
+        }
+    }
     if (!fixed_step(options_)) {
         window_.setVerticalSyncEnabled(true);
         // A screenshot of a networked match counts frames at 60 per second of real time.
@@ -604,6 +613,9 @@ int App::run() {
         update(now);
         autoplay();
         draw(now);
+        if (model_.view().in_room) {
+            frame_log_.frame(frame, model_, bodies_, session_.phase());
+        }
         ++frame;
         if (final_state_due()) {
             const int code = write_final_state();

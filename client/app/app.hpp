@@ -41,6 +41,8 @@ struct AppOptions {
     // replay time to start at, paused.
     double replay_speed = 1.0;
     double replay_at_s = -1.0;
+    // Non-empty: write each frame drawn in a room and each shot sent there (frame_log.hpp).
+    std::string frame_log_path;
 };
 
 // Runs until the window closes; returns the process exit code.

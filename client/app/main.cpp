@@ -92,6 +92,9 @@ int main(int argc, char** argv) {
     cli.add_option("--final-state", options.final_state_path,
                    "When the game is over and drawn at rest, write its final state (room, "
                    "winner, reason, scores, pieces) as JSON to this file and exit");
+    cli.add_option("--frame-log", options.frame_log_path,
+                   "Write each frame drawn in a room (positions, shot time, playout state) and "
+                   "each shot sent as JSON lines to this file (docs/client.md)");
     std::string replay;
     auto* replay_opt = cli.add_option(
         "--replay", replay,

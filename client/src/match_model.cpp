@@ -467,6 +467,18 @@ std::vector<RenderedBody> MatchModel::render_predicted(double t_s, double local_
     return prediction_.draw(t_s, local_s, &server);
 }
 
+MatchModel::ShotTime MatchModel::shot_time(double continuous_s) const {
+    ShotTime best;
+    double best_offset = 0.0;
+    for (const auto& [turn, offset] : turn_offsets_) {
+        if (offset <= continuous_s && (best.turn < 0 || offset >= best_offset)) {
+            best = {turn, continuous_s - offset};
+            best_offset = offset;
+        }
+    }
+    return best;
+}
+
 std::vector<SoundCue> MatchModel::take_sounds() {
     std::vector<SoundCue> out;
     out.swap(due_);

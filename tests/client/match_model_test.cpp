@@ -124,6 +124,37 @@ TEST(MatchModel, SnapshotsMoveTheBoardAndPocketsAnimate) {
     EXPECT_EQ(m.buffer().newest_seq(), 3u);
 }
 
+TEST(MatchModel, ShotTimeNamesTheShotATimeFallsInAndTheTimeSinceItStarted) {
+    MatchModel m{PhysicsConfig{}};
+    m.handle(room(), 0.0);
+    EXPECT_EQ(m.shot_time(100.0).turn, -1); // the board at rest starts no shot
+    proto::Snapshot s;
+    s.seq = 1;
+    s.turn = 4;
+    s.t_s = 0.1; // the shot's first snapshot to arrive
+    s.bodies = {{19, {300, 520}, {0, -600}}};
+    m.handle(s, 1.0);
+    s.seq = 2;
+    s.t_s = 0.5;
+    m.handle(s, 1.4);
+    const MatchModel::ShotTime late = m.shot_time(100.0);
+    EXPECT_EQ(late.turn, 4);
+    const double start4 = 100.0 - late.t_s; // turn 4's t = 0 on the continuous timeline
+    EXPECT_EQ(m.shot_time(start4 - 1e-6).turn, -1);
+    EXPECT_EQ(m.shot_time(start4 + 0.25).turn, 4);
+    EXPECT_NEAR(m.shot_time(start4 + 0.25).t_s, 0.25, 1e-9);
+    // The next shot: times from its start on belong to it, earlier ones still to turn 4.
+    s.seq = 3;
+    s.turn = 5;
+    s.t_s = 0.0;
+    m.handle(s, 10.0);
+    const double start5 = 100.0 - m.shot_time(100.0).t_s;
+    EXPECT_EQ(m.shot_time(100.0).turn, 5);
+    EXPECT_GT(start5, start4 + 0.5);
+    EXPECT_EQ(m.shot_time(start5 - 1e-6).turn, 4);
+    EXPECT_NEAR(m.shot_time(start5 - 1e-6).t_s, start5 - 1e-6 - start4, 1e-9);
+}
+
 TEST(MatchModel, PhysicsEventsBecomeSoundsWhenTheirTimeIsRendered) {
     MatchModel m{PhysicsConfig{}};
     m.handle(room(), 0.0);

@@ -1,12 +1,15 @@
 // The carrom-load executable end to end: it starts its own carrom-server on 127.0.0.1, drives a
 // few bot matches for a short window and prints the figures of docs/server-load.md as JSON.
 // Bounded: 4 matches, a 3 s window, the server at 4x speed so that shots end inside it; the run
-// ends by itself in about 6 s.
+// ends by itself in about 6 s. The --replace test: 3 matches for 8 s at 8x speed, about 10 s.
 #include "harness.hpp"
+#include "support/read_file.hpp"
+#include "support/temp_dir.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <sstream>
 #include <string>
 
 namespace carrom::integration {
@@ -54,6 +57,48 @@ TEST(LoadCli, DrivesMatchesAndReportsTheirFigures) {
     }
     EXPECT_GT(in_timeline, 0);
     EXPECT_LE(in_timeline, out["lag_samples"].get<long>());
+}
+
+// --replace (what scripts/soak.sh runs): when a game ends both players leave and a new match
+// takes its place, so the server sees rooms open, fill, end and close all along; the progress
+// file gets a line of running totals every --progress-s seconds.
+TEST(LoadCli, ReplacesFinishedMatchesAndWritesProgressLines) {
+    const test_support::TempDir dir("carrom_load_replace");
+    const std::string progress = dir.file("progress.jsonl");
+    const CommandRun ran = run_command(
+        load_command("--matches 3 --ramp 0 --warmup 0 --duration 8 --think-ms 0 --seed 7 "
+                     "--target-points 1 --replace --no-samples --progress-s 2 --progress-out " +
+                     progress + " --server-arg=--time-scale=8"));
+    ASSERT_EQ(ran.exit, 0) << ran.out;
+    const auto out = nlohmann::json::parse(ran.out);
+    EXPECT_EQ(out["replace"], true);
+    EXPECT_EQ(out["target_points"], 1);
+    EXPECT_EQ(out["client_failures"], 0);
+    EXPECT_EQ(out["errors_received"], 0) << out["errors_by_code"].dump();
+    EXPECT_EQ(out["server_exit"], 0);
+    EXPECT_EQ(out["lag_samples"], 0); // --no-samples
+    const long finished = out["matches_finished"];
+    EXPECT_GE(finished, 2); // a game to 1 point ends at the first coin pocketed
+    // Every finished match started a new one in its slot.
+    EXPECT_EQ(out["matches_started"].get<long>(), 3 + finished);
+
+    std::istringstream lines(test_support::read_file(progress));
+    std::string line;
+    std::vector<nlohmann::json> rows;
+    while (std::getline(lines, line)) {
+        rows.push_back(nlohmann::json::parse(line));
+    }
+    ASSERT_EQ(rows.size(), 4u); // at 2, 4, 6 and 8 s
+    long previous = 0;
+    for (const auto& row : rows) {
+        EXPECT_EQ(row["errors_received"], 0);
+        EXPECT_EQ(row["client_failures"], 0);
+        EXPECT_LE(row["held"].get<long>(), 3);
+        EXPECT_GE(row["matches_finished"].get<long>(), previous);
+        previous = row["matches_finished"];
+        EXPECT_EQ(row["matches_started"].get<long>(), 3 + previous);
+    }
+    EXPECT_LE(previous, finished);
 }
 
 TEST(LoadCli, RejectsASpreadLargerThanThePause) {

@@ -2,6 +2,7 @@
 // as JSON. Bad input prints {"error": {"code", "path", "message"}} on stderr and exits 2.
 // See docs/carrom-sim.md.
 
+#include "frame_error_mode.hpp"
 #include "replay_mode.hpp"
 #include "rules_mode.hpp"
 #include "sim_cli.hpp"
@@ -95,6 +96,7 @@ struct CliArgs {
     bool no_events = false;
     bool rules = false;
     bool replay = false;
+    std::string frames_path; // --frame-error
 };
 
 void add_flags(CLI::App& app, CliArgs& args) {
@@ -121,9 +123,15 @@ void add_flags(CLI::App& app, CliArgs& args) {
                  "exact: check overlap, cushions and kinetic energy at every event time");
     auto* rules =
         app.add_flag("--rules", args.rules, "rules mode: read a rules question instead of a scene");
-    app.add_flag("--replay", args.replay,
-                 "replay mode: verify a match journal; exit 1 if an outcome differs")
-        ->excludes(rules);
+    auto* replay =
+        app.add_flag("--replay", args.replay,
+                     "replay mode: verify a match journal; exit 1 if an outcome differs");
+    replay->excludes(rules);
+    app.add_option("--frame-error", args.frames_path,
+                   "frame error mode: compare a carrom-client --frame-log FILE with the exact "
+                   "trajectories of the journal given as the input")
+        ->excludes(rules)
+        ->excludes(replay);
 }
 
 int simulate(CliArgs& args) {
@@ -166,6 +174,10 @@ int run(int argc, char** argv) {
     args.at_given = app.count("--at") > 0;
     if (args.replay) {
         return run_replay(args.path, args.pretty);
+    }
+    if (!args.frames_path.empty()) {
+        return carrom::run_frame_error_mode(args.frames_path, args.path, std::cout, std::cerr,
+                                            args.pretty);
     }
     return args.rules ? run_rules(args.path) : simulate(args);
 }

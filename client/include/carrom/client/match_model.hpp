@@ -120,6 +120,13 @@ public:
     const ShotPrediction& prediction() const { return prediction_; }
     // The continuous time of the last render().
     double rendered_time_s() const { return last_render_s_; }
+    // The shot a continuous time falls in: the turn whose shot started last at or before it
+    // (turn -1 when none is known) and the time since that shot's t = 0 (its snapshot time).
+    struct ShotTime {
+        int turn = -1;
+        double t_s = 0.0;
+    };
+    ShotTime shot_time(double continuous_s) const;
 
 private:
     // The server's motion model (room_state "motion") for the buffer and the playout clock.
