@@ -598,6 +598,13 @@ test('with contact snapshots a pocket fall starts at the newer state, where the 
   assert.equal(fall.pocket, geometry.pockets[3]);
   const r = find(b.sample(0.09), 3);
   assert.ok(r.falling && r.scale < 1);
+  // Until its pocketing instant it moves on along the free motion.
+  for (const t of [0.01, 0.04, 0.079]) {
+    const drawn = find(b.sample(t), 3);
+    assert.ok(drawn && !drawn.falling, `drawn at ${t}`);
+    near(drawn.x, freeAt(a, t).x, 1e-9);
+    near(drawn.y, freeAt(a, t).y, 1e-9);
+  }
   // Without contact snapshots it starts at the older state, from its position.
   const old = new InterpolationBuffer(geometry);
   old.push(snap(1, 0, true, [stateBody(3, a)]));

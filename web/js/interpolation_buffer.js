@@ -189,8 +189,15 @@ export class InterpolationBuffer {
   }
 
   bodyBetween(a, b, bb, t) {
-    if (bb.pocketed) return this.fallingBody(bb.id, t);
     const ba = findBody(a.bodies, bb.id);
+    if (bb.pocketed) {
+      if (this.everyChangeSent && ba !== null && !ba.pocketed && t < b.time) {
+        // Pocketed at b's instant: until then it moves on freely from a.
+        const p = freeMotion(ba.x, ba.y, ba.vx, ba.vy, this.config.dampingPerS, t - a.time);
+        return rendered(bb, p.x, p.y);
+      }
+      return this.fallingBody(bb.id, t);
+    }
     if (ba === null) return rendered(bb, bb.x, bb.y); // appears with the newer state
     if (ba.pocketed) return null; // back on the board from the newer state on
     const gap = b.time - a.time;
