@@ -154,6 +154,15 @@ void MatchModel::on_room_state(const proto::RoomState& m, double local_s) {
     view_.winner = m.winner;
     view_.deadline_ms = m.shot_clock_deadline_ms;
     apply_motion(m.motion);
+    if (prediction_.active() && m.turn != prediction_.turn()) {
+        // The predicted stroke is over (its last keyframe may have been lost with a connection
+        // that a resume replaced): end the prediction once its blends are done.
+        if (prediction_.confirmed()) {
+            prediction_.mark_server_done();
+        } else {
+            drop_unconfirmed_prediction();
+        }
+    }
     const bool over_on_arrival = m.phase == proto::Phase::GameOver && !view_.result;
     if (m.phase != proto::Phase::GameOver) {
         view_.result.reset(); // a new game (a rematch)

@@ -145,12 +145,12 @@ void Room::stream_tick(std::int64_t now_ms) {
     Streaming& s = *streaming_;
     counters_.observe_snapshot_lag_ms(static_cast<double>(now_ms - s.next_ms));
     const double t_s = config_.time_scale * static_cast<double>(now_ms - s.start_ms) / 1000.0;
-    // A delta at every change of motion since the last snapshot, at its own instant, then one at
-    // t_s when the regular rate has one due (or the shot ends).
     // The first whole millisecond at or after a stream time: when its delta is due.
     const auto due_ms = [&](double t) {
         return s.start_ms + static_cast<std::int64_t>(std::ceil(t / config_.time_scale * 1000.0));
     };
+    // A delta at every change of motion since the last snapshot, at its own instant, then one at
+    // t_s when the regular rate has one due (or the shot ends).
     if (config_.contact_snapshots) {
         while (const std::optional<double> change = s.stream.next_motion_change(t_s)) {
             if (send_stream_step(*change, due_ms(*change))) {

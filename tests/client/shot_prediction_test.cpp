@@ -342,5 +342,32 @@ TEST(ShotPrediction, PredictedSoundsPlayOnceWhenTheServersEventsArrive) {
     EXPECT_EQ(sounds, expected);
 }
 
+// The link breaks while the predicted stroke moves: its last deltas and keyframe are lost, and
+// the resume brings the room state of the next turn (a new welcome, then room_state). The
+// prediction ends with it, so the board is no longer taken for moving and the player can aim.
+TEST(ShotPrediction, AResumeAfterTheStrokeEndedEndsThePrediction) {
+    const Server s = play(kBreak, true);
+    Client c;
+    start(c, s);
+    ASSERT_TRUE(c.model.predict(shoot_of(s, kBreak), kShootAt));
+    std::vector<Delivery> inbox = stream(s, std::nullopt, {});
+    inbox.resize(inbox.size() / 3); // the rest went down with the connection
+    c.inbox = inbox;
+    const double resumed_at = kShootAt + s.end_s + 3.0;
+    proto::RoomState after = room_state(s.result.state);
+    after.you = s.match.turn_seat;
+    c.inbox.push_back({resumed_at, proto::ServerMessage{proto::Welcome{}}});
+    c.inbox.push_back({resumed_at, proto::ServerMessage{after}});
+    for (double t = kShootAt + kFrame; t < resumed_at; t += kFrame) {
+        c.frame(t);
+    }
+    ASSERT_TRUE(c.model.prediction().active()); // still waiting for the stroke's end
+    for (double t = resumed_at; t < resumed_at + 0.5; t += kFrame) {
+        c.frame(t);
+    }
+    EXPECT_FALSE(c.model.prediction().active());
+    EXPECT_FALSE(c.model.animating());
+}
+
 } // namespace
 } // namespace carrom::client
