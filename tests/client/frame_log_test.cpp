@@ -32,16 +32,6 @@ using namespace std::chrono_literals;
 
 constexpr int kStrikerId = 19;
 
-std::string log_of(const ChildProcess& p) {
-    std::string out;
-    for (auto s : {ChildProcess::Stream::Out, ChildProcess::Stream::Err}) {
-        for (const std::string& line : p.lines(s)) {
-            out += line + "\n";
-        }
-    }
-    return out;
-}
-
 bool draws_striker(const Json& frame) {
     for (const Json& b : frame["bodies"]) {
         if (b[0] == kStrikerId) {
@@ -65,7 +55,7 @@ TEST(FrameLog, RecordsEveryFrameOfARealGameAndItsFinalBoards) {
          "--shot-clock",  "0",         "--strategy",      "random", "--seed",   "3",
          "--timeout",     "150"});
     const auto room = bot.wait_line(ChildProcess::Stream::Err, "room ", Clock::now() + 15s);
-    ASSERT_TRUE(room) << log_of(bot);
+    ASSERT_TRUE(room) << bot.output();
     const std::string code = room->substr(5);
     const std::string frames_path = dir.file("frames.jsonl");
     std::vector<std::string> argv;
@@ -98,8 +88,8 @@ TEST(FrameLog, RecordsEveryFrameOfARealGameAndItsFinalBoards) {
     ChildProcess client(
         argv, {std::string("ASAN_OPTIONS=") + (asan != nullptr ? asan : "") + ":detect_leaks=0"});
     const auto exit = client.wait_exit(Clock::now() + 150s);
-    ASSERT_TRUE(exit) << log_of(client);
-    ASSERT_EQ(*exit, 0) << log_of(client);
+    ASSERT_TRUE(exit) << client.output();
+    ASSERT_EQ(*exit, 0) << client.output();
 
     std::ifstream in(frames_path);
     ASSERT_TRUE(in);

@@ -27,16 +27,6 @@ std::string after(const std::optional<std::string>& line, const std::string& pre
     return line ? line->substr(prefix.size()) : std::string();
 }
 
-std::string log_of(const ChildProcess& p) {
-    std::string out;
-    for (auto s : {ChildProcess::Stream::Out, ChildProcess::Stream::Err}) {
-        for (const std::string& line : p.lines(s)) {
-            out += line + "\n";
-        }
-    }
-    return out;
-}
-
 TEST(ReconnectMatch, ClientResumesThroughACutAndFinishesTheGame) {
     const auto dir = std::filesystem::path(::testing::TempDir()) /
                      ("carrom_reconnect_match_" + std::to_string(getpid()));
@@ -55,7 +45,7 @@ TEST(ReconnectMatch, ClientResumesThroughACutAndFinishesTheGame) {
          "--target", "127.0.0.1:" + server_port, "--control", control});
     const std::string port =
         after(proxy.wait_line(ChildProcess::Stream::Out, prefix, Clock::now() + 15s), prefix);
-    ASSERT_FALSE(port.empty()) << log_of(proxy);
+    ASSERT_FALSE(port.empty()) << proxy.output();
     const std::string url = "ws://127.0.0.1:" + port;
     ChildProcess bot({CARROM_BOT_PATH,
                       "--url",
@@ -79,7 +69,7 @@ TEST(ReconnectMatch, ClientResumesThroughACutAndFinishesTheGame) {
                       "25"});
     const std::string code =
         after(bot.wait_line(ChildProcess::Stream::Err, "room ", Clock::now() + 15s), "room ");
-    ASSERT_EQ(code.size(), 6u) << log_of(bot);
+    ASSERT_EQ(code.size(), 6u) << bot.output();
     const std::string final_state = (dir / "final.json").string();
     std::vector<std::string> argv;
     if (std::getenv("DISPLAY") == nullptr) {
@@ -97,7 +87,7 @@ TEST(ReconnectMatch, ClientResumesThroughACutAndFinishesTheGame) {
     ChildProcess client(
         argv, {std::string("ASAN_OPTIONS=") + (asan != nullptr ? asan : "") + ":detect_leaks=0"});
     ASSERT_TRUE(client.wait_line(ChildProcess::Stream::Out, "room ", Clock::now() + 30s))
-        << log_of(client);
+        << client.output();
     std::this_thread::sleep_for(1s); // the match is under way
     {
         std::ofstream out(control + ".tmp");
@@ -108,15 +98,15 @@ TEST(ReconnectMatch, ClientResumesThroughACutAndFinishesTheGame) {
     ASSERT_TRUE(cut);
     EXPECT_EQ(*cut, "cut 2 connections for 3.0 s"); // the client's and the bot's
     const auto exit = client.wait_exit(Clock::now() + 120s);
-    ASSERT_TRUE(exit) << log_of(client);
-    EXPECT_EQ(*exit, 0) << log_of(client);
+    ASSERT_TRUE(exit) << client.output();
+    EXPECT_EQ(*exit, 0) << client.output();
     const auto summary_line = bot.wait_line(ChildProcess::Stream::Out, "{", Clock::now() + 20s);
-    ASSERT_TRUE(summary_line) << log_of(bot) << "\nThe client said:\n" << log_of(client);
+    ASSERT_TRUE(summary_line) << bot.output() << "\nThe client said:\n" << client.output();
     const auto summary = nlohmann::json::parse(*summary_line, nullptr, false);
     EXPECT_EQ(summary["ok"], true) << *summary_line;
     EXPECT_GE(summary["resumes"].get<int>(), 1);
     std::ifstream in(final_state);
-    ASSERT_TRUE(in) << "no final state; the client said:\n" << log_of(client);
+    ASSERT_TRUE(in) << "no final state; the client said:\n" << client.output();
     const auto state = nlohmann::json::parse(in, nullptr, false);
     EXPECT_EQ(state["room"], code);
     EXPECT_EQ(state["you"], 1);

@@ -97,20 +97,10 @@ bool wait_for(const ServerProcess& server, Moment moment, Clock::time_point dead
     return false;
 }
 
-std::string log_of(const ChildProcess& bot) {
-    std::string out;
-    for (auto stream : {ChildProcess::Stream::Out, ChildProcess::Stream::Err}) {
-        for (const auto& line : bot.lines(stream)) {
-            out += line + "\n";
-        }
-    }
-    return out;
-}
-
 // The bot's exit code and its JSON summary (stdout's last line).
 nlohmann::json finish(ChildProcess& bot, Clock::time_point deadline) {
     const auto exit = bot.wait_exit(deadline);
-    EXPECT_EQ(exit.value_or(-1), 0) << log_of(bot);
+    EXPECT_EQ(exit.value_or(-1), 0) << bot.output();
     const auto& out = bot.lines(ChildProcess::Stream::Out);
     return out.empty() ? nlohmann::json() : nlohmann::json::parse(out.back(), nullptr, false);
 }
@@ -131,11 +121,11 @@ void kill_and_recover(Moment moment, const std::vector<std::string>& play) {
         start_bot(server, "Ann", "3", play,
                   {"--create", "--rule-set", "icf", "--boards", "1", "--shot-clock", "0"});
     const auto room = ann.wait_line(ChildProcess::Stream::Err, "room ", Clock::now() + 15s);
-    ASSERT_TRUE(room) << log_of(ann);
+    ASSERT_TRUE(room) << ann.output();
     ChildProcess ben = start_bot(server, "Ben", "4", play, {"--join", room->substr(5)});
 
     ASSERT_TRUE(wait_for(server, moment, Clock::now() + 20s))
-        << log_of(ann) << log_of(ben) << server.log();
+        << ann.output() << ben.output() << server.log();
     server.kill9();
     ASSERT_TRUE(server.restart()) << server.log();
     ASSERT_EQ(server.port(), port);
@@ -144,7 +134,7 @@ void kill_and_recover(Moment moment, const std::vector<std::string>& play) {
     const auto deadline = Clock::now() + 40s;
     const auto a = finish(ann, deadline);
     const auto b = finish(ben, deadline);
-    ASSERT_TRUE(a.is_object() && b.is_object()) << log_of(ann) << log_of(ben);
+    ASSERT_TRUE(a.is_object() && b.is_object()) << ann.output() << ben.output();
     for (const auto* s : {&a, &b}) {
         EXPECT_EQ((*s)["ok"], true) << s->dump();
         EXPECT_GE((*s)["resumes"].get<int>(), 1) << s->dump();

@@ -209,4 +209,14 @@ const std::vector<std::string>& ChildProcess::lines(Stream stream) const {
     return stream == Stream::Out ? out_.lines : err_.lines;
 }
 
+std::string ChildProcess::output() const {
+    std::string out;
+    for (const Pipe* pipe : {&out_, &err_}) {
+        for (const std::string& line : pipe->lines) {
+            out += line + "\n";
+        }
+    }
+    return out;
+}
+
 } // namespace carrom::test_support

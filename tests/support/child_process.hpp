@@ -41,6 +41,9 @@ public:
     void kill_now();
     // Everything read so far from `stream`, line by line.
     const std::vector<std::string>& lines(Stream stream) const;
+    // Everything read so far, stdout's lines then stderr's, each ending in a newline (for test
+    // failure messages).
+    std::string output() const;
 
 private:
     struct Pipe {
