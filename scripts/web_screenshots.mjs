@@ -1,11 +1,13 @@
 #!/usr/bin/env node
 // The web client's pictures in docs/img, made the way a player sees them:
 //
-//   node scripts/web_screenshots.mjs [--server PATH] [--out docs/img]
+//   node scripts/web_screenshots.mjs [--server PATH] [--out docs/img] [--only singles|doubles]
 //
 // web-aim.png: 900 x 900, a game against a server bot, the break being aimed (the pull, the
 // guide and the power ring). web-phone.png: 390 x 844 at 2 device px per CSS px, touch, the
-// board after the break against a server bot.
+// board after the break against a server bot. web-doubles-side.png: 900 x 900, a doubles game of
+// four pages (ICF rules), the right seat's view (a quarter turn: its own baseline at the
+// bottom, its partner across) aiming its first shot after the break.
 
 import { fileURLToPath } from 'node:url';
 import path from 'node:path';
@@ -18,16 +20,71 @@ const opt = (name, fallback) => {
 };
 process.env.CARROM_SERVER = path.resolve(opt('--server', process.env.CARROM_SERVER ?? path.join(root, 'build/test/server/carrom-server')));
 const out = path.resolve(opt('--out', path.join(root, 'docs/img')));
+const only = opt('--only', 'all');
+const wanted = (name) => only === 'all' || only === name;
 
 const { launchBrowser, pageUrl, run, startServer, startWebServer } = await import(path.join(root, 'tests/web/lib/harness.mjs'));
 const { Player } = await import(path.join(root, 'tests/web/lib/player.mjs'));
 const { breakShot } = await import(path.join(root, 'tests/web/lib/match.mjs'));
+const { chooseShot } = await import(path.join(root, 'tests/web/lib/shot_chooser.mjs'));
+
+// Four pages in a doubles room; once the right seat (seat 1) is to aim, its view mid-pull.
+async function doublesPicture(t, web, server, file) {
+  const view = { viewport: { width: 900, height: 900 } };
+  const names = ['Asha', 'Ravi', 'Chitra', 'Dev'];
+  const pages = [];
+  for (const [i, name] of names.entries()) {
+    pages.push(await Player.open(await t.browser.newContext(view), name, pageUrl(web, server), t.errors));
+    if (i === 0) {
+      await pages[0].fillLobby({ name, ruleSet: 'icf', shotClock: 0 });
+      await pages[0].page.selectOption('#seat-count', '4');
+      await pages[0].press('#create');
+    } else {
+      const { code } = await pages[0].waitFor('the room', (st) => st.inRoom);
+      await pages[i].fillLobby({ name, code });
+      await pages[i].press('#join');
+    }
+    await pages[i].waitFor(`seat ${i}`, (st, seat) => st.inRoom && st.you === seat, 20000, i);
+  }
+  const ravi = pages[1];
+  let shots = 0;
+  for (;;) {
+    let mover = null;
+    for (const p of pages) {
+      const st = await p.waitFor('at rest', (x) => !x.animating && x.phase === 'aiming');
+      if (st.myTurn && st.aim.phase === 'idle') mover = { p, st };
+    }
+    if (!mover) continue;
+    if (mover.p === ravi && shots > 0) break;
+    const { p, st } = mover;
+    await p.shoot(shots === 0 ? breakShot(st.aim.side) : chooseShot(st.board, st.aim.side, shots));
+    await p.waitFor('the shot played', (x, turn) => x.turn !== turn && !x.animating, 30000, st.turn);
+    shots += 1;
+  }
+  const s = await ravi.state();
+  const shot = chooseShot(s.board, s.aim.side, 1);
+  const from = await ravi.toClient(s.aim.striker.x, s.aim.striker.y);
+  const pull = { x: s.aim.striker.x - Math.cos(shot.angle) * 110, y: s.aim.striker.y - Math.sin(shot.angle) * 110 };
+  const to = await ravi.toClient(pull.x, pull.y);
+  await ravi.page.mouse.move(from.x, from.y);
+  await ravi.page.mouse.down();
+  await ravi.page.mouse.move(to.x, to.y, { steps: 6 });
+  await ravi.page.screenshot({ path: file });
+  await ravi.page.keyboard.press('Escape');
+  await ravi.page.mouse.up();
+}
 
 run('web_screenshots', 120000, async (t) => {
   const server = await startServer(['--shot-clock', '30', '--bot-think-ms', '100']);
   const web = await startWebServer(server);
   t.browser = await launchBrowser();
 
+  if (wanted('doubles')) {
+    const file = path.join(out, 'web-doubles-side.png');
+    await doublesPicture(t, web, server, file);
+    console.log(`saved ${file}`);
+  }
+  if (!wanted('singles')) return;
   const desk = await Player.open(await t.browser.newContext({ viewport: { width: 900, height: 900 } }), 'desktop', pageUrl(web, server), t.errors);
   await desk.fillLobby({ name: 'Asha', ruleSet: 'icf', botLevel: 'easy' });
   await desk.press('#play-bot');

@@ -1,8 +1,9 @@
 // carrom-arena: plays --games offline games between two strategies (rules + exact physics, no
 // network) and prints one JSON object: wins, draws, a 95 % interval of A's win rate, strokes per
 // game and per side, fouls, and the candidates per second each search strategy simulated.
-// Games alternate seats (A breaks in even games). Deterministic for a seed when no time budget
-// ends a search (give --candidates and a generous --think-ms).
+// Games alternate seats (A breaks in even games). With --seats 4 (doubles) A plays a team of two
+// (seats 0 and 2, or 1 and 3) against B's, one strategy object per seat. Deterministic for a
+// seed when no time budget ends a search (give --candidates and a generous --think-ms).
 #include "carrom/bots/arena.hpp"
 #include "carrom/bots/strategy.hpp"
 #include "carrom/proto/types.hpp"
@@ -10,12 +11,15 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include <array>
 #include <atomic>
 #include <chrono>
 #include <cmath>
 #include <iostream>
+#include <memory>
 #include <mutex>
 #include <thread>
+#include <vector>
 
 namespace {
 
@@ -59,7 +63,7 @@ std::pair<double, double> wilson(double successes, double trials) {
 struct Totals {
     int games = 0, a_wins = 0, b_wins = 0, draws = 0, unfinished = 0;
     long strokes = 0, boards = 0;
-    std::array<bots::SeatRecord, 2> side{}; // 0: A, 1: B
+    std::array<bots::SeatRecord, 2> side{}; // 0: A (both seats in doubles), 1: B
 };
 
 void add(bots::SeatRecord& into, const bots::SeatRecord& r) {
@@ -98,6 +102,7 @@ int main(int argc, char** argv) {
     int candidates = 0;
     int max_strokes = 3000;
     int target_points = 0;
+    int seats = 2;
     std::uint64_t seed = 1;
     app.add_option("--a", a_spec,
                    "Strategy A: random, sampling, greedy[:perfect|hard|medium|easy]");
@@ -114,7 +119,11 @@ int main(int argc, char** argv) {
         ->check(CLI::Range(1, 1000000));
     app.add_option("--target-points", target_points, "icf/freestyle target (0 = rule default)")
         ->check(CLI::Range(0, 1000));
-    app.add_option("--seed", seed, "Seed of the strategies (game g uses seed*1000+2g and +1)");
+    app.add_option("--seats", seats, "2 (singles) or 4 (doubles: A and B each play a team)")
+        ->check(CLI::IsMember({2, 4}));
+    app.add_option("--seed", seed,
+                   "Seed of the strategies (game g uses seed*1000+2g and +1; doubles: the "
+                   "partners the same plus 2^32)");
     CLI11_PARSE(app, argc, argv);
     make(a_spec, 1); // exits with status 2 on a bad spec
     make(b_spec, 1);
@@ -123,6 +132,7 @@ int main(int argc, char** argv) {
     rules::parse_rule_set(rule_set_name, rule_set);
     rules::RulesConfig config;
     config.shot_clock_s = 0.0;
+    config.seat_count = seats;
     if (target_points > 0) {
         config.target_points = target_points;
         config.freestyle.target = target_points;
@@ -142,25 +152,32 @@ int main(int argc, char** argv) {
     auto worker = [&] {
         for (int g = next++; g < games; g = next++) {
             const std::uint64_t game_seed = seed * 1000 + 2 * static_cast<std::uint64_t>(g);
-            auto a = make(a_spec, game_seed);
-            auto b = make(b_spec, game_seed + 1);
-            const int a_seat = g % 2; // seat 0 breaks the first board
-            std::array<bots::Strategy*, 2> players{a.get(), b.get()};
-            if (a_seat == 1) {
-                std::swap(players[0], players[1]);
+            const int a_team = g % 2; // seat 0 (team 0) breaks the first board
+            // One strategy per seat: seat s is A's when its team is a_team; partners (seats
+            // 2 and 3 in doubles) get the seeds of seats 0 and 1 plus 2^32.
+            std::vector<std::unique_ptr<bots::Strategy>> owned;
+            std::vector<bots::Strategy*> players;
+            for (int s = 0; s < seats; ++s) {
+                const bool is_a = rules::team_of_seat(s, seats) == a_team;
+                const std::uint64_t partner = s >= 2 ? (std::uint64_t{1} << 32) : 0;
+                owned.push_back(is_a ? make(a_spec, game_seed + partner)
+                                     : make(b_spec, game_seed + 1 + partner));
+                players.push_back(owned.back().get());
             }
             const bots::GameRecord record = bots::play_game(start, players, options);
             const std::lock_guard lock(mutex);
             ++totals.games;
             totals.boards += record.boards;
-            totals.strokes += record.seats[0].strokes + record.seats[1].strokes;
-            add(totals.side[0], record.seats[static_cast<std::size_t>(a_seat)]);
-            add(totals.side[1], record.seats[static_cast<std::size_t>(1 - a_seat)]);
+            for (int s = 0; s < seats; ++s) {
+                const auto& seat_record = record.seats[static_cast<std::size_t>(s)];
+                totals.strokes += seat_record.strokes;
+                add(totals.side[rules::team_of_seat(s, seats) == a_team ? 0 : 1], seat_record);
+            }
             if (!record.finished) {
                 ++totals.unfinished;
-            } else if (!record.winner_seat) {
+            } else if (!record.winner_team) {
                 ++totals.draws;
-            } else if (*record.winner_seat == a_seat) {
+            } else if (*record.winner_team == a_team) {
                 ++totals.a_wins;
             } else {
                 ++totals.b_wins;
@@ -181,6 +198,7 @@ int main(int argc, char** argv) {
     const nlohmann::json out = {{"a", a_spec},
                                 {"b", b_spec},
                                 {"rule_set", rule_set_name},
+                                {"seats", seats},
                                 {"games", totals.games},
                                 {"a_wins", totals.a_wins},
                                 {"b_wins", totals.b_wins},

@@ -37,6 +37,7 @@ nlohmann::json summary_json(const bots::BotSummary& s, const bots::Strategy& str
             {"strategy", strategy.name()},
             {"room", s.room_code},
             {"seat", s.seat},
+            {"team", s.team},
             {"games", s.games},
             {"shots", s.shots},
             {"result", result},
@@ -84,6 +85,7 @@ int main(int argc, char** argv) {
     std::string log_level = "warn";
     int target_points = 0;
     int boards = 0;
+    int seats = 2;
     double shot_clock_s = -1.0;
     double timeout_s = 3600.0;
     double resume_for_s = 130.0;
@@ -103,6 +105,9 @@ int main(int argc, char** argv) {
     spectate_option->excludes(quick_flag);
     app.add_option("--rule-set", rule_set_name, "Rule set for --create and --quick")
         ->check(CLI::IsMember({"icf", "seed", "freestyle", "discpool"}));
+    app.add_option("--seats", seats,
+                   "--create and --quick: 2 (singles) or 4 (doubles: partners opposite)")
+        ->check(CLI::IsMember({2, 4}));
     app.add_option("--target-points", target_points, "--create: points to win (0 = default)")
         ->check(CLI::Range(0, 1000));
     app.add_option("--boards", boards, "--create: most boards (0 = default)")
@@ -154,6 +159,8 @@ int main(int argc, char** argv) {
     }
     config.create.rule_set = rule_set;
     config.quick_rule_set = rule_set;
+    config.create.seats = seats;
+    config.quick_seats = seats;
     if (target_points > 0) {
         config.create.options.target_points = target_points;
     }

@@ -25,9 +25,13 @@ rules::PlayResult play_turn(const rules::MatchState& state, int seat, Strategy& 
 
 } // namespace
 
-GameRecord play_game(const rules::MatchState& start, std::array<Strategy*, 2> players,
+GameRecord play_game(const rules::MatchState& start, const std::vector<Strategy*>& players,
                      const ArenaOptions& options) {
     GameRecord record;
+    record.seats.resize(start.seats.size());
+    if (players.size() != start.seats.size()) {
+        return record;
+    }
     rules::MatchState state = start;
     ExactEngine engine(state.physics);
     int strokes = 0;
@@ -53,13 +57,7 @@ GameRecord play_game(const rules::MatchState& start, std::array<Strategy*, 2> pl
     if (state.phase == rules::Phase::GameOver && state.result) {
         record.finished = true;
         record.reason = state.result->reason;
-        if (state.result->winner_team) {
-            for (int seat = 0; seat < 2; ++seat) {
-                if (rules::team_of(state, seat) == *state.result->winner_team) {
-                    record.winner_seat = seat;
-                }
-            }
-        }
+        record.winner_team = state.result->winner_team;
     }
     return record;
 }

@@ -1,10 +1,8 @@
 #include "auto_player.hpp"
 
 #include "carrom/bots/match_view.hpp"
-#include "carrom/client/aim_controller.hpp"
-#include "carrom/scene.hpp"
+#include "carrom/client/aim_gesture.hpp"
 
-#include <algorithm>
 #include <chrono>
 #include <cmath>
 
@@ -37,38 +35,27 @@ std::optional<sf::Event> AutoPlayer::next_event() {
     return events_[next_++];
 }
 
-void AutoPlayer::aim(const proto::RoomState& room, double striker_x, Baseline baseline,
+void AutoPlayer::aim(const proto::RoomState& room, double striker_x, rules::Side side,
                      const ScreenMapping& mapping, const PhysicsConfig& physics) {
     bots::DecisionBudget budget;
     budget.time = std::chrono::milliseconds(200); // the window waits for the choice
     const Shot shot =
         strategy_->choose_shot(bots::match_state_from(room, physics), room.you, budget);
-    const double y = baseline_y(physics, baseline);
-    const double x = clamp_baseline_x(physics, shot.x_px);
-    std::vector<sf::Event>& events = events_;
-    events.clear();
+    events_.clear();
     next_ = 0;
-    // Slide: press in the baseline band away from the striker (a press on it would pull).
-    const double far = striker_x > physics.centre().x ? 113.0 : 487.0;
-    events.push_back(mouse(sf::Event::MouseButtonPressed, mapping, {far, y}));
-    events.push_back(mouse(sf::Event::MouseMoved, mapping, {(far + x) / 2.0, y}));
-    events.push_back(mouse(sf::Event::MouseMoved, mapping, {x, y}));
-    events.push_back(mouse(sf::Event::MouseButtonReleased, mapping, {x, y}));
-    // Pull back from the striker: the shot goes from the pointer towards the striker, its power
-    // from the pull's length (the aim controller's inverse).
-    const AimConfig aim_config;
-    const double power = std::clamp(shot.power, 0.0, physics.max_power);
-    const double drag = aim_config.dead_zone_px +
-                        std::max(power / physics.max_power *
-                                     (aim_config.full_power_drag_px - aim_config.dead_zone_px),
-                                 1.0);
-    const Vec2 dir{std::cos(shot.angle_rad), std::sin(shot.angle_rad)};
-    const Vec2 striker{x, y};
-    events.push_back(mouse(sf::Event::MouseButtonPressed, mapping, striker));
-    for (const double k : {0.25, 0.5, 0.75, 1.0}) {
-        events.push_back(mouse(sf::Event::MouseMoved, mapping, striker - dir * (drag * k)));
+    for (const GestureStep& step : shot_gesture(physics, AimConfig{}, side, striker_x, shot)) {
+        switch (step.kind) {
+        case GestureStep::Kind::Press:
+            events_.push_back(mouse(sf::Event::MouseButtonPressed, mapping, step.board_px));
+            break;
+        case GestureStep::Kind::Move:
+            events_.push_back(mouse(sf::Event::MouseMoved, mapping, step.board_px));
+            break;
+        case GestureStep::Kind::Release:
+            events_.push_back(mouse(sf::Event::MouseButtonReleased, mapping, step.board_px));
+            break;
+        }
     }
-    events.push_back(mouse(sf::Event::MouseButtonReleased, mapping, striker - dir * drag));
 }
 
 } // namespace carrom::client::app

@@ -11,6 +11,7 @@
 #include "carrom/config.hpp"
 #include "carrom/proto/server_messages.hpp"
 #include "carrom/proto/types.hpp"
+#include "carrom/rules/seat.hpp"
 
 #include <SFML/Window/Event.hpp>
 
@@ -26,9 +27,10 @@ public:
     AutoPlayer(proto::BotLevel level, std::uint64_t seed);
 
     // Chooses the shot for our seat in `room` (our turn, the board at rest, the striker idle at
-    // striker_x on `baseline`) and queues the mouse events (window px through `mapping`) that
-    // slide the striker to the chosen x and shoot it.
-    void aim(const proto::RoomState& room, double striker_x, Baseline baseline,
+    // striker_x along the baseline of `side`) and queues the mouse events (window px through the
+    // turned view's `mapping`) that slide the striker to the chosen x and shoot it
+    // (aim_gesture.hpp).
+    void aim(const proto::RoomState& room, double striker_x, rules::Side side,
              const ScreenMapping& mapping, const PhysicsConfig& physics);
     // The next queued event, one per frame (so the window shows the aim as it is made).
     std::optional<sf::Event> next_event();

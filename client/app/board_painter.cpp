@@ -207,14 +207,14 @@ bool BoardPainter::repaint_band(sf::RenderTarget& target, Blitter& blitter,
     sf::Texture wood_texture;
     wood_texture.loadFromImage(wood);
     canvas.clear(kMargin);
-    // Board px -> band px; the markings are symmetric under a half turn, so a flipped view
+    // Board px -> band px; the markings are symmetric under a quarter turn, so a turned view
     // uses the same picture.
     const Rect board{std::round(mapping.origin_x) - band.x, std::round(mapping.origin_y) - band.y,
                      static_cast<double>(side), static_cast<double>(side)};
     sf::Sprite sprite(wood_texture);
     sprite.setPosition(f(board.x), f(board.y));
     canvas.draw(sprite);
-    const ScreenMapping local = make_mapping(board, geometry_.board_size_px, false);
+    const ScreenMapping local = make_mapping(board, geometry_.board_size_px);
     sf::VertexArray tris(sf::Triangles);
     add_markings(tris, geometry_, local);
     add_pockets(tris, geometry_, local);

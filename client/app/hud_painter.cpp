@@ -5,6 +5,7 @@
 #include "draw_util.hpp"
 #include "text.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -48,6 +49,11 @@ sf::Color tone_colour(Tone tone) {
     return kText;
 }
 
+// The seat drawn at the bottom of the window: ours, or seat 0 for a spectator.
+int seat_at_bottom(const MatchView& v) {
+    return v.you >= 0 ? v.you : 0;
+}
+
 std::string queen_text(const MatchModel& model) {
     const proto::QueenInfo& q = model.view().queen;
     switch (q.state) {
@@ -69,6 +75,10 @@ void HudPainter::draw(sf::RenderTarget& target, Blitter& blitter, const ScreenLa
                       const MatchModel& model, const ConnectionLine& connection, double local_s) {
     top_.draw(target, blitter, texts_, layout.top_bar, kBar,
               top_bar(layout.top_bar, model, local_s));
+    if (layout.seat_bar.h > 0.0) {
+        seat_.draw(target, blitter, texts_, layout.seat_bar, kBar,
+                   seat_bar(layout.seat_bar, model, local_s));
+    }
     bottom_.draw(target, blitter, texts_, layout.bottom_bar, kBar,
                  bottom_bar(layout.bottom_bar, model, connection));
     Sketch over_board;
@@ -79,12 +89,48 @@ void HudPainter::draw(sf::RenderTarget& target, Blitter& blitter, const ScreenLa
 
 Sketch HudPainter::top_bar(const Rect& top, const MatchModel& model, double local_s) const {
     Sketch s;
+    if (model.view().seats.size() == 4) {
+        // The seats at the left, across and right of the turned board (seat order runs
+        // anticlockwise on the screen: ours + 1 is at the right, + 2 across, + 3 at the left).
+        const int base = seat_at_bottom(model.view());
+        const double side_w = std::round(top.w * 0.3);
+        sketch_seat(s, {top.x, top.y, side_w, top.h}, model, (base + 3) % 4, false);
+        sketch_seat(s, {top.x + side_w, top.y, top.w - 2.0 * side_w, top.h}, model, (base + 2) % 4,
+                    false);
+        sketch_seat(s, {top.x + top.w - side_w, top.y, side_w, top.h}, model, (base + 1) % 4, true);
+        return s;
+    }
     const double side_w = std::round(top.w * 0.34);
     // Our seat on the left (a spectator sees seat 0 there).
     const int left_seat = model.view().you >= 0 ? model.view().you : 0;
     sketch_seat(s, {top.x, top.y, side_w, top.h}, model, left_seat, false);
     sketch_seat(s, {top.x + top.w - side_w, top.y, side_w, top.h}, model, 1 - left_seat, true);
     sketch_centre(s, {top.x + side_w, top.y, top.w - 2.0 * side_w, top.h}, model, local_s);
+    return s;
+}
+
+Sketch HudPainter::seat_bar(const Rect& area, const MatchModel& model, double local_s) const {
+    Sketch s;
+    const double side_w = std::round(area.w * 0.3);
+    const Rect left{area.x, area.y, side_w, area.h};
+    const Rect right{area.x + area.w - side_w, area.y, side_w, area.h};
+    sketch_seat(s, {area.x + side_w, area.y, area.w - 2.0 * side_w, area.h}, model,
+                seat_at_bottom(model.view()), false);
+    const float mid = static_cast<float>(area.y + area.h / 2.0);
+    sketch_status(s, left, model, local_s, mid);
+    // Two lines ("Queen:" over the rest): a third of the bar is too narrow for a name on one.
+    const std::string queen = queen_text(model);
+    const std::size_t colon = queen.find(": ");
+    const float x = static_cast<float>(right.x + right.w / 2.0);
+    const float step = static_cast<float>(area.h * 0.2);
+    if (colon == std::string::npos) {
+        s.text(queen, text_size(area.h, 0.22), x, mid, kDim, Align::Centre);
+    } else {
+        s.text(queen.substr(0, colon + 1), text_size(area.h, 0.22), x, mid - step, kDim,
+               Align::Centre);
+        s.text(queen.substr(colon + 2), text_size(area.h, 0.22), x, mid + step, kDim,
+               Align::Centre);
+    }
     return s;
 }
 
@@ -117,6 +163,8 @@ void HudPainter::sketch_seat(Sketch& sk, const Rect& area, const MatchModel& mod
     }
     if (seat == v.you) {
         name += " (you)";
+    } else if (v.you >= 0 && seat == partner_of(v, v.you)) {
+        name += " (partner)";
     }
     // The colour, and while the seat plays: what it has left to pocket.
     std::string sub = colour_word(s.colour);
@@ -142,15 +190,27 @@ void HudPainter::sketch_seat(Sketch& sk, const Rect& area, const MatchModel& mod
 
 void HudPainter::sketch_centre(Sketch& sk, const Rect& area, const MatchModel& model,
                                double local_s) const {
+    const float mid = static_cast<float>(area.y + area.h / 2.0);
+    sketch_status(sk, area, model, local_s, mid - static_cast<float>(area.h * 0.14));
+    sk.text(queen_text(model), text_size(area.h, 0.24), static_cast<float>(area.x + area.w / 2.0),
+            mid + static_cast<float>(area.h * 0.26), kDim, Align::Centre);
+}
+
+void HudPainter::sketch_status(Sketch& sk, const Rect& area, const MatchModel& model,
+                               double local_s, float y) const {
     const MatchView& v = model.view();
     const float cx = static_cast<float>(area.x + area.w / 2.0);
-    const float mid = static_cast<float>(area.y + area.h / 2.0);
     std::string status;
     sf::Color colour = kText;
     switch (v.phase) {
-    case proto::Phase::Waiting:
-        status = "Waiting for a player";
+    case proto::Phase::Waiting: {
+        const auto empty = std::count_if(v.seats.begin(), v.seats.end(),
+                                         [](const SeatView& s) { return !s.occupied; });
+        status = empty > 1
+                     ? "Waiting for " + count_words(static_cast<int>(empty), "player", "players")
+                     : std::string("Waiting for a player");
         break;
+    }
     case proto::Phase::Moving:
         status = model.seat_name(v.to_play) + " shot";
         break;
@@ -162,9 +222,10 @@ void HudPainter::sketch_centre(Sketch& sk, const Rect& area, const MatchModel& m
         status = "Board " + std::to_string(v.board_number) + " over";
         break;
     case proto::Phase::GameOver:
-        status = v.winner < 0        ? "Game drawn"
-                 : v.winner == v.you ? "You won!"
-                                     : player_name_at_end(v, v.winner) + " won";
+        status = v.winner < 0                         ? "Game drawn"
+                 : v.winner == team_of(v, v.you)      ? "You won!"
+                 : team_seats(v, v.winner).size() > 1 ? team_name(v, v.winner) + " won"
+                                                      : player_name_at_end(v, v.winner) + " won";
         colour = kGold;
         break;
     }
@@ -175,10 +236,7 @@ void HudPainter::sketch_centre(Sketch& sk, const Rect& area, const MatchModel& m
             colour = kAlert;
         }
     }
-    sk.text(status, text_size(area.h, 0.34), cx, mid - static_cast<float>(area.h * 0.14), colour,
-            Align::Centre);
-    sk.text(queen_text(model), text_size(area.h, 0.24), cx, mid + static_cast<float>(area.h * 0.26),
-            kDim, Align::Centre);
+    sk.text(status, text_size(area.h, 0.34), cx, y, colour, Align::Centre);
 }
 
 Sketch HudPainter::bottom_bar(const Rect& area, const MatchModel& model,
@@ -237,8 +295,10 @@ void HudPainter::sketch_room_code(Sketch& sk, const Rect& board, const MatchMode
             kDim, Align::Centre);
     sk.text(v.code, text_size(panel.h, 0.34), cx, static_cast<float>(panel.y + panel.h * 0.5),
             kGold, Align::Centre);
-    sk.text("Share it: your opponent joins with this code", text_size(panel.h, 0.085), cx,
-            static_cast<float>(panel.y + panel.h * 0.83), kText, Align::Centre);
+    sk.text(v.seats.size() > 2 ? "Share it: the other players join with this code"
+                               : "Share it: your opponent joins with this code",
+            text_size(panel.h, 0.085), cx, static_cast<float>(panel.y + panel.h * 0.83), kText,
+            Align::Centre);
 }
 
 } // namespace carrom::client::app

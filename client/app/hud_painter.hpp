@@ -2,7 +2,9 @@
 // The HUD: seats with names, scores, dues and the coins each has left to pocket along the top;
 // whose turn, the shot clock and the queen in the middle; room, rule set, connection and round trip
 // along the bottom; recent messages over the board; the room code large while the room waits for a
-// player.
+// player. Doubles: the seats at the left, across and right of the turned board along the top, our
+// own seat (the bottom one) in the seat bar below the board between the turn and the queen; the
+// partner marked, partners showing their team's score.
 
 #include "cached_layer.hpp"
 #include "carrom/client/match_model.hpp"
@@ -31,7 +33,7 @@ public:
               const MatchModel& model, const ConnectionLine& connection, double local_s);
     // How often the bars and the messages were painted into their textures.
     long bar_repaints() const {
-        return top_.repaints() + bottom_.repaints() + over_board_.repaints();
+        return top_.repaints() + seat_.repaints() + bottom_.repaints() + over_board_.repaints();
     }
     TextCache& texts() { return texts_; }
     // The part of the board the last draw covered with messages or the room code, if any.
@@ -39,9 +41,13 @@ public:
 
 private:
     Sketch top_bar(const Rect& area, const MatchModel& model, double local_s) const;
+    // Doubles: our seat with the turn and the queen beside it.
+    Sketch seat_bar(const Rect& area, const MatchModel& model, double local_s) const;
     void sketch_seat(Sketch& s, const Rect& area, const MatchModel& model, int seat,
                      bool right) const;
     void sketch_centre(Sketch& s, const Rect& area, const MatchModel& model, double local_s) const;
+    void sketch_status(Sketch& s, const Rect& area, const MatchModel& model, double local_s,
+                       float y) const;
     Sketch bottom_bar(const Rect& area, const MatchModel& model,
                       const ConnectionLine& connection) const;
     void sketch_messages(Sketch& s, const Rect& board, const MatchModel& model, double local_s);
@@ -49,6 +55,7 @@ private:
 
     TextCache texts_;
     CachedLayer top_;
+    CachedLayer seat_;
     CachedLayer bottom_;
     CachedLayer over_board_;
 };

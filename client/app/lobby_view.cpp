@@ -17,10 +17,14 @@ Rect LobbyView::control_rect(Control c, const Rect& area) const {
     const double w = std::min(area.w * 0.8, 520.0);
     const double h = std::clamp(area.h * 0.07, 34.0, 56.0);
     const double x0 = area.x + (area.w - w) / 2.0;
-    const double y0 = area.y + area.h * 0.36;
     const double gap = h * 0.35;
+    const double y0 = area.y + area.h * 0.35 + h * 0.8 + gap;
     const double half = (w - gap) / 2.0;
     switch (c) {
+    case kSingles:
+        return {x0 + w * 0.2, y0 - h * 0.8 - gap, w * 0.3, h * 0.8};
+    case kDoubles:
+        return {x0 + w * 0.5, y0 - h * 0.8 - gap, w * 0.3, h * 0.8};
     case kCreate:
         return {x0, y0, half, h};
     case kBot:
@@ -42,13 +46,21 @@ Rect LobbyView::control_rect(Control c, const Rect& area) const {
 
 std::optional<RoomRequest> LobbyView::press(Control c) {
     RoomRequest r;
+    r.seats = seats_;
     switch (c) {
+    case kSingles:
+        seats_ = 2;
+        return std::nullopt;
+    case kDoubles:
+        seats_ = 4;
+        return std::nullopt;
     case kCreate:
         r.kind = RoomRequest::Kind::Create;
         return r;
     case kBot:
         r.kind = RoomRequest::Kind::Create;
-        r.bot = proto::BotSeat{proto::BotLevel::Medium};
+        r.bot = proto::BotSeat{};
+        r.bot->level = proto::BotLevel::Medium; // doubles: bots in the three other seats
         return r;
     case kQuick:
         r.kind = RoomRequest::Kind::Quick;
@@ -60,6 +72,7 @@ std::optional<RoomRequest> LobbyView::press(Control c) {
         }
         r.kind = c == kJoin ? RoomRequest::Kind::Join : RoomRequest::Kind::Spectate;
         r.code = code_;
+        r.seats = 2; // the room's own
         return r;
     case kCode:
     case kControlCount:
@@ -105,12 +118,20 @@ void LobbyView::draw(sf::RenderTarget& target, const Rect& area, const std::stri
     draw_text(target, font_, status, mid, cx, static_cast<float>(area.y + area.h * 0.30), kDim,
               Align::Centre);
     if (can_choose) {
-        const char* labels[kControlCount] = {"Create room", "Play the bot", "Quick match", "",
-                                             "Join",        "Watch"};
+        const bool doubles = seats_ == 4;
+        const char* labels[kControlCount] = {
+            "Singles",     "Doubles", "Create room", doubles ? "Play 3 bots" : "Play the bot",
+            "Quick match", "",        "Join",        "Watch"};
         for (int c = 0; c < kControlCount; ++c) {
             const Rect r = control_rect(static_cast<Control>(c), area);
             const bool field = c == kCode;
-            draw_panel(target, r, field ? sf::Color(240, 228, 200) : kButton, kButtonEdge, 1.5f);
+            const bool chosen = (c == kSingles && !doubles) || (c == kDoubles && doubles);
+            const bool mode = c == kSingles || c == kDoubles;
+            const sf::Color fill = field             ? sf::Color(240, 228, 200)
+                                   : mode && !chosen ? sf::Color(52, 34, 22)
+                                                     : kButton;
+            draw_panel(target, r, fill, mode && !chosen ? sf::Color(150, 110, 60) : kButtonEdge,
+                       chosen ? 2.5f : 1.5f);
             const std::string label =
                 field ? (code_.empty() ? std::string("ROOM CODE") : code_) : labels[c];
             draw_text(target, font_, label, static_cast<unsigned>(r.h * 0.45),

@@ -1,6 +1,7 @@
 #pragma once
-// The in-window lobby: create a room (alone or against a server bot), quick match, or type a
-// room code to join as a player or to watch. Also shows the connection status and the last error.
+// The in-window lobby: singles or doubles, then create a room (alone or with server bots in the
+// other seats), quick match, or type a room code to join as a player or to watch. Also shows the
+// connection status and the last error.
 
 #include "carrom/client/client_session.hpp"
 #include "carrom/client/screen_mapping.hpp"
@@ -22,12 +23,13 @@ public:
               const std::string& status, const std::string& error, bool can_choose) const;
 
 private:
-    enum Control { kCreate, kBot, kQuick, kCode, kJoin, kWatch, kControlCount };
+    enum Control { kSingles, kDoubles, kCreate, kBot, kQuick, kCode, kJoin, kWatch, kControlCount };
     Rect control_rect(Control c, const Rect& area) const;
     std::optional<RoomRequest> press(Control c);
 
     const sf::Font& font_;
     std::string code_;
+    int seats_ = 2; // 2: singles, 4: doubles (for create, the bots and quick match)
 };
 
 } // namespace carrom::client::app

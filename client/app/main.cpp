@@ -52,6 +52,21 @@ int main(int argc, char** argv) {
     cli.add_option("--rules", rule_set,
                    "Rule set for --create and --quick: icf, seed, freestyle, discpool")
         ->capture_default_str();
+    int seats = 2;
+    auto* seats_opt =
+        cli.add_option("--seats", seats,
+                       "With --create, --quick or --vs-bot: 2 (singles) or 4 (doubles: partners "
+                       "opposite; --vs-bot puts server bots in the three other seats)")
+            ->capture_default_str()
+            ->check(CLI::IsMember({2, 4}));
+    seats_opt->excludes(join_opt)->excludes(spectate_opt);
+    std::vector<int> bot_seats;
+    auto* bot_seats_opt =
+        cli.add_option("--bot-seats", bot_seats,
+                       "Doubles with --bot or --vs-bot: the seats the server's bots take, e.g. 2 "
+                       "(a bot partner; two players join) or 1,3 (default: 1,2,3)")
+            ->delimiter(',');
+    bot_seats_opt->excludes(join_opt)->excludes(spectate_opt)->excludes(quick_flag);
     cli.add_flag("--demo", options.demo, "Offline demo: a local stand-in server, no network");
     cli.add_option("--demo-break-at", options.demo_break_at_s,
                    "Demo: seconds before the opponent breaks")
@@ -168,12 +183,29 @@ int main(int argc, char** argv) {
         }
         options.autoplay = level;
     }
+    if (!bot_seats.empty() && !bot && vs_bot.empty()) {
+        std::cerr << "carrom-client: --bot-seats needs --bot or --vs-bot\n";
+        return 2;
+    }
+    if (options.demo && seats != 2) {
+        std::cerr << "carrom-client: the demo is singles (no --seats 4)\n";
+        return 2;
+    }
     RoomRequest request;
     request.rule_set = rules;
+    request.seats = seats;
     if (create || options.demo || !vs_bot.empty()) {
         request.kind = RoomRequest::Kind::Create;
         if (bot || !vs_bot.empty()) {
-            request.bot = carrom::proto::BotSeat{bot_level};
+            carrom::proto::BotSeat bot_seat;
+            bot_seat.level = bot_level;
+            bot_seat.seats = bot_seats;
+            request.bot = bot_seat;
+        }
+        if (const std::string problem = carrom::client::check_room_request(request);
+            !problem.empty()) {
+            std::cerr << "carrom-client: " << problem << "\n";
+            return 2;
         }
         options.request = request;
     } else if (!join_code.empty()) {

@@ -9,6 +9,7 @@
 #include "font.hpp"
 #include "hud_painter.hpp"
 #include "text.hpp"
+#include "window_output.hpp"
 
 #include <SFML/Graphics.hpp>
 
@@ -53,6 +54,7 @@ private:
     Shown shown_at(double t) const;
     void handle(const sf::Event& e);
     void sync_hud(double now);
+    int seat_count() const { return static_cast<int>(replay_.created().seats.size()); }
     void draw(double now);
     std::string status() const;
     int write_final_state();
@@ -80,15 +82,7 @@ ReplayView::Shown ReplayView::shown_at(double t) const {
 }
 
 void ReplayView::handle(const sf::Event& e) {
-    if (e.type == sf::Event::Closed) {
-        window_.close();
-        return;
-    }
-    if (e.type == sf::Event::Resized) {
-        const float w = static_cast<float>(e.size.width);
-        const float h = static_cast<float>(e.size.height);
-        window_.setView(sf::View(sf::FloatRect(0.0f, 0.0f, w, h)));
-        layout_ = make_layout(w, h);
+    if (handle_window_event(window_, e, layout_, seat_count())) {
         return;
     }
     if (e.type != sf::Event::KeyPressed) {
@@ -162,9 +156,9 @@ std::string ReplayView::status() const {
 }
 
 void ReplayView::draw(double now) {
-    const ScreenMapping m = make_mapping(layout_.board, physics_.board_size_px, false);
+    const ScreenMapping m = make_mapping(layout_.board, physics_.board_size_px);
     const Rect band{0.0, layout_.top_bar.h, layout_.top_bar.w,
-                    layout_.bottom_bar.y - layout_.top_bar.h};
+                    layout_.seat_bar.y - layout_.top_bar.h};
     board_painter_.draw_board(window_, blitter_, m, band);
     std::vector<RenderedBody> bodies;
     for (const Body& b : replay_.bodies()) {
@@ -186,24 +180,12 @@ void ReplayView::draw(double now) {
 }
 
 int ReplayView::write_final_state() {
-    std::ofstream out(options_.final_state_path);
-    out << final_state_json(hud_model_.view(), hud_model_.board_now()) << "\n";
-    if (!out) {
-        std::cerr << "carrom-client: could not write " << options_.final_state_path << "\n";
-        return 1;
-    }
-    std::cout << "final state " << options_.final_state_path << std::endl;
-    return 0;
+    return write_final_state_file(options_.final_state_path,
+                                  final_state_json(hud_model_.view(), hud_model_.board_now()));
 }
 
 bool ReplayView::save_screenshot() {
-    sf::Texture shot;
-    const sf::Vector2u size = window_.getSize();
-    if (!shot.create(size.x, size.y)) {
-        return false;
-    }
-    shot.update(window_);
-    return shot.copyToImage().saveToFile(options_.screenshot_path);
+    return save_window_png(window_, options_.screenshot_path);
 }
 
 int ReplayView::run() {
@@ -217,7 +199,7 @@ int ReplayView::run() {
     window_.setFramerateLimit(144);
     const sf::Vector2u size = window_.getSize();
     window_.setView(sf::View(sf::FloatRect(0.0f, 0.0f, f(size.x), f(size.y))));
-    layout_ = make_layout(size.x, size.y);
+    layout_ = make_layout(size.x, size.y, seat_count());
     using Clock = std::chrono::steady_clock;
     const auto started = Clock::now();
     auto last = started;

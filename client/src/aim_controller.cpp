@@ -1,5 +1,7 @@
 #include "carrom/client/aim_controller.hpp"
 
+#include "carrom/rules/placement.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -10,6 +12,19 @@ double clamp_baseline_x(const PhysicsConfig& config, double x_px) {
         return config.centre().x;
     }
     return std::clamp(x_px, baseline_x_min(config), baseline_x_max(config));
+}
+
+Vec2 baseline_point(const PhysicsConfig& config, rules::Side side, double along_px) {
+    return rules::striker_for(config, side, Shot{along_px, 0.0, 0.0}).pos_px;
+}
+
+double along_baseline(rules::Side side, Vec2 p) {
+    return side == rules::Side::Bottom || side == rules::Side::Top ? p.x : p.y;
+}
+
+double across_baseline(const PhysicsConfig& config, rules::Side side, Vec2 p) {
+    const Vec2 on_line = baseline_point(config, side, along_baseline(side, p));
+    return length(p - on_line);
 }
 
 double power_from_drag(const PhysicsConfig& config, const AimConfig& aim, double drag_px) {
@@ -38,8 +53,8 @@ Placement check_placement(const PhysicsConfig& config, Vec2 striker_px,
 AimController::AimController(const PhysicsConfig& config, const AimConfig& aim)
     : config_(config), aim_(aim) {}
 
-void AimController::begin_turn(Baseline baseline, double x_px) {
-    baseline_ = baseline;
+void AimController::begin_turn(rules::Side side, double x_px) {
+    side_ = side;
     x_px_ = clamp_baseline_x(config_, x_px);
     phase_ = AimPhase::Idle;
     placement_ = {};
@@ -51,7 +66,7 @@ void AimController::end_turn() {
 }
 
 Vec2 AimController::striker_px() const {
-    return {x_px_, baseline_y(config_, baseline_)};
+    return baseline_point(config_, side_, x_px_);
 }
 
 void AimController::set_x(double x_px, std::span<const BodyState> pieces) {
@@ -72,9 +87,9 @@ void AimController::pointer_down(Vec2 p, std::span<const BodyState> pieces) {
     if (length_squared(p - striker_px()) <= grab * grab) {
         phase_ = AimPhase::Pulling;
         placement_ = check_placement(config_, striker_px(), pieces);
-    } else if (std::abs(p.y - baseline_y(config_, baseline_)) <= aim_.slide_band_px) {
+    } else if (across_baseline(config_, side_, p) <= aim_.slide_band_px) {
         phase_ = AimPhase::Sliding;
-        set_x(p.x, pieces);
+        set_x(along_baseline(side_, p), pieces);
     }
 }
 
@@ -84,7 +99,7 @@ void AimController::pointer_move(Vec2 p, std::span<const BodyState> pieces) {
     }
     pointer_px_ = p;
     if (phase_ == AimPhase::Sliding) {
-        set_x(p.x, pieces);
+        set_x(along_baseline(side_, p), pieces);
     }
 }
 

@@ -15,7 +15,8 @@ std::string board_report_json(const MatchView& view, const std::vector<RenderedB
     j["you"] = view.you;
     j["turn"] = view.turn;
     j["phase"] = std::string(proto::to_string(view.phase));
-    j["flipped"] = mapping.flipped;
+    j["flipped"] = mapping.bottom == rules::Side::Top;
+    j["bottom_side"] = std::string(rules::to_string(mapping.bottom));
     j["window"] = {{"w", context.window_w}, {"h", context.window_h}};
     j["board"] = {{"x", mapping.origin_x},
                   {"y", mapping.origin_y},
@@ -38,6 +39,9 @@ std::string board_report_json(const MatchView& view, const std::vector<RenderedB
                         {"scale", b.scale},
                         {"alpha", b.alpha}});
     }
+    j["prediction"] = {{"strokes", context.prediction.strokes},
+                       {"corrections", context.prediction.corrections},
+                       {"max_difference_px", context.prediction.max_difference_px}};
     j["bodies"] = list;
     if (context.overlay) {
         const Rect& o = *context.overlay;

@@ -70,6 +70,28 @@ void ClientSession::open_link(double local_s) {
     }
 }
 
+std::string check_room_request(const RoomRequest& request) {
+    if (request.seats != 2 && request.seats != 4) {
+        return "--seats must be 2 or 4 (got " + std::to_string(request.seats) + ").";
+    }
+    if (!request.bot) {
+        return "";
+    }
+    const std::vector<int>& seats = request.bot->seats;
+    for (std::size_t i = 0; i < seats.size(); ++i) {
+        if (seats[i] < 1 || seats[i] >= request.seats) {
+            return "--bot-seats: seat " + std::to_string(seats[i]) + " is not one of 1.." +
+                   std::to_string(request.seats - 1) + " (seat 0 is yours).";
+        }
+        for (std::size_t j = 0; j < i; ++j) {
+            if (seats[j] == seats[i]) {
+                return "--bot-seats: seat " + std::to_string(seats[i]) + " is named twice.";
+            }
+        }
+    }
+    return "";
+}
+
 void ClientSession::request(const RoomRequest& request) {
     request_ = request;
     request_sent_ = false;
@@ -85,23 +107,34 @@ void ClientSession::send_request() {
     }
     const RoomRequest& r = *request_;
     switch (r.kind) {
-    case RoomRequest::Kind::Create:
-        link_->send(proto::CreateRoom{r.rule_set, {}, r.bot});
+    case RoomRequest::Kind::Create: {
+        proto::CreateRoom create;
+        create.rule_set = r.rule_set;
+        create.seats = r.seats;
+        create.bot = r.bot;
+        link_->send(create);
         break;
+    }
     case RoomRequest::Kind::Join:
         link_->send(proto::JoinRoom{r.code, proto::Role::Player});
         break;
     case RoomRequest::Kind::Spectate:
         link_->send(proto::JoinRoom{r.code, proto::Role::Spectator});
         break;
-    case RoomRequest::Kind::Quick:
-        link_->send(proto::QuickMatch{r.rule_set});
+    case RoomRequest::Kind::Quick: {
+        proto::QuickMatch quick;
+        quick.rule_set = r.rule_set;
+        quick.seats = r.seats;
+        link_->send(quick);
         break;
+    }
     }
     request_sent_ = true;
     left_room_ = false;
     phase_ = SessionPhase::Joining;
-    status_ = r.kind == RoomRequest::Kind::Quick ? "Waiting for an opponent..." : "Joining...";
+    status_ = r.kind != RoomRequest::Kind::Quick ? "Joining..."
+              : r.seats > 2                      ? "Waiting for players..."
+                                                 : "Waiting for an opponent...";
 }
 
 bool ClientSession::send_game(const proto::ClientMessage& message) {

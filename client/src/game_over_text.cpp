@@ -3,29 +3,53 @@
 namespace carrom::client {
 namespace {
 
-// The other seat of a two-seat room (the one that did not win), -1 if there is none.
-int other_seat(const MatchView& v, int seat) {
-    if (seat < 0 || v.seats.size() != 2) {
+// Results name teams: in singles a team is one seat (its number is the seat), in doubles the two
+// partners (team t: seats t and t + 2).
+bool doubles(const MatchView& v) {
+    return v.seats.size() == 4;
+}
+
+// The other team of a two-team room (the one that did not win), -1 if there is none.
+int other_team(const MatchView& v, int team) {
+    if (team < 0 || (v.seats.size() != 2 && v.seats.size() != 4)) {
         return -1;
     }
-    return 1 - seat;
+    return 1 - team;
 }
 
-std::string name(const MatchView& v, int seat) {
-    return player_name_at_end(v, seat);
+bool ours(const MatchView& v, int team) {
+    return team >= 0 && team == team_of(v, v.you);
 }
 
-// "You" or the seat's name, to start a sentence.
-std::string subject(const MatchView& v, int seat) {
-    return seat == v.you ? "You" : name(v, seat);
+// The team's players: "Ana", or "Ana & Cy" (the names they had when the game ended).
+std::string name(const MatchView& v, int team) {
+    return doubles(v) ? team_name(v, team) : player_name_at_end(v, team);
 }
 
-// "you have" / "Ana has": who leads on points, or that the scores are level.
+// To start a sentence: "You", "You & Cy" (our partner named), or the team's players.
+std::string subject(const MatchView& v, int team) {
+    if (!ours(v, team)) {
+        return name(v, team);
+    }
+    const int partner = partner_of(v, v.you);
+    return partner >= 0 ? "You & " + player_name_at_end(v, partner) : std::string("You");
+}
+
+// "have" for you or a pair, "has" for one other player.
+std::string has(const MatchView& v, int team) {
+    return ours(v, team) || doubles(v) ? "have" : "has";
+}
+
+// "you have" / "Ana has" / "Ana & Cy have": who leads on points, or that the scores are level.
 std::string who_leads(const MatchView& v, int winner) {
     if (winner < 0) {
         return "the scores are level";
     }
-    return winner == v.you ? "you have more points" : name(v, winner) + " has more points";
+    std::string who = subject(v, winner);
+    if (ours(v, winner)) {
+        who[0] = 'y'; // mid-sentence: "you", "you & Cy"
+    }
+    return who + " " + has(v, winner) + " more points";
 }
 
 std::string cleared_reason(const MatchView& v, int winner) {
@@ -38,16 +62,40 @@ std::string cleared_reason(const MatchView& v, int winner) {
         if (winner < 0) {
             return "The coins are off the board.";
         }
-        return winner == v.you ? std::string("All your coins are off the board.")
-                               : "All of " + name(v, winner) + "'s coins are off the board.";
+        if (ours(v, winner)) {
+            return doubles(v) ? std::string("All your team's coins are off the board.")
+                              : std::string("All your coins are off the board.");
+        }
+        return "All of " + name(v, winner) + "'s coins are off the board.";
     case proto::RuleSet::Icf:
         break;
     }
     return winner < 0 ? "The board is cleared." : subject(v, winner) + " cleared the board.";
 }
 
+// Why the losing team lost when it was not on points: in doubles one of its players did it.
+std::string lost_reason(const MatchView& v, int loser, const std::string& reason) {
+    if (doubles(v)) {
+        const std::string who = ours(v, loser) ? "your team" : name(v, loser);
+        if (reason == "clock") {
+            return "A player of " + who + " let the shot clock run out three times in a row.";
+        }
+        if (reason == "forfeit") {
+            return "A player of " + who + " lost the connection and did not come back in time.";
+        }
+        return "A player of " + who + " left the game.";
+    }
+    if (reason == "clock") {
+        return subject(v, loser) + " let the shot clock run out three times in a row.";
+    }
+    if (reason == "forfeit") {
+        return subject(v, loser) + " lost the connection and did not come back in time.";
+    }
+    return subject(v, loser) + " left the game.";
+}
+
 std::string reason_sentence(const MatchView& v, const GameResult& r) {
-    const int loser = other_seat(v, r.winner);
+    const int loser = other_team(v, r.winner);
     if (r.reason == "score" && r.winner >= 0) {
         return subject(v, r.winner) + " reached " + std::to_string(v.options.target_points) +
                " points.";
@@ -62,14 +110,8 @@ std::string reason_sentence(const MatchView& v, const GameResult& r) {
     if (r.reason == "cleared") {
         return cleared_reason(v, r.winner);
     }
-    if (loser >= 0 && r.reason == "clock") {
-        return subject(v, loser) + " let the shot clock run out three times in a row.";
-    }
-    if (loser >= 0 && r.reason == "forfeit") {
-        return subject(v, loser) + " lost the connection and did not come back in time.";
-    }
-    if (loser >= 0 && r.reason == "left") {
-        return subject(v, loser) + " left the game.";
+    if (loser >= 0 && (r.reason == "clock" || r.reason == "forfeit" || r.reason == "left")) {
+        return lost_reason(v, loser, r.reason);
     }
     if (r.reason.empty()) {
         return "The game is over.";
@@ -81,22 +123,57 @@ std::string title(const MatchView& v, int winner) {
     if (winner < 0) {
         return "A draw";
     }
-    if (winner == v.you) {
+    if (doubles(v)) {
+        return subject(v, winner) + " win";
+    }
+    if (ours(v, winner)) {
         return "You won!";
     }
     return v.you >= 0 ? "You lost" : name(v, winner) + " won";
 }
 
+// Our team first (seat 0's for a spectator); a team's score is any of its seats' entry.
 std::string score_line(const MatchView& v, const GameResult& r) {
     std::string out = "Final score: ";
     const int n = static_cast<int>(r.scores.size());
-    const int first = v.you >= 0 && v.you < n ? v.you : 0;
-    for (int i = 0; i < n; ++i) {
-        const int seat = (first + i) % n;
-        out += (i > 0 ? ", " : "") + name(v, seat) + " " +
+    const int teams = doubles(v) ? 2 : n;
+    const int first = v.you >= 0 && v.you < n ? team_of(v, v.you) : 0;
+    for (int i = 0; i < teams; ++i) {
+        const int team = (first + i) % teams;
+        const int seat = team; // a team's first seat has the team's number
+        if (seat >= n) {
+            continue;
+        }
+        out += (i > 0 ? ", " : "") + name(v, team) + " " +
                std::to_string(r.scores[static_cast<std::size_t>(seat)]);
     }
     return out;
+}
+
+std::string rematch_wait(const MatchView& v) {
+    bool empty = false;
+    int other_humans = 0;
+    int other = -1;
+    for (int seat = 0; seat < static_cast<int>(v.seats.size()); ++seat) {
+        const SeatView& s = v.seats[static_cast<std::size_t>(seat)];
+        if (seat == v.you) {
+            continue;
+        }
+        if (!s.occupied) {
+            empty = true;
+        } else if (!s.bot || !doubles(v)) {
+            ++other_humans;
+            other = seat;
+        }
+    }
+    if (empty) {
+        return doubles(v) ? "Waiting for players to join the room"
+                          : "Waiting for a player to join the room";
+    }
+    if (other_humans == 1) {
+        return "Waiting for " + seat_name(v, other) + " to agree to a rematch";
+    }
+    return "Waiting for the other players to agree to a rematch";
 }
 
 } // namespace
@@ -115,10 +192,7 @@ GameOverText game_over_text(const MatchView& view, bool rematch_asked) {
     const bool seated = view.you >= 0;
     out.can_rematch = seated && !rematch_asked;
     if (seated && rematch_asked) {
-        const int other = other_seat(view, view.you);
-        const bool empty = other < 0 || !view.seats[static_cast<std::size_t>(other)].occupied;
-        out.waiting = empty ? "Waiting for a player to join the room"
-                            : "Waiting for " + seat_name(view, other) + " to agree to a rematch";
+        out.waiting = rematch_wait(view);
     }
     return out;
 }

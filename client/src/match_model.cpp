@@ -15,6 +15,10 @@ template <class... F> Overloaded(F...) -> Overloaded<F...>;
 
 constexpr std::size_t kTurnsKept = 8;
 
+bool has_seat(const MatchView& view, int seat) {
+    return seat >= 0 && static_cast<std::size_t>(seat) < view.seats.size();
+}
+
 std::vector<std::string> names_of(const std::vector<SeatView>& seats) {
     std::vector<std::string> out;
     for (const SeatView& s : seats) {
@@ -39,6 +43,47 @@ std::string player_name_at_end(const MatchView& view, int seat) {
         return view.result->names[static_cast<std::size_t>(seat)];
     }
     return seat_name(view, seat);
+}
+
+int team_of(const MatchView& view, int seat) {
+    return has_seat(view, seat) ? rules::team_of_seat(seat, static_cast<int>(view.seats.size()))
+                                : -1;
+}
+
+std::vector<int> team_seats(const MatchView& view, int team) {
+    std::vector<int> out;
+    for (int seat = 0; seat < static_cast<int>(view.seats.size()); ++seat) {
+        if (team >= 0 && team_of(view, seat) == team) {
+            out.push_back(seat);
+        }
+    }
+    return out;
+}
+
+int partner_of(const MatchView& view, int seat) {
+    const int team = team_of(view, seat);
+    for (const int other : team_seats(view, team)) {
+        if (other != seat) {
+            return other;
+        }
+    }
+    return -1;
+}
+
+std::string team_name(const MatchView& view, int team) {
+    std::string out;
+    for (const int seat : team_seats(view, team)) {
+        out += (out.empty() ? "" : " & ") + player_name_at_end(view, seat);
+    }
+    return out.empty() ? "Team " + std::to_string(team + 1) : out;
+}
+
+rules::Side seat_side(const MatchView& view, int seat) {
+    if (has_seat(view, seat)) {
+        return view.seats[static_cast<std::size_t>(seat)].side;
+    }
+    // Before a room state: the rules' seats of a singles match.
+    return seat == 1 ? rules::Side::Top : rules::Side::Bottom;
 }
 
 MatchModel::MatchModel(const PhysicsConfig& physics, const PlayoutConfig& playout,
@@ -95,8 +140,8 @@ bool MatchModel::my_turn() const {
            view_.to_play == view_.you;
 }
 
-bool MatchModel::flipped() const {
-    return view_.you >= 0 && seat_baseline(view_.you) == Baseline::Top;
+rules::Side MatchModel::view_side() const {
+    return view_.you >= 0 ? seat_side(view_.you) : rules::Side::Bottom;
 }
 
 std::optional<double> MatchModel::shot_clock_left_s(double local_s) const {
@@ -115,13 +160,6 @@ std::optional<SeatCoins> MatchModel::coins_left(int seat) const {
         return std::nullopt;
     }
     return seat_coins(coins_, view_.rule_set, view_.seats[static_cast<std::size_t>(seat)].colour);
-}
-
-Baseline MatchModel::seat_baseline(int seat) const {
-    if (seat >= 0 && static_cast<std::size_t>(seat) < view_.seats.size()) {
-        return view_.seats[static_cast<std::size_t>(seat)].baseline;
-    }
-    return seat == 1 ? Baseline::Top : Baseline::Bottom;
 }
 
 BodyKind MatchModel::kind_of(int id) const {
@@ -251,7 +289,9 @@ void MatchModel::on_snapshot(const proto::Snapshot& m, double local_s) {
         if (m.keyframe) {
             prediction_.mark_server_done();
         } else {
-            prediction_.confirm(*buffer_.newest_state(), s.time_s, local_s);
+            // Compared at the server's own shot time: offset + t - offset is not always t in
+            // floating point, and a hair before a pocketing the body is still on the board.
+            prediction_.confirm(*buffer_.newest_state(), m.t_s, local_s);
         }
     } else {
         playout_.on_snapshot(s.time_s, local_s);
@@ -273,7 +313,7 @@ bool MatchModel::predict(const proto::Shoot& shot, double local_s) {
     // rest is placed again just before it (the newest state may lie ahead of the drawn time by
     // the playout delay), so that the server's snapshots of the stroke follow it in the buffer.
     const double start = playout_.render_time(local_s);
-    if (!prediction_.start(view_.turn, board, seat_baseline(view_.you),
+    if (!prediction_.start(view_.turn, board, seat_side(view_.you),
                            Shot{shot.x_px, shot.angle_rad, shot.power}, start)) {
         return false;
     }

@@ -279,7 +279,8 @@ proto::RoomState ReplayModel::room_state_at(double time_s) const {
         info.connected = true;
         info.bot = i < created_.seats.size() && created_.seats[i].bot;
         info.colour = room::colour_of_team(m, rules::team_of(m, static_cast<int>(i)));
-        info.baseline = m.seats[i].side == rules::Side::Top ? Baseline::Top : Baseline::Bottom;
+        info.baseline = m.seats[i].side;
+        info.team = rules::team_of(m, static_cast<int>(i));
         state.seats.push_back(std::move(info));
     }
     state.scores = room::per_seat(m, m.scores);

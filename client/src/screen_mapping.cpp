@@ -5,41 +5,62 @@
 
 namespace carrom::client {
 
-ScreenLayout make_layout(double window_w, double window_h) {
+ScreenLayout make_layout(double window_w, double window_h, int seats) {
     // Whole window px everywhere, so cached layers are copied pixel for pixel, without seams.
     const double w = std::max(std::round(window_w), 1.0);
     const double h = std::max(std::round(window_h), 1.0);
     const double top = std::round(std::clamp(h * 0.075, 40.0, 72.0));
     const double bottom = std::round(std::clamp(h * 0.045, 24.0, 40.0));
-    const double space_h = std::max(h - top - bottom, 1.0);
+    const double seat_h = seats > 2 ? top : 0.0;
+    const double space_h = std::max(h - top - bottom - seat_h, 1.0);
     const double side = std::min(w, space_h);
     ScreenLayout layout;
     layout.top_bar = {0.0, 0.0, w, top};
     layout.bottom_bar = {0.0, h - bottom, w, bottom};
+    layout.seat_bar = {0.0, h - bottom - seat_h, w, seat_h};
     layout.board = {std::floor((w - side) / 2.0), top + std::floor((space_h - side) / 2.0), side,
                     side};
     return layout;
 }
 
-ScreenMapping make_mapping(const Rect& board_rect, double board_size_px, bool flipped) {
+namespace {
+
+// p turned by `quarters` quarter turns about the board centre, clockwise on the screen (y down):
+// one turn takes (dx, dy) from the centre to (-dy, dx). Exact (negations and swaps only).
+Vec2 turned(Vec2 p, int quarters, double board_size_px) {
+    const double c = board_size_px / 2.0;
+    Vec2 d{p.x - c, p.y - c};
+    for (int i = 0; i < (quarters % 4 + 4) % 4; ++i) {
+        d = {-d.y, d.x};
+    }
+    return {c + d.x, c + d.y};
+}
+
+} // namespace
+
+ScreenMapping make_mapping(const Rect& board_rect, double board_size_px, rules::Side bottom) {
     ScreenMapping m;
     m.origin_x = board_rect.x;
     m.origin_y = board_rect.y;
     m.board_size_px = board_size_px;
     m.scale = std::max(std::min(board_rect.w, board_rect.h), 1e-6) / board_size_px;
-    m.flipped = flipped;
+    m.bottom = bottom;
     return m;
 }
 
 Vec2 ScreenMapping::to_screen(Vec2 board_px) const {
-    const Vec2 p =
-        flipped ? Vec2{board_size_px - board_px.x, board_size_px - board_px.y} : board_px;
+    const Vec2 p = turned(board_px, static_cast<int>(bottom), board_size_px);
     return {origin_x + p.x * scale, origin_y + p.y * scale};
 }
 
 Vec2 ScreenMapping::to_board(Vec2 window_px) const {
     const Vec2 p{(window_px.x - origin_x) / scale, (window_px.y - origin_y) / scale};
-    return flipped ? Vec2{board_size_px - p.x, board_size_px - p.y} : p;
+    return turned(p, 4 - static_cast<int>(bottom), board_size_px);
+}
+
+Vec2 ScreenMapping::direction_to_board(Vec2 window_dir) const {
+    const Vec2 o{origin_x, origin_y};
+    return (to_board(o + window_dir) - to_board(o)) * scale;
 }
 
 } // namespace carrom::client

@@ -11,7 +11,7 @@ namespace carrom::client {
 ShotPrediction::ShotPrediction(const PhysicsConfig& physics, const PredictionConfig& config)
     : physics_(physics), config_(config) {}
 
-bool ShotPrediction::start(int turn, std::span<const BodyState> board, Baseline baseline,
+bool ShotPrediction::start(int turn, std::span<const BodyState> board, rules::Side side,
                            const Shot& shot, double offset_s) {
     active_ = false;
     std::vector<Body> bodies;
@@ -23,7 +23,6 @@ bool ShotPrediction::start(int turn, std::span<const BodyState> board, Baseline 
     std::sort(bodies.begin(), bodies.end(),
               [](const Body& a, const Body& b) { return a.id < b.id; });
     // The striker exactly as the server's rules place it (rules::play_shot).
-    const rules::Side side = baseline == Baseline::Top ? rules::Side::Top : rules::Side::Bottom;
     bodies.push_back(rules::striker_for(physics_, side, shot));
     SimOptions options;
     options.record_events = true;
@@ -57,12 +56,12 @@ Vec2 ShotPrediction::drawn_offset(const Blend& blend, double local_s) const {
     return offset;
 }
 
-void ShotPrediction::confirm(std::span<const BodyState> server, double t_s, double local_s) {
+void ShotPrediction::confirm(std::span<const BodyState> server, double shot_t_s, double local_s) {
     if (!active_) {
         return;
     }
     confirmed_ = true;
-    const std::vector<Body> predicted = state_at(physics_, trajectory_, t_s - offset_s_);
+    const std::vector<Body> predicted = state_at(physics_, trajectory_, shot_t_s);
     for (const BodyState& s : server) {
         const auto p = std::find_if(predicted.begin(), predicted.end(),
                                     [&](const Body& b) { return b.id == s.id; });

@@ -4,7 +4,9 @@
 #include "field_reader.hpp"
 #include "message_names.hpp"
 
+#include <cstddef>
 #include <type_traits>
+#include <vector>
 
 namespace carrom::proto {
 
@@ -34,10 +36,18 @@ json encode_body(const Hello& m) {
     }
     return out;
 }
+// "seats" and "bot.seats" go on the wire only when they differ from the singles defaults, so a
+// singles message is the same as before doubles.
 json encode_body(const CreateRoom& m) {
     json out{{"rule_set", to_string(m.rule_set)}, {"options", encode_options(m.options)}};
+    if (m.seats != 2) {
+        out["seats"] = m.seats;
+    }
     if (m.bot) {
         out["bot"] = json{{"level", to_string(m.bot->level)}};
+        if (!m.bot->seats.empty()) {
+            out["bot"]["seats"] = m.bot->seats;
+        }
     }
     return out;
 }
@@ -45,7 +55,11 @@ json encode_body(const JoinRoom& m) {
     return json{{"code", m.code}, {"as", to_string(m.as)}};
 }
 json encode_body(const QuickMatch& m) {
-    return json{{"rule_set", to_string(m.rule_set)}};
+    json out{{"rule_set", to_string(m.rule_set)}};
+    if (m.seats != 2) {
+        out["seats"] = m.seats;
+    }
+    return out;
 }
 json encode_body(const Aim& m) {
     return json{{"turn", m.turn}, {"x", m.x_px}};
@@ -90,7 +104,42 @@ void decode_options(FieldReader& r, RoomOptions& options) {
     }
 }
 
+// "seats": 2 or 4 (absent: 2).
+int decode_seat_count(FieldReader& r) {
+    if (!r.has("seats")) {
+        return 2;
+    }
+    const int seats = r.small_int("seats", 2, static_cast<int>(kMaxSeats));
+    if (r.ok() && seats != 2 && seats != 4) {
+        r.fail("seats", "must be 2 or 4");
+    }
+    return seats;
+}
+
+// "bot.seats": distinct seat indices in 1..seat_count-1, at least one.
+std::vector<int> decode_bot_seats(FieldReader& r, int seat_count) {
+    const auto max_items = static_cast<std::size_t>(seat_count - 1);
+    std::vector<int> seats = r.int_array("seats", 1, seat_count - 1, max_items);
+    if (!r.ok()) {
+        return {};
+    }
+    if (seats.empty()) {
+        r.fail("seats", "must name at least one seat");
+        return {};
+    }
+    for (std::size_t i = 0; i < seats.size(); ++i) {
+        for (std::size_t j = 0; j < i; ++j) {
+            if (seats[i] == seats[j]) {
+                r.fail("seats", "must not name a seat twice");
+                return {};
+            }
+        }
+    }
+    return seats;
+}
+
 void decode_body(FieldReader& r, CreateRoom& m) {
+    m.seats = decode_seat_count(r);
     if (r.has("rule_set")) {
         m.rule_set = r.enumeration("rule_set", RuleSet::Icf);
     }
@@ -107,6 +156,9 @@ void decode_body(FieldReader& r, CreateRoom& m) {
             BotSeat seat;
             if (child.has("level")) {
                 seat.level = child.enumeration("level", BotLevel::Medium);
+            }
+            if (child.has("seats") && r.ok()) {
+                seat.seats = decode_bot_seats(child, m.seats);
             }
             r.merge(child);
             m.bot = seat;
@@ -128,6 +180,7 @@ void decode_body(FieldReader& r, QuickMatch& m) {
     if (r.has("rule_set")) {
         m.rule_set = r.enumeration("rule_set", RuleSet::Icf);
     }
+    m.seats = decode_seat_count(r);
 }
 
 void decode_body(FieldReader& r, Aim& m) {

@@ -125,7 +125,7 @@ MaybeError decode_kind(const Json& j, const std::string& path, BodyKind& out) {
     return std::nullopt;
 }
 
-MaybeError decode_baseline(const Json& j, const std::string& path, Baseline& out) {
+MaybeError decode_baseline(const Json& j, const std::string& path, carrom::Baseline& out) {
     std::string text;
     if (auto e = read_string(j, path, 16, text)) {
         return e;
@@ -133,7 +133,7 @@ MaybeError decode_baseline(const Json& j, const std::string& path, Baseline& out
     if (text != "bottom" && text != "top") {
         return make_error(scene_code::kBadValue, path, path + " must be \"bottom\" or \"top\"");
     }
-    out = text == "bottom" ? Baseline::Bottom : Baseline::Top;
+    out = text == "bottom" ? carrom::Baseline::Bottom : carrom::Baseline::Top;
     return std::nullopt;
 }
 

@@ -68,7 +68,7 @@ Json bodies_to_json(std::span<const Body> bodies) {
 }
 
 Json shot_to_json(const ShotSpec& spec) {
-    return Json{{"baseline", spec.baseline == Baseline::Bottom ? "bottom" : "top"},
+    return Json{{"baseline", spec.baseline == carrom::Baseline::Bottom ? "bottom" : "top"},
                 {"x", spec.shot.x_px},
                 {"angle", spec.shot.angle_rad},
                 {"power", spec.shot.power}};

@@ -56,9 +56,13 @@ void decode_body(FieldReader& r, Welcome& m) {
 
 // --- room_state ---
 json encode_seat(const SeatInfo& s) {
-    return json{{"occupied", s.occupied},        {"name", s.name},
-                {"connected", s.connected},      {"bot", s.bot},
-                {"colour", to_string(s.colour)}, {"baseline", baseline_name(s.baseline)}};
+    return json{{"occupied", s.occupied},
+                {"name", s.name},
+                {"connected", s.connected},
+                {"bot", s.bot},
+                {"colour", to_string(s.colour)},
+                {"baseline", baseline_name(s.baseline)},
+                {"team", s.team}};
 }
 void decode_seat(FieldReader& r, SeatInfo& s) {
     s.occupied = r.boolean("occupied");
@@ -67,6 +71,8 @@ void decode_seat(FieldReader& r, SeatInfo& s) {
     s.bot = r.boolean("bot");
     s.colour = r.enumeration("colour", Colour::None);
     s.baseline = r.enumeration("baseline", Baseline::Bottom);
+    // Absent (a server before doubles): -1 here, the seat's index once the array is read.
+    s.team = r.has("team") ? r.small_int("team", 0, kMaxSeatIndex) : -1;
 }
 
 json encode_board_body(const BoardBody& b) {
@@ -162,8 +168,13 @@ void decode_body(FieldReader& r, RoomState& m) {
         r.merge(o);
     }
     decode_object_array(r, "seats", kMaxSeats, m.seats, decode_seat);
-    if (r.ok() && m.seats.size() < 2) {
-        r.fail("seats", "must have 2 to 4 items");
+    if (r.ok() && m.seats.size() != 2 && m.seats.size() != 4) {
+        r.fail("seats", "must have 2 or 4 items");
+    }
+    for (std::size_t i = 0; i < m.seats.size(); ++i) {
+        if (m.seats[i].team < 0) {
+            m.seats[i].team = static_cast<int>(i);
+        }
     }
     m.spectators = r.small_int("spectators", 0, 1000000);
     m.scores = r.int_array("scores", -kMaxScore, kMaxScore, kMaxSeats);

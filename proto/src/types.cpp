@@ -52,7 +52,10 @@ constexpr NameTable<BotLevel, 4> kBotLevels{{{BotLevel::Random, "random"},
                                              {BotLevel::Easy, "easy"},
                                              {BotLevel::Medium, "medium"},
                                              {BotLevel::Hard, "hard"}}};
-constexpr NameTable<Baseline, 2> kBaselines{{{Baseline::Bottom, "bottom"}, {Baseline::Top, "top"}}};
+constexpr NameTable<Baseline, 4> kBaselines{{{Baseline::Bottom, "bottom"},
+                                             {Baseline::Right, "right"},
+                                             {Baseline::Top, "top"},
+                                             {Baseline::Left, "left"}}};
 
 } // namespace
 

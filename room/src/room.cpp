@@ -12,14 +12,6 @@
 
 namespace carrom::room {
 
-namespace {
-
-Baseline to_baseline(rules::Side side) {
-    return side == rules::Side::Top ? Baseline::Top : Baseline::Bottom;
-}
-
-} // namespace
-
 rules::RulesConfig make_rules_config(proto::RuleSet rule_set, const proto::RoomOptions& options,
                                      double default_shot_clock_s) {
     rules::RulesConfig config;
@@ -45,7 +37,7 @@ Room::Room(std::string code, RoomConfig config, const Clock& clock, RoomCounters
     : code_(std::move(code)), config_(std::move(config)), clock_(clock), counters_(counters),
       observer_(observer), journal_(journal), engine_(config_.physics),
       match_(rules::new_match(to_rules(config_.rule_set), config_.rules, config_.physics)),
-      aim_x_px_(config_.physics.centre().x) {}
+      seats_(match_.seats.size()), aim_x_px_(config_.physics.centre().x) {}
 
 Room::~Room() {
     if (game_running()) {
@@ -131,19 +123,31 @@ std::optional<proto::Error> Room::resume(std::shared_ptr<Peer> peer) {
     return std::nullopt;
 }
 
-std::optional<proto::Error> Room::seat_bot(std::string name, std::shared_ptr<BotBrain> brain) {
+std::optional<proto::Error> Room::seat_bot(std::string name, std::shared_ptr<BotBrain> brain,
+                                           int seat) {
     SeatSlot slot;
     slot.name = std::move(name);
     slot.bot = std::move(brain);
-    return fill_seat(std::move(slot));
+    return fill_seat(std::move(slot), seat);
 }
 
-std::optional<proto::Error> Room::fill_seat(SeatSlot slot) {
+std::optional<proto::Error> Room::fill_seat(SeatSlot slot, int seat_index) {
     auto free =
         std::find_if(seats_.begin(), seats_.end(), [](const SeatSlot& s) { return !s.occupied; });
+    if (seat_index >= 0) {
+        if (seat_index >= seat_count()) {
+            return make_error(proto::code::kBadField,
+                              "This room has no seat " + std::to_string(seat_index) + ".");
+        }
+        free = seats_.begin() + seat_index;
+        if (free->occupied) {
+            return make_error(proto::code::kRoomFull,
+                              "Seat " + std::to_string(seat_index) + " is taken.");
+        }
+    }
     if (free == seats_.end()) {
         return make_error(proto::code::kRoomFull,
-                          "Both seats are taken; join as a spectator instead.");
+                          "Every seat is taken; join as a spectator instead.");
     }
     *free = std::move(slot);
     free->occupied = true;
@@ -371,7 +375,8 @@ proto::RoomState Room::room_state(int you) const {
         info.connected = slot.occupied && (slot.peer != nullptr || slot.bot != nullptr);
         info.bot = slot.bot != nullptr;
         info.colour = colour_of_team(match_, rules::team_of(match_, static_cast<int>(i)));
-        info.baseline = to_baseline(match_.seats[i].side);
+        info.baseline = match_.seats[i].side;
+        info.team = match_.seats[i].team;
         state.seats.push_back(std::move(info));
     }
     state.spectators = static_cast<int>(spectators_.size());

@@ -51,7 +51,7 @@ std::optional<proto::Error> Room::check_input(int seat, int turn) const {
         return make_error(proto::code::kInMotion, "Wait until the pieces stop.");
     }
     if (!started_) {
-        return make_error(proto::code::kWrongPhase, "The game starts when both seats are taken.");
+        return make_error(proto::code::kWrongPhase, "The game starts when every seat is taken.");
     }
     if (auto error = rules::check_turn(match_, seat, turn)) {
         return to_proto_error(*error);
@@ -296,7 +296,8 @@ void Room::rematch(Peer& peer) {
     std::string next_id = journal_ != nullptr ? journal_->next_match_id() : std::string{};
     journal_event(proto::RematchEntry{next_id});
     const int next_turn = match_.turn_number + 1;
-    config_.rules.first_breaker = (config_.rules.first_breaker + 1) % 2;
+    // The next seat breaks the next game (anticlockwise, as the turn passes).
+    config_.rules.first_breaker = rules::next_seat(config_.rules.first_breaker, seat_count());
     match_ = rules::new_match(to_rules(config_.rule_set), config_.rules, config_.physics);
     match_.turn_number = next_turn;
     start_game(std::move(next_id), match_id_);
@@ -321,15 +322,24 @@ std::optional<BotTurn> Room::take_bot_turn() {
     return BotTurn{match_.turn_seat, match_.turn_number, match_, slot.bot};
 }
 
-std::optional<proto::Error> Room::bot_shoot(int seat, int turn, const Shot& shot) {
+BotShotOutcome Room::bot_shoot(int seat, int turn, const Shot& shot) {
     if (seat < 0 || seat >= static_cast<int>(seats_.size()) ||
         !seats_[static_cast<std::size_t>(seat)].bot) {
-        return make_error(proto::code::kNotYourTurn, "That seat has no bot.");
+        return {make_error(proto::code::kNotYourTurn, "That seat has no bot."), std::nullopt};
     }
     if (auto error = check_input(seat, turn)) {
-        return error;
+        return {std::move(error), std::nullopt};
     }
-    return play(seat, shot);
+    auto error = play(seat, shot);
+    if (!error) {
+        return {};
+    }
+    if (const auto legal = rules::nearest_legal_shot(match_, seat, shot)) {
+        if (!play(seat, *legal)) {
+            return {std::nullopt, std::move(error)};
+        }
+    }
+    return {std::move(error), std::nullopt}; // a baseline with no free position
 }
 
 // --- time -------------------------------------------------------------------------------------

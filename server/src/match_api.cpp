@@ -51,6 +51,7 @@ Json listing_to_json(const store::MatchListing& m) {
             {"room", m.room_code},
             {"rule_set", std::string(rules::to_string(m.rule_set))},
             {"players", m.players},
+            {"teams", m.teams},
             {"created_ms", m.created_ms},
             {"finished_ms", m.finished_ms ? Json(*m.finished_ms) : Json(nullptr)},
             {"result", m.result ? proto::game_result_to_json(*m.result) : Json(nullptr)},

@@ -12,14 +12,15 @@ RateLimiter::Verdict RateLimiter::on_message(std::int64_t now_ms) {
         tokens_ = std::min(burst_, tokens_ + static_cast<double>(now_ms - last_ms_) * rate_per_ms_);
         last_ms_ = now_ms;
     }
+    if (tokens_ >= burst_) {
+        rejected_ = 0; // quiet long enough to refill the bucket: earlier excess is forgiven
+    }
     if (tokens_ >= 1.0) {
         tokens_ -= 1.0;
-        rejected_in_a_row_ = 0;
         return Verdict::Accept;
     }
-    ++rejected_in_a_row_;
-    return static_cast<double>(rejected_in_a_row_) >= burst_ ? Verdict::Disconnect
-                                                             : Verdict::Reject;
+    ++rejected_;
+    return static_cast<double>(rejected_) >= burst_ ? Verdict::Disconnect : Verdict::Reject;
 }
 
 } // namespace carrom::server

@@ -63,19 +63,24 @@ void RoomActor::after() {
         // Bots think on bot_pool (one thread: at most one core for bots, the rest stays with the
         // I/O threads); a turn that queued behind other bots gets that much less time.
         const auto queued_at = std::chrono::steady_clock::now();
-        asio::post(core_.bot_pool,
-                   [self = shared_from_this(), t = std::move(*turn), queued_at]() mutable {
-                       const auto waited = std::chrono::duration_cast<std::chrono::milliseconds>(
-                           std::chrono::steady_clock::now() - queued_at);
-                       const Shot shot = t.brain->choose_shot(t.state, t.seat, waited);
-                       asio::post(self->strand_, [self, seat = t.seat, turn_number = t.turn, shot] {
-                           if (auto error = self->room_.bot_shoot(seat, turn_number, shot)) {
-                               spdlog::warn("room {}: bot shot refused: {} ({})", self->code_,
-                                            error->code, error->message);
-                           }
-                           self->after();
-                       });
-                   });
+        asio::post(core_.bot_pool, [self = shared_from_this(), t = std::move(*turn),
+                                    queued_at]() mutable {
+            const auto waited = std::chrono::duration_cast<std::chrono::milliseconds>(
+                std::chrono::steady_clock::now() - queued_at);
+            const Shot shot = t.brain->choose_shot(t.state, t.seat, waited);
+            asio::post(self->strand_, [self, seat = t.seat, turn_number = t.turn, shot] {
+                const room::BotShotOutcome outcome = self->room_.bot_shoot(seat, turn_number, shot);
+                if (outcome.refused) {
+                    spdlog::warn("room {}: bot shot refused: {} ({})", self->code_,
+                                 outcome.refused->code, outcome.refused->message);
+                } else if (outcome.replaced) {
+                    spdlog::warn("room {}: bot shot played as the nearest legal one: "
+                                 "{} ({})",
+                                 self->code_, outcome.replaced->code, outcome.replaced->message);
+                }
+                self->after();
+            });
+        });
     }
     const auto wake = room_.next_wake_ms();
     if (!wake) {

@@ -52,10 +52,11 @@ void ServerCore::remove_address(const std::string& address) {
 }
 
 std::variant<std::shared_ptr<RoomActor>, proto::Error>
-ServerCore::create_room(proto::RuleSet rule_set, const proto::RoomOptions& options) {
+ServerCore::create_room(proto::RuleSet rule_set, const proto::RoomOptions& options, int seats) {
     room::RoomConfig config;
     config.rule_set = rule_set;
     config.rules = room::make_rules_config(rule_set, options, settings.shot_clock_s);
+    config.rules.seat_count = seats;
     config.snapshot_hz = settings.snapshot_hz;
     config.contact_snapshots = settings.contact_snapshots;
     config.time_scale = settings.time_scale;
@@ -66,7 +67,8 @@ ServerCore::create_room(proto::RuleSet rule_set, const proto::RoomOptions& optio
     if (const auto* room = std::get_if<std::shared_ptr<RoomActor>>(&created)) {
         (*room)->bind_journal();
         metrics.rooms.fetch_add(1, std::memory_order_relaxed);
-        spdlog::info("room {} created ({})", (*room)->code(), proto::to_string(rule_set));
+        spdlog::info("room {} created ({}, {} seats)", (*room)->code(), proto::to_string(rule_set),
+                     seats);
     }
     return created;
 }

@@ -3,6 +3,8 @@
 // session-level state (hello, rate limit, timeouts, the quick-match wait), forwards game input to
 // its room's strand, and writes through a bounded queue (one write in flight). Every member is
 // touched only on the session's strand, except the Peer interface, which posts to it.
+// ws_session.cpp: the connection (accept, read, dispatch, write queue, keep-alive, end);
+// ws_session_lobby.cpp: hello, create, join, quick match, entering a room.
 
 #include "asio_types.hpp"
 
@@ -23,6 +25,8 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace carrom::server {
 
@@ -74,10 +78,13 @@ private:
     void handle_quick_match(const proto::QuickMatch& quick);
     // Leaves the quick-match queue and stops the bot fallback timer.
     void stop_quick_match();
-    void on_quick_match_wait(std::uint64_t generation, proto::RuleSet rule_set);
-    // A new room with this player in seat 0 and a server bot in seat 1 (create_room with bot).
-    void enter_bot_room(proto::RuleSet rule_set, const proto::RoomOptions& options,
-                        proto::BotLevel level);
+    void on_quick_match_wait(std::uint64_t generation, proto::RuleSet rule_set, int seats);
+    // A new room of `seats` seats with this player in seat 0, `others` (quick match) in the first
+    // free seats after it and server bots of `level` in `bot_seats` (create_room with bot, or
+    // the quick-match wait ran out).
+    void enter_bot_room(proto::RuleSet rule_set, const proto::RoomOptions& options, int seats,
+                        proto::BotLevel level, const std::vector<int>& bot_seats,
+                        const std::vector<std::shared_ptr<WsSession>>& others = {});
     void enter_room(const std::shared_ptr<RoomActor>& room, proto::Role role);
     void send_now(room::Outgoing message);
     void send_error(std::string_view code, std::string message);

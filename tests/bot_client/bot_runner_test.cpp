@@ -3,43 +3,17 @@
 #include "carrom/bots/match_view.hpp"
 #include "carrom/bots/scripted_strategy.hpp"
 #include "carrom/rules/match.hpp"
+#include "fake_connection.hpp"
 
 #include <gtest/gtest.h>
-
-#include <deque>
 
 namespace carrom::bots {
 namespace {
 
 using namespace std::chrono_literals;
 
-// Records what the runner sends; delivers what the test queues.
-struct FakeWire {
-    std::vector<proto::ClientMessage> sent;
-    std::deque<proto::ServerMessage> inbox;
-    net::ConnectionStatus status{net::ConnectionState::Open, "fake"};
-    int opened = 0;
-    bool refuse = false; // connections opened from now on are refused
-};
-
-class FakeConnection final : public net::Connection {
-public:
-    explicit FakeConnection(FakeWire& wire) : wire_(wire) {}
-    void send(const proto::ClientMessage& message) override { wire_.sent.push_back(message); }
-    void send_text(const std::string&) override {}
-    std::vector<proto::ServerMessage> poll() override {
-        std::vector<proto::ServerMessage> out(wire_.inbox.begin(), wire_.inbox.end());
-        wire_.inbox.clear();
-        return out;
-    }
-    bool wait(std::chrono::milliseconds) override { return !wire_.inbox.empty(); }
-    net::ConnectionStatus status() const override { return wire_.status; }
-    int decode_errors() const override { return 0; }
-    void close() override { wire_.status = {net::ConnectionState::Closed, "closed"}; }
-
-private:
-    FakeWire& wire_;
-};
+using fake::FakeConnection;
+using fake::FakeWire;
 
 proto::RoomState room_for(const rules::MatchState& match, int you, proto::Phase phase) {
     proto::RoomState room;

@@ -1,3 +1,4 @@
+#include "bots/search_support.hpp"
 #include "carrom/bots/arena.hpp"
 #include "carrom/bots/greedy_strategy.hpp"
 #include "carrom/bots/position_value.hpp"
@@ -15,6 +16,9 @@
 
 namespace carrom::bots {
 namespace {
+
+using test::candidates;
+using test::play;
 
 constexpr double kDeg = std::numbers::pi / 180.0;
 
@@ -58,23 +62,11 @@ int first_of(const rules::MatchState& state, BodyKind kind) {
     return -1;
 }
 
-DecisionBudget candidates(int n) {
-    DecisionBudget budget;
-    budget.time = std::chrono::seconds(60); // the candidate limit ends the search
-    budget.max_candidates = n;
-    return budget;
-}
-
 GreedyStrategy greedy(SkillLevel level, std::uint64_t seed = 1) {
     GreedyOptions options;
     options.level = level;
     options.seed = seed;
     return GreedyStrategy(options);
-}
-
-rules::PlayResult play(const rules::MatchState& state, int seat, const Shot& shot) {
-    ExactEngine engine(state.physics);
-    return rules::play_shot(state, seat, shot, engine);
 }
 
 // --- skill levels ---------------------------------------------------------------------------
@@ -445,7 +437,7 @@ TEST(Arena, ASeatThatKeepsShootingIllegallyForfeits) {
     ArenaOptions options;
     const GameRecord record = play_game(start, {&illegal, &random}, options);
     EXPECT_TRUE(record.finished);
-    EXPECT_EQ(record.winner_seat, 1);
+    EXPECT_EQ(record.winner_team, 1);
     EXPECT_EQ(record.reason, rules::RuleCode::Forfeit);
     EXPECT_EQ(record.seats[0].refusals, options.max_refusals + 1);
     EXPECT_EQ(record.seats[0].strokes, 0);
@@ -464,7 +456,7 @@ TEST(Arena, GreedyBeatsRandomInEveryRuleSet) {
         options.budget = candidates(1500);
         const GameRecord record = play_game(start, {&random, &bot}, options);
         EXPECT_TRUE(record.finished) << rules::to_string(rule_set);
-        EXPECT_EQ(record.winner_seat, 1) << rules::to_string(rule_set);
+        EXPECT_EQ(record.winner_team, 1) << rules::to_string(rule_set);
         EXPECT_EQ(record.seats[1].refusals, 0);
         EXPECT_GT(record.seats[1].strokes, 0);
         EXPECT_GT(record.seats[1].candidates, 0);

@@ -11,18 +11,18 @@
 namespace carrom::bots {
 namespace {
 
-rules::MatchState match_of(rules::RuleSet rule_set) {
+rules::MatchState match_with_defaults(rules::RuleSet rule_set) {
     return rules::new_match(rule_set, rules::RulesConfig{}, PhysicsConfig{});
 }
 
 TEST(ShotGeometry, ForwardIsUpForBottomAndDownForTop) {
-    const auto state = match_of(rules::RuleSet::Icf);
+    const auto state = match_with_defaults(rules::RuleSet::Icf);
     EXPECT_DOUBLE_EQ(forward_angle(state, 0), -std::numbers::pi / 2.0);
     EXPECT_DOUBLE_EQ(forward_angle(state, 1), std::numbers::pi / 2.0);
 }
 
 TEST(ShotGeometry, NearestLegalXIsTheSameWhenFree) {
-    const auto state = match_of(rules::RuleSet::Icf);
+    const auto state = match_with_defaults(rules::RuleSet::Icf);
     EXPECT_DOUBLE_EQ(*nearest_legal_x(state, 0, 300.0), 300.0);
     const auto range = baseline_range(state);
     EXPECT_DOUBLE_EQ(*nearest_legal_x(state, 0, 0.0), range.min_px);
@@ -31,7 +31,7 @@ TEST(ShotGeometry, NearestLegalXIsTheSameWhenFree) {
 
 TEST(RandomStrategy, ShotsAreLegalAndAimedIntoTheBoard) {
     for (const int seat : {0, 1}) {
-        auto state = match_of(rules::RuleSet::Icf);
+        auto state = match_with_defaults(rules::RuleSet::Icf);
         state.turn_seat = seat;
         RandomStrategy strategy(7);
         for (int i = 0; i < 200; ++i) {
@@ -46,7 +46,7 @@ TEST(RandomStrategy, ShotsAreLegalAndAimedIntoTheBoard) {
 }
 
 TEST(RandomStrategy, SameSeedSameShots) {
-    const auto state = match_of(rules::RuleSet::Freestyle);
+    const auto state = match_with_defaults(rules::RuleSet::Freestyle);
     RandomStrategy a(99);
     RandomStrategy b(99);
     RandomStrategy c(100);
@@ -64,7 +64,7 @@ TEST(RandomStrategy, SameSeedSameShots) {
 }
 
 TEST(ShotScore, OwnCoinsCountForAndFoulsAgainst) {
-    const auto before = match_of(rules::RuleSet::Freestyle);
+    const auto before = match_with_defaults(rules::RuleSet::Freestyle);
     rules::PlayResult result;
     result.state = before;
     result.outcome.seat = 0;
@@ -78,7 +78,7 @@ TEST(ShotScore, OwnCoinsCountForAndFoulsAgainst) {
 }
 
 TEST(ShotScore, OpponentColourCountsAgainst) {
-    const auto before = match_of(rules::RuleSet::Seed); // team 0 black, team 1 white
+    const auto before = match_with_defaults(rules::RuleSet::Seed); // team 0 black, team 1 white
     rules::PlayResult result;
     result.state = before;
     int black = -1;
@@ -98,7 +98,7 @@ TEST(ShotScore, OpponentColourCountsAgainst) {
 }
 
 TEST(ShotScore, WinningTheGameDominates) {
-    const auto before = match_of(rules::RuleSet::Icf);
+    const auto before = match_with_defaults(rules::RuleSet::Icf);
     rules::PlayResult result;
     result.state = before;
     result.outcome.game_end = rules::GameResult{1, rules::RuleCode::BoardCleared};
@@ -107,7 +107,7 @@ TEST(ShotScore, WinningTheGameDominates) {
 }
 
 TEST(SamplingStrategy, PicksTheBestOfItsCandidates) {
-    const auto state = match_of(rules::RuleSet::Freestyle);
+    const auto state = match_with_defaults(rules::RuleSet::Freestyle);
     SamplingStrategy sampling(5, 24);
     DecisionBudget budget;
     budget.time = std::chrono::seconds(30); // the candidate count ends the search
@@ -127,7 +127,7 @@ TEST(SamplingStrategy, PicksTheBestOfItsCandidates) {
 }
 
 TEST(SamplingStrategy, CandidateLimitOfTheBudgetIsHonoured) {
-    const auto state = match_of(rules::RuleSet::Icf);
+    const auto state = match_with_defaults(rules::RuleSet::Icf);
     SamplingStrategy sampling(1, 100);
     DecisionBudget budget;
     budget.time = std::chrono::seconds(30);

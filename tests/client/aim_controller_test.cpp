@@ -1,4 +1,5 @@
 #include "carrom/client/aim_controller.hpp"
+#include "client/aim_support.hpp"
 
 #include <gtest/gtest.h>
 
@@ -9,8 +10,8 @@
 namespace carrom::client {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-const std::vector<BodyState> kEmpty;
+using test::kEmpty;
+using test::kPi;
 
 TEST(BaselineClamp, ClampsToTheLegalRange) {
     const PhysicsConfig c;
@@ -59,7 +60,7 @@ TEST(AimController, TakesNoInputOutsideOurTurn) {
 
 TEST(AimController, PullBackShootsAwayFromThePointer) {
     AimController aim{PhysicsConfig{}};
-    aim.begin_turn(Baseline::Bottom, 300.0);
+    aim.begin_turn(rules::Side::Bottom, 300.0);
     aim.pointer_down({302.0, 521.0}, kEmpty); // on the striker
     EXPECT_EQ(aim.phase(), AimPhase::Pulling);
     aim.pointer_move({300.0, 600.0}, kEmpty);
@@ -73,7 +74,7 @@ TEST(AimController, PullBackShootsAwayFromThePointer) {
 
 TEST(AimController, TopBaselineShotsGoDown) {
     AimController aim{PhysicsConfig{}};
-    aim.begin_turn(Baseline::Top, 200.0);
+    aim.begin_turn(rules::Side::Top, 200.0);
     EXPECT_EQ(aim.striker_px(), (Vec2{200.0, 80.0}));
     aim.pointer_down({200.0, 80.0}, kEmpty);
     const auto shot = aim.pointer_up({160.0, 40.0}, kEmpty);
@@ -83,7 +84,7 @@ TEST(AimController, TopBaselineShotsGoDown) {
 
 TEST(AimController, FullPullIsMaxPower) {
     AimController aim{PhysicsConfig{}};
-    aim.begin_turn(Baseline::Bottom, 300.0);
+    aim.begin_turn(rules::Side::Bottom, 300.0);
     aim.pointer_down({300.0, 520.0}, kEmpty);
     aim.pointer_move({300.0, 1000.0}, kEmpty);
     EXPECT_DOUBLE_EQ(aim.power_fraction(), 1.0);
@@ -92,14 +93,14 @@ TEST(AimController, FullPullIsMaxPower) {
 
 TEST(AimController, ShortPullIsNoShot) {
     AimController aim{PhysicsConfig{}};
-    aim.begin_turn(Baseline::Bottom, 300.0);
+    aim.begin_turn(rules::Side::Bottom, 300.0);
     aim.pointer_down({300.0, 520.0}, kEmpty);
     EXPECT_FALSE(aim.pointer_up({300.0, 525.0}, kEmpty).has_value());
 }
 
 TEST(AimController, EscapeCancelsThePull) {
     AimController aim{PhysicsConfig{}};
-    aim.begin_turn(Baseline::Bottom, 300.0);
+    aim.begin_turn(rules::Side::Bottom, 300.0);
     aim.pointer_down({300.0, 520.0}, kEmpty);
     aim.pointer_move({300.0, 620.0}, kEmpty);
     aim.cancel();
@@ -109,7 +110,7 @@ TEST(AimController, EscapeCancelsThePull) {
 
 TEST(AimController, SlidingFollowsThePointerClamped) {
     AimController aim{PhysicsConfig{}};
-    aim.begin_turn(Baseline::Bottom, 300.0);
+    aim.begin_turn(rules::Side::Bottom, 300.0);
     EXPECT_FALSE(aim.take_moved());
     aim.pointer_down({250.0, 530.0}, kEmpty); // in the band, off the striker
     EXPECT_EQ(aim.phase(), AimPhase::Sliding);
@@ -124,14 +125,14 @@ TEST(AimController, SlidingFollowsThePointerClamped) {
 
 TEST(AimController, PressFarFromTheBaselineDoesNothing) {
     AimController aim{PhysicsConfig{}};
-    aim.begin_turn(Baseline::Bottom, 300.0);
+    aim.begin_turn(rules::Side::Bottom, 300.0);
     aim.pointer_down({250.0, 300.0}, kEmpty);
     EXPECT_EQ(aim.phase(), AimPhase::Idle);
 }
 
 TEST(AimController, ArrowKeysStepAndClamp) {
     AimController aim{PhysicsConfig{}};
-    aim.begin_turn(Baseline::Bottom, 300.0);
+    aim.begin_turn(rules::Side::Bottom, 300.0);
     aim.nudge(+1, false, kEmpty);
     EXPECT_DOUBLE_EQ(aim.striker_x(), 301.0);
     aim.nudge(-1, true, kEmpty);
@@ -145,7 +146,7 @@ TEST(AimController, ArrowKeysStepAndClamp) {
 TEST(AimController, IllegalPlacementIsShownAndNeverShoots) {
     const std::vector<BodyState> pieces{{3, BodyKind::Black, {320.0, 510.0}, {}, false}};
     AimController aim{PhysicsConfig{}};
-    aim.begin_turn(Baseline::Bottom, 200.0);
+    aim.begin_turn(rules::Side::Bottom, 200.0);
     EXPECT_TRUE(aim.placement().legal);
     aim.pointer_down({300.0, 540.0}, pieces); // slide onto the coin
     EXPECT_FALSE(aim.placement().legal);
@@ -164,7 +165,7 @@ TEST(AimController, IllegalPlacementIsShownAndNeverShoots) {
 
 TEST(AimController, NonFinitePointerIsIgnored) {
     AimController aim{PhysicsConfig{}};
-    aim.begin_turn(Baseline::Bottom, 300.0);
+    aim.begin_turn(rules::Side::Bottom, 300.0);
     aim.pointer_down({std::nan(""), 520.0}, kEmpty);
     EXPECT_EQ(aim.phase(), AimPhase::Idle);
 }

@@ -20,14 +20,15 @@ MatchView two_seats() {
 }
 
 TEST(BoardReport, RoomTurnAndLayout) {
-    const ScreenMapping m = make_mapping({54.0, 68.0, 792.0, 792.0}, 600.0, false);
+    const ScreenMapping m = make_mapping({54.0, 68.0, 792.0, 792.0}, 600.0);
     const auto j = nlohmann::json::parse(
-        board_report_json(two_seats(), {}, m, {900.0, 900.0, 2, std::nullopt}));
+        board_report_json(two_seats(), {}, m, {900.0, 900.0, 2, std::nullopt, {}}));
     EXPECT_EQ(j.at("room"), "ABC234");
     EXPECT_EQ(j.at("you"), 1);
     EXPECT_EQ(j.at("turn"), 3);
     EXPECT_EQ(j.at("phase"), "aiming");
     EXPECT_EQ(j.at("flipped"), false);
+    EXPECT_EQ(j.at("bottom_side"), "bottom");
     EXPECT_EQ(j.at("window").at("w"), 900.0);
     EXPECT_EQ(j.at("board").at("x"), 54.0);
     EXPECT_EQ(j.at("board").at("y"), 68.0);
@@ -39,13 +40,13 @@ TEST(BoardReport, RoomTurnAndLayout) {
 }
 
 TEST(BoardReport, BodiesInBoardAndWindowPxThroughTheTurnedView) {
-    const ScreenMapping m = make_mapping({100.0, 50.0, 300.0, 300.0}, 600.0, true);
+    const ScreenMapping m = make_mapping({100.0, 50.0, 300.0, 300.0}, 600.0, rules::Side::Top);
     const std::vector<RenderedBody> bodies{
         {0, BodyKind::Queen, {300.0, 300.0}, 1.0, 1.0, false},
         {7, BodyKind::White, {100.0, 500.0}, 0.5, 0.25, true},
         {-1, BodyKind::Striker, {300.0, 520.0}, 1.0, 1.0, false}};
     const auto j = nlohmann::json::parse(
-        board_report_json(two_seats(), bodies, m, {500.0, 400.0, 0, std::nullopt}));
+        board_report_json(two_seats(), bodies, m, {500.0, 400.0, 0, std::nullopt, {}}));
     ASSERT_EQ(j.at("bodies").size(), 3u);
     const auto& queen = j.at("bodies")[0];
     EXPECT_EQ(queen.at("kind"), "queen");
@@ -63,14 +64,26 @@ TEST(BoardReport, BodiesInBoardAndWindowPxThroughTheTurnedView) {
     EXPECT_EQ(j.at("bodies")[2].at("id"), -1);
     EXPECT_EQ(j.at("bodies")[2].at("kind"), "striker");
     EXPECT_EQ(j.at("flipped"), true);
+    EXPECT_EQ(j.at("bottom_side"), "top");
 }
 
 TEST(BoardReport, OverlayRect) {
-    const ScreenMapping m = make_mapping({0.0, 0.0, 600.0, 600.0}, 600.0, false);
-    ReportContext c{600.0, 700.0, 1, Rect{10.0, 20.0, 30.0, 40.0}};
+    const ScreenMapping m = make_mapping({0.0, 0.0, 600.0, 600.0}, 600.0);
+    ReportContext c{600.0, 700.0, 1, Rect{10.0, 20.0, 30.0, 40.0}, {}};
     const auto j = nlohmann::json::parse(board_report_json(two_seats(), {}, m, c));
     EXPECT_EQ(j.at("overlay"),
               (nlohmann::json{{"x", 10.0}, {"y", 20.0}, {"w", 30.0}, {"h", 40.0}}));
+}
+
+TEST(BoardReport, PredictionFigures) {
+    const ScreenMapping m = make_mapping({0.0, 0.0, 600.0, 600.0}, 600.0);
+    ReportContext c{600.0, 700.0, 1, std::nullopt, {}};
+    c.prediction.strokes = 7;
+    c.prediction.corrections = 2;
+    c.prediction.max_difference_px = 5.5;
+    const auto j = nlohmann::json::parse(board_report_json(two_seats(), {}, m, c));
+    EXPECT_EQ(j.at("prediction"),
+              (nlohmann::json{{"strokes", 7}, {"corrections", 2}, {"max_difference_px", 5.5}}));
 }
 
 } // namespace

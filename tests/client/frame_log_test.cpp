@@ -5,6 +5,7 @@
 // carrom-sim --frame-error, with the server's journal of the game, finds every board the client
 // drew at rest after a stroke equal to the server's final board.
 
+#include "client_program.hpp"
 #include "support/child_process.hpp"
 #include "support/command_run.hpp"
 #include "support/server_process.hpp"
@@ -13,7 +14,6 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include <cstdlib>
 #include <fstream>
 #include <map>
 #include <set>
@@ -58,35 +58,13 @@ TEST(FrameLog, RecordsEveryFrameOfARealGameAndItsFinalBoards) {
     ASSERT_TRUE(room) << bot.output();
     const std::string code = room->substr(5);
     const std::string frames_path = dir.file("frames.jsonl");
-    std::vector<std::string> argv;
-    if (std::getenv("DISPLAY") == nullptr) {
-        argv = {"xvfb-run", "-a", "-s", "-screen 0 1280x1024x24"};
-    }
-    for (const std::string& a : {std::string(CARROM_CLIENT_PATH),
-                                 std::string("--url"),
-                                 server.url(),
-                                 std::string("--name"),
-                                 std::string("Ana"),
-                                 std::string("--join"),
-                                 code,
-                                 std::string("--mute"),
-                                 std::string("--width"),
-                                 std::string("600"),
-                                 std::string("--height"),
-                                 std::string("600"),
-                                 std::string("--autoplay"),
-                                 std::string("easy"),
-                                 std::string("--frame-log"),
-                                 frames_path,
-                                 std::string("--final-state"),
-                                 dir.file("final.json"),
-                                 std::string("--timeout"),
-                                 std::string("140")}) {
-        argv.push_back(a);
-    }
-    const char* asan = std::getenv("ASAN_OPTIONS");
-    ChildProcess client(
-        argv, {std::string("ASAN_OPTIONS=") + (asan != nullptr ? asan : "") + ":detect_leaks=0"});
+    const std::vector<std::string> argv = client_argv(
+        {std::string("--url"), server.url(), std::string("--name"), std::string("Ana"),
+         std::string("--join"), code, std::string("--mute"), std::string("--width"),
+         std::string("600"), std::string("--height"), std::string("600"), std::string("--autoplay"),
+         std::string("easy"), std::string("--frame-log"), frames_path, std::string("--final-state"),
+         dir.file("final.json"), std::string("--timeout"), std::string("140")});
+    ChildProcess client(argv, {client_asan_options()});
     const auto exit = client.wait_exit(Clock::now() + 150s);
     ASSERT_TRUE(exit) << client.output();
     ASSERT_EQ(*exit, 0) << client.output();

@@ -123,5 +123,52 @@ TEST(GameOverText, UnknownOrMissingReasons) {
     EXPECT_EQ(t.score, "Final score: Ana 4, Bot (medium) 25");
 }
 
+// Doubles: Asha (0) and Ravi (2) against Ben (1) and a bot (3); winner is a team.
+MatchView doubles_ended(int you, int winner, std::string reason, std::vector<int> scores) {
+    MatchView v = ended(you, winner, std::move(reason), std::move(scores));
+    v.seats.resize(4);
+    const char* names[] = {"Asha", "Ben", "Ravi", "Bot (easy)"};
+    for (std::size_t i = 0; i < 4; ++i) {
+        v.seats[i] = SeatView{};
+        v.seats[i].occupied = true;
+        v.seats[i].name = names[i];
+    }
+    v.seats[3].bot = true;
+    return v;
+}
+
+TEST(GameOverText, DoublesNamesTheWinningTeam) {
+    const GameOverText spectator =
+        game_over_text(doubles_ended(-1, 0, "score", {25, 12, 25, 12}), false);
+    EXPECT_EQ(spectator.title, "Asha & Ravi win");
+    EXPECT_EQ(spectator.reason, "Asha & Ravi reached 25 points.");
+    EXPECT_EQ(spectator.score, "Final score: Asha & Ravi 25, Ben & Bot (easy) 12");
+    const GameOverText partner =
+        game_over_text(doubles_ended(2, 0, "boards", {14, 10, 14, 10}), false);
+    EXPECT_EQ(partner.title, "You & Asha win");
+    EXPECT_EQ(partner.reason, "All 8 boards are played and you & Asha have more points.");
+    const GameOverText loser =
+        game_over_text(doubles_ended(1, 0, "score", {25, 12, 25, 12}), false);
+    EXPECT_EQ(loser.title, "Asha & Ravi win");
+    EXPECT_EQ(loser.score, "Final score: Ben & Bot (easy) 12, Asha & Ravi 25");
+    EXPECT_EQ(game_over_text(doubles_ended(0, 1, "clock", {0, 0, 0, 0}), false).reason,
+              "A player of your team let the shot clock run out three times in a row.");
+    EXPECT_EQ(game_over_text(doubles_ended(0, 0, "left", {3, 0, 3, 0}), false).reason,
+              "A player of Ben & Bot (easy) left the game.");
+}
+
+TEST(GameOverText, DoublesRematchWaitsForTheOtherHumans) {
+    EXPECT_EQ(game_over_text(doubles_ended(0, 0, "score", {25, 1, 25, 1}), true).waiting,
+              "Waiting for the other players to agree to a rematch");
+    MatchView bots = doubles_ended(0, 0, "score", {25, 1, 25, 1});
+    bots.seats[1].bot = true;
+    bots.seats[2].bot = true; // only server bots besides us: they agree at once
+    EXPECT_EQ(game_over_text(bots, true).waiting,
+              "Waiting for the other players to agree to a rematch");
+    MatchView one = doubles_ended(0, 0, "score", {25, 1, 25, 1});
+    one.seats[2].bot = true;
+    EXPECT_EQ(game_over_text(one, true).waiting, "Waiting for Ben to agree to a rematch");
+}
+
 } // namespace
 } // namespace carrom::client

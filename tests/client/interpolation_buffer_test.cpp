@@ -1,5 +1,6 @@
 #include "carrom/client/hermite.hpp"
 #include "carrom/client/interpolation_buffer.hpp"
+#include "client/interpolation_support.hpp"
 
 #include <gtest/gtest.h>
 
@@ -8,15 +9,9 @@
 namespace carrom::client {
 namespace {
 
-const BoardGeometry kGeometry = make_board_geometry(PhysicsConfig{});
-
-BodyState body(int id, Vec2 pos, Vec2 vel = {}, bool pocketed = false) {
-    return {id, id == 0 ? BodyKind::Queen : BodyKind::White, pos, vel, pocketed};
-}
-
-Snapshot snap(std::uint64_t seq, double t, bool key, std::vector<BodyState> bodies) {
-    return {seq, t, key, std::move(bodies)};
-}
+using test::body;
+using test::kGeometry;
+using test::snap;
 
 const RenderedBody* find(const std::vector<RenderedBody>& v, int id) {
     const auto it =

@@ -5,6 +5,7 @@
 #include "carrom/client/hermite.hpp"
 #include "carrom/client/interpolation_buffer.hpp"
 #include "carrom/trajectory.hpp"
+#include "client/interpolation_support.hpp"
 
 #include <gtest/gtest.h>
 
@@ -14,17 +15,12 @@
 namespace carrom::client {
 namespace {
 
+using test::body;
+using test::kGeometry;
+using test::snap;
+
 const PhysicsConfig kPhysics{};
-const BoardGeometry kGeometry = make_board_geometry(kPhysics);
 const double kK = kPhysics.damping_per_s;
-
-BodyState body(int id, Vec2 pos, Vec2 vel = {}, bool pocketed = false) {
-    return {id, BodyKind::White, pos, vel, pocketed};
-}
-
-Snapshot snap(std::uint64_t seq, double t, bool key, std::vector<BodyState> bodies) {
-    return {seq, t, key, std::move(bodies)};
-}
 
 Vec2 at(Vec2 p, Vec2 v, double dt) {
     return p + v * travel_factor_s(kK, dt);

@@ -13,8 +13,8 @@ proto::RoomState room(int you = 0) {
     r.you = you;
     r.rule_set = proto::RuleSet::Icf;
     r.seats.resize(2);
-    r.seats[0] = {true, "Ana", true, false, proto::Colour::White, Baseline::Bottom};
-    r.seats[1] = {true, "Ben", true, false, proto::Colour::Black, Baseline::Top};
+    r.seats[0] = {true, "Ana", true, false, proto::Colour::White, proto::Baseline::Bottom};
+    r.seats[1] = {true, "Ben", true, false, proto::Colour::Black, proto::Baseline::Top};
     r.scores = {3, 1};
     r.dues = {0, 1};
     r.turn = 4;
@@ -40,7 +40,7 @@ TEST(MatchModel, RoomStateFillsTheView) {
     EXPECT_EQ(v.seats[1].dues, 1);
     EXPECT_EQ(v.seats[1].colour, proto::Colour::Black);
     EXPECT_TRUE(m.my_turn());
-    EXPECT_FALSE(m.flipped());
+    EXPECT_EQ(m.view_side(), rules::Side::Bottom);
     EXPECT_FALSE(m.spectator());
     const auto board = m.board_now();
     ASSERT_EQ(board.size(), 3u);
@@ -50,12 +50,77 @@ TEST(MatchModel, RoomStateFillsTheView) {
 TEST(MatchModel, TopSeatSeesTheBoardTurned) {
     MatchModel m{PhysicsConfig{}};
     m.handle(room(1), 0.0);
-    EXPECT_TRUE(m.flipped());
+    EXPECT_EQ(m.view_side(), rules::Side::Top);
     EXPECT_FALSE(m.my_turn());
+    EXPECT_EQ(partner_of(m.view(), 1), -1); // singles: no partners
+    EXPECT_EQ(team_of(m.view(), 1), 1);
     MatchModel spectator{PhysicsConfig{}};
     spectator.handle(room(-1), 0.0);
     EXPECT_TRUE(spectator.spectator());
-    EXPECT_FALSE(spectator.flipped());
+    EXPECT_EQ(spectator.view_side(), rules::Side::Bottom);
+}
+
+// Doubles: Asha (0, bottom) and Cy (2, top) against Ravi (1, right) and Dee (3, left); a seat's
+// score and dues are its team's.
+proto::RoomState doubles_room(int you) {
+    proto::RoomState r = room(you);
+    r.seats.resize(4);
+    r.seats[0] = {true, "Asha", true, false, proto::Colour::White, proto::Baseline::Bottom};
+    r.seats[1] = {true, "Ravi", true, true, proto::Colour::Black, proto::Baseline::Right};
+    r.seats[2] = {true, "Cy", true, false, proto::Colour::White, proto::Baseline::Top};
+    r.seats[3] = {true, "Dee", false, false, proto::Colour::Black, proto::Baseline::Left};
+    r.scores = {7, 3, 7, 3};
+    r.dues = {0, 1, 0, 1};
+    r.to_play = 1;
+    return r;
+}
+
+TEST(MatchModel, FourSeatRoomStateGivesSidesTeamsAndTurnedViews) {
+    const rules::Side expected[] = {rules::Side::Bottom, rules::Side::Right, rules::Side::Top,
+                                    rules::Side::Left};
+    for (int you = 0; you < 4; ++you) {
+        MatchModel m{PhysicsConfig{}};
+        m.handle(doubles_room(you), 1.0);
+        const MatchView& v = m.view();
+        ASSERT_EQ(v.seats.size(), 4u);
+        EXPECT_EQ(m.view_side(), expected[you]) << you;
+        EXPECT_EQ(m.my_turn(), you == 1) << you;
+        for (int seat = 0; seat < 4; ++seat) {
+            EXPECT_EQ(m.seat_side(seat), expected[seat]);
+            EXPECT_EQ(team_of(v, seat), seat % 2);
+            EXPECT_EQ(partner_of(v, seat), (seat + 2) % 4);
+        }
+    }
+    MatchModel m{PhysicsConfig{}};
+    m.handle(doubles_room(3), 1.0);
+    const MatchView& v = m.view();
+    EXPECT_EQ(v.seats[1].score, v.seats[3].score);
+    EXPECT_EQ(v.seats[3].dues, 1);
+    EXPECT_FALSE(v.seats[3].connected);
+    EXPECT_EQ(team_seats(v, 0), (std::vector<int>{0, 2}));
+    EXPECT_EQ(team_name(v, 0), "Asha & Cy");
+    EXPECT_EQ(team_name(v, 1), "Ravi & Dee");
+    // Partners play the same colour: each sees the same coins left.
+    m.render(1.0);
+    EXPECT_EQ(*m.coins_left(1), *m.coins_left(3));
+    EXPECT_EQ(m.coins_left(1)->colour, proto::Colour::Black);
+    MatchModel spectator{PhysicsConfig{}};
+    spectator.handle(doubles_room(-1), 1.0);
+    EXPECT_EQ(spectator.view_side(), rules::Side::Bottom);
+}
+
+TEST(MatchModel, DoublesGameEndNamesTheWinningTeam) {
+    MatchModel m{PhysicsConfig{}};
+    m.handle(doubles_room(2), 1.0);
+    proto::GameEndEvent end;
+    end.winner = 0; // team 0: seats 0 and 2
+    end.reason = "score";
+    end.scores = {25, 11, 25, 11};
+    m.handle(proto::Event{end}, 2.0);
+    ASSERT_TRUE(m.view().result.has_value());
+    EXPECT_EQ(m.view().result->winner, 0);
+    EXPECT_EQ(m.view().seats[2].score, 25);
+    EXPECT_EQ(team_of(m.view(), m.view().you), m.view().result->winner);
 }
 
 TEST(MatchModel, ShotClockCountsDownByTheServersClock) {

@@ -9,6 +9,7 @@
 #include "carrom/client/screen_mapping.hpp"
 #include "carrom/config.hpp"
 #include "carrom/net/connection.hpp"
+#include "client_program.hpp"
 #include "support/child_process.hpp"
 
 #include <SFML/Graphics/Image.hpp>
@@ -17,7 +18,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -30,14 +30,6 @@ namespace {
 using test_support::ChildProcess;
 using Clock = std::chrono::steady_clock;
 using namespace std::chrono_literals;
-
-// Under AddressSanitizer the client runs without the leak check: Mesa's GL driver leaks a few
-// hundred bytes per process (from a module it unloads at exit, so LeakSanitizer cannot suppress
-// them by name; a bare SFML window shows the same). Every other check stays on.
-std::string client_asan_options() {
-    const char* now = std::getenv("ASAN_OPTIONS");
-    return std::string("ASAN_OPTIONS=") + (now != nullptr ? now : "") + ":detect_leaks=0";
-}
 
 std::string after_prefix(const std::optional<std::string>& line, const std::string& prefix) {
     return line ? line->substr(prefix.size()) : std::string();
@@ -164,34 +156,27 @@ Outcome play_one_shot(const std::filesystem::path& dir) {
     }
     const std::string png = (dir / "shot.png").string();
     const std::string json = (dir / "shot.json").string();
-    std::vector<std::string> argv;
-    if (std::getenv("DISPLAY") == nullptr) {
-        argv = {"xvfb-run", "-a", "-s", "-screen 0 1280x1024x24"};
-    }
-    for (const std::string& a : {std::string(CARROM_CLIENT_PATH),
-                                 std::string("--url"),
-                                 url,
-                                 std::string("--name"),
-                                 std::string("Ana"),
-                                 std::string("--join"),
-                                 o.code,
-                                 std::string("--mute"),
-                                 std::string("--width"),
-                                 std::string("900"),
-                                 std::string("--height"),
-                                 std::string("900"),
-                                 std::string("--screenshot"),
-                                 png,
-                                 std::string("--report"),
-                                 json,
-                                 std::string("--frames"),
-                                 std::string("30"),
-                                 std::string("--after-shots"),
-                                 std::string("1"),
-                                 std::string("--timeout"),
-                                 std::string("45")}) {
-        argv.push_back(a);
-    }
+    const std::vector<std::string> argv = client_argv({std::string("--url"),
+                                                       url,
+                                                       std::string("--name"),
+                                                       std::string("Ana"),
+                                                       std::string("--join"),
+                                                       o.code,
+                                                       std::string("--mute"),
+                                                       std::string("--width"),
+                                                       std::string("900"),
+                                                       std::string("--height"),
+                                                       std::string("900"),
+                                                       std::string("--screenshot"),
+                                                       png,
+                                                       std::string("--report"),
+                                                       json,
+                                                       std::string("--frames"),
+                                                       std::string("30"),
+                                                       std::string("--after-shots"),
+                                                       std::string("1"),
+                                                       std::string("--timeout"),
+                                                       std::string("45")});
     ChildProcess client(argv, {client_asan_options()});
     std::optional<int> exit;
     while (!exit && Clock::now() < deadline) {
@@ -255,7 +240,7 @@ TEST(NetworkMatch, ClientShowsTheBoardTheServerReportsAfterABotShot) {
                                           o.report.at("board").at("y").get<double>(),
                                           o.report.at("board").at("side").get<double>(),
                                           o.report.at("board").at("side").get<double>()},
-                                         physics.board_size_px, true);
+                                         physics.board_size_px, rules::Side::Top);
     auto pixel = [&o](Vec2 p) {
         return o.image.getPixel(static_cast<unsigned>(p.x), static_cast<unsigned>(p.y));
     };

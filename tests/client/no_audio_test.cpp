@@ -6,11 +6,11 @@
 
 #ifdef CARROM_CLIENT_PATH
 
+#include "client_program.hpp"
 #include "support/child_process.hpp"
 
 #include <gtest/gtest.h>
 
-#include <cstdlib>
 #include <string>
 #include <vector>
 
@@ -22,19 +22,9 @@ using Clock = std::chrono::steady_clock;
 using namespace std::chrono_literals;
 
 TEST(NoAudioDevice, TheClientSaysSoInOneLineAndPlaysOn) {
-    std::vector<std::string> argv;
-    if (std::getenv("DISPLAY") == nullptr) {
-        argv = {"xvfb-run", "-a", "-s", "-screen 0 1280x1024x24"};
-    }
-    for (const char* arg : {CARROM_CLIENT_PATH, "--demo", "--demo-break-at", "0.2",
-                            "--demo-autoplay", "0.3", "--timeout", "4"}) {
-        argv.emplace_back(arg);
-    }
-    // Under AddressSanitizer without the leak check (Mesa's GL driver leaks at exit; see
-    // screenshot_test.cpp).
-    const char* asan = std::getenv("ASAN_OPTIONS");
-    ChildProcess client(
-        argv, {std::string("ASAN_OPTIONS=") + (asan != nullptr ? asan : "") + ":detect_leaks=0"});
+    const std::vector<std::string> argv = client_argv(
+        {"--demo", "--demo-break-at", "0.2", "--demo-autoplay", "0.3", "--timeout", "4"});
+    ChildProcess client(argv, {client_asan_options()});
     ASSERT_TRUE(client.started());
     const auto exit = client.wait_exit(Clock::now() + 60s);
     client.wait_line(ChildProcess::Stream::Err, "\n", Clock::now() + 500ms); // the rest of it

@@ -3,6 +3,7 @@
 // --final-state) joining through it. A second into the match the proxy cuts every
 // connection and refuses new ones for 3 s: the client resumes its seat by itself, plays the game
 // to the end and writes the final state with the bot's scores.
+#include "client_program.hpp"
 #include "support/child_process.hpp"
 
 #include <gtest/gtest.h>
@@ -71,21 +72,13 @@ TEST(ReconnectMatch, ClientResumesThroughACutAndFinishesTheGame) {
         after(bot.wait_line(ChildProcess::Stream::Err, "room ", Clock::now() + 15s), "room ");
     ASSERT_EQ(code.size(), 6u) << bot.output();
     const std::string final_state = (dir / "final.json").string();
-    std::vector<std::string> argv;
-    if (std::getenv("DISPLAY") == nullptr) {
-        argv = {"xvfb-run", "-a", "-s", "-screen 0 1280x1024x24"};
-    }
-    for (const std::string& a :
-         {std::string(CARROM_CLIENT_PATH), std::string("--url"), url, std::string("--name"),
-          std::string("Ana"), std::string("--join"), code, std::string("--mute"),
-          std::string("--width"), std::string("700"), std::string("--height"), std::string("700"),
-          std::string("--autoplay"), std::string("easy"), std::string("--final-state"), final_state,
-          std::string("--timeout"), std::string("110")}) {
-        argv.push_back(a);
-    }
-    const char* asan = std::getenv("ASAN_OPTIONS");
-    ChildProcess client(
-        argv, {std::string("ASAN_OPTIONS=") + (asan != nullptr ? asan : "") + ":detect_leaks=0"});
+    const std::vector<std::string> argv =
+        client_argv({std::string("--url"), url, std::string("--name"), std::string("Ana"),
+                     std::string("--join"), code, std::string("--mute"), std::string("--width"),
+                     std::string("700"), std::string("--height"), std::string("700"),
+                     std::string("--autoplay"), std::string("easy"), std::string("--final-state"),
+                     final_state, std::string("--timeout"), std::string("110")});
+    ChildProcess client(argv, {client_asan_options()});
     ASSERT_TRUE(client.wait_line(ChildProcess::Stream::Out, "room ", Clock::now() + 30s))
         << client.output();
     std::this_thread::sleep_for(1s); // the match is under way

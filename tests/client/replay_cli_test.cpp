@@ -8,6 +8,7 @@
 #include "carrom/net/http_get.hpp"
 #include "carrom/proto/journal_json.hpp"
 #include "carrom/proto/journal_replay.hpp"
+#include "client_program.hpp"
 #include "proto/journal_support.hpp"
 #include "support/child_process.hpp"
 #include "support/server_process.hpp"
@@ -21,7 +22,6 @@
 #include <unistd.h>
 
 #include <cmath>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <optional>
@@ -86,17 +86,7 @@ struct ClientRun {
 };
 
 ClientRun run_client(const std::vector<std::string>& args) {
-    std::vector<std::string> argv;
-    if (std::getenv("DISPLAY") == nullptr) {
-        argv = {"xvfb-run", "-a", "-s", "-screen 0 1280x1024x24"};
-    }
-    argv.emplace_back(CARROM_CLIENT_PATH);
-    argv.insert(argv.end(), args.begin(), args.end());
-    // Under ASan, no leak check at exit: Mesa's GL drivers leak there (as in the other client
-    // program tests); every other ASan and UBSan check stays on.
-    const char* asan = std::getenv("ASAN_OPTIONS");
-    ChildProcess client(
-        argv, {std::string("ASAN_OPTIONS=") + (asan != nullptr ? asan : "") + ":detect_leaks=0"});
+    ChildProcess client(client_argv(args), {client_asan_options()});
     ClientRun run;
     run.exit_code = client.wait_exit(Clock::now() + 180s).value_or(-1);
     for (const auto& l : client.lines(ChildProcess::Stream::Out)) {

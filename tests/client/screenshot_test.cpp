@@ -15,7 +15,7 @@
 namespace carrom::client {
 namespace {
 
-struct Shot {
+struct ScreenCapture {
     sf::Image image;
     ScreenMapping mapping;
     sf::Color at(Vec2 board_px) const {
@@ -24,7 +24,7 @@ struct Shot {
     }
 };
 
-Shot take_screenshot() {
+ScreenCapture take_screenshot() {
     const std::string png = (std::filesystem::temp_directory_path() /
                              ("carrom-client-shot-" + std::to_string(::getpid()) + ".png"))
                                 .string();
@@ -38,15 +38,15 @@ Shot take_screenshot() {
                             " --screenshot " +
                             png + " --frames 10 > /dev/null 2>&1";
     EXPECT_EQ(std::system(cmd.c_str()), 0) << cmd;
-    Shot shot;
+    ScreenCapture shot;
     EXPECT_TRUE(shot.image.loadFromFile(png));
     std::filesystem::remove(png);
-    shot.mapping = make_mapping(make_layout(900.0, 900.0).board, 600.0, false);
+    shot.mapping = make_mapping(make_layout(900.0, 900.0).board, 600.0);
     return shot;
 }
 
 TEST(Screenshot, DemoShowsTheBoardAndTheStartingLayout) {
-    const Shot s = take_screenshot();
+    const ScreenCapture s = take_screenshot();
     ASSERT_EQ(s.image.getSize().x, 900u);
     ASSERT_EQ(s.image.getSize().y, 900u);
     const sf::Color frame = s.at({17.0, 300.0});

@@ -7,6 +7,7 @@
 #include "carrom/proto/codec.hpp"
 #include "carrom/room/shot_stream.hpp"
 #include "carrom/rules/match.hpp"
+#include "common/rules_support.hpp"
 
 #include <gtest/gtest.h>
 
@@ -15,6 +16,7 @@
 #include <iostream>
 #include <numbers>
 #include <optional>
+#include <utility>
 
 namespace carrom::client {
 namespace {
@@ -36,8 +38,8 @@ struct Server {
     double end_s = 0.0;
 };
 
-Baseline baseline_of(rules::Side side) {
-    return side == rules::Side::Top ? Baseline::Top : Baseline::Bottom;
+proto::Baseline baseline_of(rules::Side side) {
+    return side; // the wire's baseline is the rules' side
 }
 
 proto::RoomState room_state(const rules::MatchState& m) {
@@ -87,8 +89,11 @@ Server play(const Shot& shot, bool on_grid) {
 // The server's messages of the stroke as the room sends them (snapshots at 60 Hz from when the
 // shot arrives, physics events before each, the final keyframe of the board with the striker on
 // the next shooter's baseline), each arriving kOneWay after it is sent. `nudge` moves one body in
-// every message that carries it (a server whose physics differs).
-std::vector<Delivery> stream(const Server& s, std::optional<int> nudge_id, Vec2 nudge) {
+// every message that carries it (a server whose physics differs). `at_motion_changes`: a
+// snapshot at every change of motion as well (a contact, a stop, a pocketing), at its exact time,
+// as the room sends them; the shot is made at local shoot_at.
+std::vector<Delivery> stream(const Server& s, std::optional<int> nudge_id, Vec2 nudge,
+                             bool at_motion_changes = false, double shoot_at = kShootAt) {
     const SimResult& physics = s.result.outcome.physics;
     room::ShotStream stream(s.match.physics, physics.trajectory, physics.events, physics.end_time_s,
                             s.match.turn_number);
@@ -101,16 +106,28 @@ std::vector<Delivery> stream(const Server& s, std::optional<int> nudge_id, Vec2 
         return snap;
     };
     std::vector<Delivery> out;
-    const double sent0 = kShootAt + kOneWay; // the server plays the shot when it arrives
+    const double sent0 = shoot_at + kOneWay; // the server plays the shot when it arrives
     std::int64_t seq = 100;
-    for (int k = 0;; ++k) {
-        room::ShotStream::Step step = stream.advance(k * kFrame, ++seq);
-        const double arrive = sent0 + std::min(k * kFrame, s.end_s) + kOneWay;
+    // The step at shot time t: its events, then its snapshot, arriving a one-way trip later.
+    auto send = [&](double t) {
+        room::ShotStream::Step step = stream.advance(t, ++seq);
+        const double arrive = sent0 + std::min(t, s.end_s) + kOneWay;
         for (proto::Event& e : step.events) {
             out.push_back({arrive, proto::ServerMessage{std::move(e)}});
         }
         out.push_back({arrive, proto::ServerMessage{nudged(step.snapshot)}});
-        if (step.finished) {
+        return std::pair{step.finished, arrive};
+    };
+    for (int k = 0;; ++k) {
+        while (at_motion_changes) {
+            const std::optional<double> change = stream.next_motion_change(k * kFrame);
+            if (!change || *change >= k * kFrame) {
+                break;
+            }
+            send(*change);
+        }
+        const auto [finished, arrive] = send(k * kFrame);
+        if (finished) {
             std::vector<Body> board = s.result.state.bodies;
             board.push_back(rules::striker_for(
                 s.match.physics,
@@ -367,6 +384,88 @@ TEST(ShotPrediction, AResumeAfterTheStrokeEndedEndsThePrediction) {
     }
     EXPECT_FALSE(c.model.prediction().active());
     EXPECT_FALSE(c.model.animating());
+}
+
+} // namespace
+} // namespace carrom::client
+
+namespace carrom::client {
+namespace {
+
+// Doubles: the shooter's stroke from each of the four baselines (a break towards the centre),
+// the server's stream of the same stroke confirms the prediction without a correction.
+Server play_doubles_from(int seat, const Shot& shot) {
+    Server s;
+    rules::RulesConfig config;
+    config.seat_count = 4;
+    s.match = rules::new_match(rules::RuleSet::Icf, config, PhysicsConfig{});
+    for (Body& b : s.match.bodies) {
+        b.pos_px = {proto::quantise(b.pos_px.x), proto::quantise(b.pos_px.y)};
+    }
+    s.match.turn_seat = seat;
+    ExactEngine engine(s.match.physics);
+    rules::PlayOptions options;
+    options.record_trajectory = true;
+    s.result = rules::play_shot(s.match, seat, shot, engine, options);
+    EXPECT_FALSE(s.result.error.has_value()) << seat;
+    s.trajectory = s.result.outcome.physics.trajectory;
+    s.end_s = s.result.outcome.physics.end_time_s;
+    return s;
+}
+
+TEST(ShotPrediction, EverySeatOfDoublesIsConfirmedWithoutCorrections) {
+    const double towards_centre[] = {-std::numbers::pi / 2.0, std::numbers::pi,
+                                     std::numbers::pi / 2.0, 0.0};
+    for (int seat = 0; seat < 4; ++seat) {
+        const Shot shot{300.0, towards_centre[seat], 20.0};
+        const Server s = play_doubles_from(seat, shot);
+        Client c;
+        start(c, s);
+        c.inbox = stream(s, std::nullopt, {});
+        ASSERT_TRUE(c.model.predict(shoot_of(s, shot), kShootAt)) << seat;
+        const double blend_done = kShootAt + 2.0 * kOneWay + 0.1;
+        double rms = 0.0;
+        EXPECT_LT(worst_after(c, s, blend_done, std::nullopt, {}, rms), 0.01) << seat;
+        EXPECT_EQ(c.model.prediction_stats().corrections, 0) << seat;
+        EXPECT_LT(c.model.prediction_stats().max_difference_px, 0.5) << seat;
+    }
+}
+
+// The room also sends a snapshot at the exact time of every change of motion, pocketings
+// included. Compared on the continuous timeline (offset + t - offset), such a time can land a
+// hair before the pocketing, where the prediction still has the piece on the board: the client
+// compares at the snapshot's own t. Shot at many local times, so that many offsets are tried.
+TEST(ShotPrediction, SnapshotsAtTheInstantOfAPocketingConfirmItWithoutCorrections) {
+    Server s;
+    s.match = rules::new_match(rules::RuleSet::Icf, rules::RulesConfig{}, PhysicsConfig{});
+    rules::test::put(s.match, rules::test::kWhite, rules::test::kNearPocket);
+    const Shot shot = rules::test::towards_pocket(s.match, 0, rules::test::kHard);
+    ExactEngine engine(s.match.physics);
+    rules::PlayOptions options;
+    options.record_trajectory = true;
+    s.result = rules::play_shot(s.match, 0, shot, engine, options);
+    ASSERT_FALSE(s.result.error.has_value());
+    ASSERT_EQ(s.result.outcome.pocketed, std::vector<int>{rules::test::kWhite});
+    ASSERT_TRUE(s.result.outcome.striker_pocketed); // a foul: the turn passes
+    s.trajectory = s.result.outcome.physics.trajectory;
+    s.end_s = s.result.outcome.physics.end_time_s;
+    for (int j = 0; j < 40; ++j) {
+        SCOPED_TRACE("shot at local " + std::to_string(j));
+        const double shoot_at = kShootAt + 0.0173 * j;
+        Client c;
+        c.model.handle(room_state(s.match), 0.0);
+        for (double t = 0.0; t < shoot_at; t += kFrame) {
+            c.frame(t);
+        }
+        c.inbox = stream(s, std::nullopt, {}, true, shoot_at);
+        ASSERT_TRUE(c.model.predict(shoot_of(s, shot), shoot_at));
+        for (double t = shoot_at; t < shoot_at + s.end_s + 1.0; t += kFrame) {
+            c.frame(t);
+        }
+        EXPECT_EQ(c.model.prediction_stats().corrections, 0);
+        EXPECT_LT(c.model.prediction_stats().max_difference_px, 0.01);
+        EXPECT_FALSE(c.model.prediction().active());
+    }
 }
 
 } // namespace

@@ -10,16 +10,13 @@ namespace carrom {
 namespace {
 
 using test::coin;
+using test::same_bits;
 using test::striker;
 
 std::vector<Body> centred_break(const PhysicsConfig& config, double speed = 1500.0) {
     std::vector<Body> scene = standard_layout(config);
     scene.push_back(striker(kStrikerId, 300.0, 520.0, 0.0, -speed));
     return scene;
-}
-
-bool same_bits(double a, double b) {
-    return std::memcmp(&a, &b, sizeof a) == 0;
 }
 
 TEST(ExactDeterminism, RepeatsAreBitIdenticalAndEngineReuseChangesNothing) {

@@ -14,11 +14,8 @@ namespace carrom {
 namespace {
 
 using test::coin;
+using test::same_bits;
 using test::striker;
-
-bool same_bits(double a, double b) {
-    return std::memcmp(&a, &b, sizeof a) == 0;
-}
 
 // Events and final state equal to the bit.
 void expect_same_result(const SimResult& fresh, const SimResult& reused, const std::string& what) {

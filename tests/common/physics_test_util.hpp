@@ -7,10 +7,16 @@
 
 #include <gtest/gtest.h>
 
+#include <cstring>
 #include <string>
 #include <vector>
 
 namespace carrom::test {
+
+// True when both doubles have the same bits (determinism tests compare results bit for bit).
+inline bool same_bits(double a, double b) {
+    return std::memcmp(&a, &b, sizeof a) == 0;
+}
 
 inline Body coin(int id, double x, double y, double vx = 0.0, double vy = 0.0,
                  BodyKind kind = BodyKind::Black) {

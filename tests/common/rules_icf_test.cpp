@@ -10,13 +10,12 @@ namespace {
 
 using test::broken;
 using test::ids_of;
+using test::kBlack;
+using test::kBlack2;
+using test::kWhite;
+using test::kWhite2;
 using test::pre_pocket;
 using test::stroke;
-
-constexpr int kWhite = 2; // even ids are white
-constexpr int kWhite2 = 4;
-constexpr int kBlack = 1; // odd ids are black
-constexpr int kBlack2 = 3;
 
 TEST(RulesIcf, NewMatchBreakerPlaysWhiteFromTheBottom) {
     const MatchState m = test::match(RuleSet::Icf);

@@ -8,17 +8,16 @@
 namespace carrom::rules {
 namespace {
 
+using test::kBlack;
 using test::kHard;
 using test::kNearPocket;
 using test::kSoft;
+using test::kWhite;
+using test::kWhite2;
 using test::play;
 using test::pre_pocket;
 using test::put;
 using test::towards_pocket;
-
-constexpr int kWhite = 2;
-constexpr int kWhite2 = 4;
-constexpr int kBlack = 1;
 
 TEST(RulesPlay, OwnCoinDropsAndTheShooterGoesAgain) {
     MatchState m = test::match(RuleSet::Icf);

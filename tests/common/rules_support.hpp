@@ -11,6 +11,12 @@
 
 namespace carrom::rules::test {
 
+// Coin ids of the standard layout: even ids are white, odd ids black (0 is the queen).
+inline constexpr int kWhite = 2;
+inline constexpr int kWhite2 = 4;
+inline constexpr int kBlack = 1;
+inline constexpr int kBlack2 = 3;
+
 inline RulesConfig no_clock() {
     RulesConfig config;
     config.shot_clock_s = 0.0;

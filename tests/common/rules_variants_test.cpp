@@ -8,13 +8,12 @@ namespace carrom::rules {
 namespace {
 
 using test::ids_of;
+using test::kBlack;
+using test::kBlack2;
+using test::kWhite;
+using test::kWhite2;
 using test::pre_pocket;
 using test::stroke;
-
-constexpr int kWhite = 2;
-constexpr int kWhite2 = 4;
-constexpr int kBlack = 1;
-constexpr int kBlack2 = 3;
 
 // ---- seed -------------------------------------------------------------------------------------
 

@@ -6,16 +6,19 @@
 
 namespace carrom::integration {
 
+std::unique_ptr<bots::Strategy> test_strategy(const std::string& name, std::uint64_t seed) {
+    bots::StrategyOptions options;
+    options.name = name;
+    options.seed = seed;
+    return std::get<std::unique_ptr<bots::Strategy>>(bots::make_strategy(options));
+}
+
 namespace {
 
 using namespace std::chrono_literals;
 
 std::unique_ptr<bots::Strategy> strategy_for(const MatchSpec& spec, std::uint64_t salt) {
-    bots::StrategyOptions options;
-    options.name = spec.strategy;
-    options.seed = spec.seed * 1000 + salt;
-    auto made = bots::make_strategy(options);
-    return std::get<std::unique_ptr<bots::Strategy>>(std::move(made));
+    return test_strategy(spec.strategy, spec.seed * 1000 + salt);
 }
 
 // One match's bots; run() plays it on the calling thread.

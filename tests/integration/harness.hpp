@@ -24,6 +24,10 @@ inline constexpr double kTestTimeScale = 25.0;
 // Settings for tests: 127.0.0.1, ephemeral port, 2 I/O threads, no shot clock, fast playback.
 server::ServerSettings test_settings();
 
+// The named strategy (bots::make_strategy with its default level) seeded with seed; the name
+// must be one make_strategy knows.
+std::unique_ptr<bots::Strategy> test_strategy(const std::string& name, std::uint64_t seed);
+
 // A command line run through the shell: its standard output and exit status (tests/support/).
 using test_support::CommandRun;
 using test_support::run_command;

@@ -21,20 +21,18 @@ proto::CreateRoom short_game(proto::RuleSet rule_set) {
     return create;
 }
 
-// What both players must agree on once a match ended normally.
-// With many bots on a busy machine (or under ASan) a bot thread may read too slowly and the
-// server drop snapshots for it: gaps are then allowed, but each must be repaired by a keyframe.
-void expect_complete(const MatchRun& run, const std::set<std::string>& reasons,
-                     bool drops_allowed = false) {
+// What both players must agree on once a match ended normally. Snapshots may have been dropped
+// (a gap in seq): at 25 times real speed a shot sends 250 snapshots a second and more, so a
+// busy machine (ctest -j2 on 2 cores, ASan) that stalls a bot's reader or the server's writes
+// for some 30 ms puts a queue 8 snapshots behind and the server drops the next (WriteQueue).
+// Every gap must be repaired by a keyframe.
+void expect_complete(const MatchRun& run, const std::set<std::string>& reasons) {
     for (const auto* bot : {&run.creator, &run.joiner}) {
         EXPECT_TRUE(bot->failure.empty()) << bot->failure;
         EXPECT_TRUE(bot->finished);
         EXPECT_EQ(bot->games, 1);
         EXPECT_EQ(bot->decode_errors, 0);
         EXPECT_EQ(bot->unrepaired_gaps, 0);
-        if (!drops_allowed) {
-            EXPECT_EQ(bot->seq_gaps, 0);
-        }
         EXPECT_TRUE(bot->errors.empty()) << bot->errors.begin()->first;
         EXPECT_TRUE(reasons.count(bot->last_reason)) << bot->last_reason;
         EXPECT_GT(bot->snapshots, 0);
@@ -100,7 +98,7 @@ TEST(Matches, FiftyMatchesAtOnceFinishCorrectly) {
     const auto runs = play_matches(server.url(), specs);
     std::set<std::string> codes;
     for (const auto& run : runs) {
-        expect_complete(run, {"score", "cleared"}, true);
+        expect_complete(run, {"score", "cleared"});
         codes.insert(run.code);
     }
     EXPECT_EQ(codes.size(), runs.size()); // fifty different rooms

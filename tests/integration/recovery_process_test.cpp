@@ -29,9 +29,9 @@ namespace {
 using namespace std::chrono_literals;
 namespace fs = std::filesystem;
 
-class TempDir : public test_support::TempDir {
+class RecoveryDir : public test_support::TempDir {
 public:
-    TempDir() : test_support::TempDir("carrom_recovery") {}
+    RecoveryDir() : test_support::TempDir("carrom_recovery") {}
 };
 
 // carrom-server --data on a port (0: any), logging at info.
@@ -60,10 +60,7 @@ int recovered(const test_support::ServerProcess& server) {
 }
 
 std::unique_ptr<bots::Strategy> sampling(std::uint64_t seed) {
-    bots::StrategyOptions options;
-    options.name = "sampling";
-    options.seed = seed;
-    return std::get<std::unique_ptr<bots::Strategy>>(bots::make_strategy(options));
+    return test_strategy("sampling", seed);
 }
 
 // Two bots in one room; `shots` counts the strokes the creator saw played (shot_result).
@@ -139,7 +136,7 @@ struct Pair {
 
 // Every match the creator played: finished, and its journal replays clean with consecutive
 // turns. Returns the strokes.
-int expect_journals_clean(const test_support::ServerProcess& server, std::size_t count) {
+int expect_finished_journals_clean(const test_support::ServerProcess& server, std::size_t count) {
     const auto json = nlohmann::json::parse(server.get("/matches?player=creator&limit=100").body);
     const auto& matches = json["matches"];
     EXPECT_EQ(matches.size(), count);
@@ -162,7 +159,7 @@ int expect_journals_clean(const test_support::ServerProcess& server, std::size_t
 // and resume with back-off (BotRunner's auto_resume, as carrom-bot does).
 void kill_and_recover(const std::function<bool(const proto::ServerMessage&)>& moment,
                       bool by_themselves = false) {
-    TempDir dir;
+    RecoveryDir dir;
     auto server = start_server(dir.file("c.db"));
     const std::uint16_t port = server->port();
     ASSERT_NE(port, 0);
@@ -194,7 +191,7 @@ void kill_and_recover(const std::function<bool(const proto::ServerMessage&)>& mo
     if (::testing::Test::HasFailure()) {
         std::fprintf(stderr, "server:\n%s", server->log().c_str());
     }
-    EXPECT_GT(expect_journals_clean(*server, 1), 3);
+    EXPECT_GT(expect_finished_journals_clean(*server, 1), 3);
 }
 
 TEST(RecoveryProcess, KilledWhileAPlayerAimsTheBotsResumeAndFinish) {
@@ -216,7 +213,7 @@ TEST(RecoveryProcess, KilledWhileAShotMovesTheBotsResumeByThemselvesAndFinish) {
 }
 
 TEST(RecoveryProcess, AJournalOfAnotherPhysicsVersionIsNotResumedAndStaysInTheStore) {
-    TempDir dir;
+    RecoveryDir dir;
     auto server = start_server(dir.file("c.db"));
     const std::uint16_t port = server->port();
     ASSERT_NE(port, 0);
@@ -262,7 +259,7 @@ TEST(RecoveryProcess, AJournalOfAnotherPhysicsVersionIsNotResumedAndStaysInTheSt
 }
 
 TEST(RecoveryProcess, SigtermWithTwentyMatchesRunningAllTwentyFinishAfterTheRestart) {
-    TempDir dir;
+    RecoveryDir dir;
     auto server = start_server(dir.file("c.db"));
     const std::uint16_t port = server->port();
     ASSERT_NE(port, 0);
@@ -304,7 +301,7 @@ TEST(RecoveryProcess, SigtermWithTwentyMatchesRunningAllTwentyFinishAfterTheRest
     for (const auto& pair : pairs) {
         pair->expect_finished();
     }
-    const int strokes = expect_journals_clean(*server, kMatches);
+    const int strokes = expect_finished_journals_clean(*server, kMatches);
     EXPECT_GT(strokes, 3 * kMatches);
     std::fprintf(stderr, "%d strokes; first match's end: %s\n", strokes,
                  pairs[0]->creator->summary().last_reason.c_str());

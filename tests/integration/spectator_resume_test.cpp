@@ -21,13 +21,6 @@ proto::CreateRoom quick_freestyle(int target) {
     return create;
 }
 
-std::unique_ptr<bots::Strategy> strategy(const std::string& name, std::uint64_t seed) {
-    bots::StrategyOptions options;
-    options.name = name;
-    options.seed = seed;
-    return std::get<std::unique_ptr<bots::Strategy>>(bots::make_strategy(options));
-}
-
 // Steps the runners until every one is done or the timeout passes.
 void run_all(const std::vector<bots::BotRunner*>& runners, std::chrono::milliseconds timeout) {
     const auto deadline = std::chrono::steady_clock::now() + timeout;
@@ -47,9 +40,9 @@ void run_all(const std::vector<bots::BotRunner*>& runners, std::chrono::millisec
 
 TEST(Spectator, ReceivesTheSameSnapshotsAsThePlayers) {
     TestServer server;
-    auto s0 = strategy("sampling", 1);
-    auto s1 = strategy("sampling", 2);
-    auto s2 = strategy("random", 3);
+    auto s0 = test_strategy("sampling", 1);
+    auto s1 = test_strategy("sampling", 2);
+    auto s2 = test_strategy("random", 3);
     bots::BotConfig config;
     config.url = server.url();
     config.mode = bots::JoinMode::Create;
@@ -115,8 +108,8 @@ TEST(Spectator, ReceivesTheSameSnapshotsAsThePlayers) {
 
 TEST(Resume, PlayerDroppedMidShotGetsItsSeatAndTheBoardBack) {
     TestServer server;
-    auto s0 = strategy("sampling", 5);
-    auto s1 = strategy("sampling", 6);
+    auto s0 = test_strategy("sampling", 5);
+    auto s1 = test_strategy("sampling", 6);
     bots::BotConfig config;
     config.url = server.url();
     config.mode = bots::JoinMode::Create;

@@ -28,9 +28,9 @@ using namespace std::chrono_literals;
 namespace fs = std::filesystem;
 
 // A temporary directory anyone may use (the read-only test runs carrom-server as nobody).
-class TempDir : public test_support::TempDir {
+class SharedTempDir : public test_support::TempDir {
 public:
-    TempDir() : test_support::TempDir("carrom_store_proc") {
+    SharedTempDir() : test_support::TempDir("carrom_store_proc") {
         fs::permissions(path(), fs::perms::all, fs::perm_options::add);
     }
 };
@@ -77,7 +77,7 @@ std::vector<MatchSpec> short_matches(int count) {
 }
 
 // Every match of the list: served, finished with a result, its journal replays clean.
-int expect_journals_clean(const ServerProcess& server, std::size_t count) {
+int expect_served_journals_clean(const ServerProcess& server, std::size_t count) {
     const Http list = server.get("/matches?player=creator&limit=100");
     EXPECT_EQ(list.status, 200) << list.body;
     const auto json = nlohmann::json::parse(list.body);
@@ -103,7 +103,7 @@ int expect_journals_clean(const ServerProcess& server, std::size_t count) {
 }
 
 TEST(StoreProcess, BotMatchesAreJournaledServedAndReplayClean) {
-    TempDir dir;
+    SharedTempDir dir;
     ServerProcess server(server_options(dir.file("c.db")));
     ASSERT_NE(server.port(), 0);
     const int count = 50; // the 50-match check
@@ -111,7 +111,7 @@ TEST(StoreProcess, BotMatchesAreJournaledServedAndReplayClean) {
     for (const auto& run : runs) {
         ASSERT_TRUE(run.creator.finished && run.joiner.finished) << run.creator.failure;
     }
-    const int strokes = expect_journals_clean(server, count);
+    const int strokes = expect_served_journals_clean(server, count);
     EXPECT_GT(strokes, count);
     EXPECT_EQ(server.get("/matches/nosuchmatch").status, 404);
     EXPECT_EQ(server.get("/matches/bad%20id").status, 400);
@@ -153,7 +153,7 @@ void make_database(const std::string& path) {
 }
 
 TEST(StoreProcess, ADataFileTheStoreCannotUseStopsTheStartAndStaysUntouched) {
-    TempDir dir;
+    SharedTempDir dir;
     const std::string text = dir.file("notes.txt");
     std::ofstream(text) << "not a database\n";
     const std::string good = dir.file("good.db");
@@ -196,7 +196,7 @@ TEST(StoreProcess, ADataFileTheStoreCannotUseStopsTheStartAndStaysUntouched) {
 }
 
 TEST(StoreProcess, WriteFailuresDegradeTheServerAndTheMatchesGoOn) {
-    TempDir dir;
+    SharedTempDir dir;
     const std::string fail = dir.file("fail");
     ServerProcess server(server_options(dir.file("c.db"), {"CARROM_TEST_STORE_FAIL_FILE=" + fail}));
     ASSERT_NE(server.port(), 0);
@@ -227,7 +227,7 @@ TEST(StoreProcess, WriteFailuresDegradeTheServerAndTheMatchesGoOn) {
         std::this_thread::sleep_for(50ms);
     }
     EXPECT_TRUE(healthy);
-    expect_journals_clean(server, count);
+    expect_served_journals_clean(server, count);
 }
 
 } // namespace

@@ -10,9 +10,8 @@ namespace {
 
 using Json = nlohmann::json;
 using rules::MatchState;
-using rules::RuleSet;
 
-MatchState fresh(RuleSet rule_set = RuleSet::Icf) {
+MatchState fresh(rules::RuleSet rule_set = rules::RuleSet::Icf) {
     rules::RulesConfig config;
     config.shot_clock_s = 0.0;
     return rules::new_match(rule_set, config, PhysicsConfig{});
@@ -48,12 +47,13 @@ void expect_round_trip(const MatchState& s) {
 }
 
 TEST(MatchJson, NewMatchesRoundTrip) {
-    for (RuleSet r : {RuleSet::Icf, RuleSet::Seed, RuleSet::Freestyle, RuleSet::DiscPool}) {
+    for (rules::RuleSet r : {rules::RuleSet::Icf, rules::RuleSet::Seed, rules::RuleSet::Freestyle,
+                             rules::RuleSet::DiscPool}) {
         expect_round_trip(fresh(r));
     }
     rules::RulesConfig doubles;
     doubles.seat_count = 4;
-    expect_round_trip(rules::new_match(RuleSet::Icf, doubles, PhysicsConfig{}));
+    expect_round_trip(rules::new_match(rules::RuleSet::Icf, doubles, PhysicsConfig{}));
 }
 
 TEST(MatchJson, MidGameStatesRoundTrip) {
@@ -70,7 +70,7 @@ TEST(MatchJson, MidGameStatesRoundTrip) {
 }
 
 TEST(MatchJson, EncodesNamesNotNumbers) {
-    MatchState m = fresh(RuleSet::Freestyle);
+    MatchState m = fresh(rules::RuleSet::Freestyle);
     m = stroke(m, {kQueenId}).state;
     const Json j = match_state_to_json(m);
     EXPECT_EQ(j["rule_set"], "freestyle");
@@ -87,11 +87,11 @@ TEST(MatchJson, MissingFieldsTakeNewMatchDefaults) {
     const auto empty = decode_match_state(Json::object());
     ASSERT_TRUE(empty.ok());
     EXPECT_EQ(match_state_to_json(empty.value),
-              match_state_to_json(rules::new_match(RuleSet::Icf, {}, PhysicsConfig{})));
+              match_state_to_json(rules::new_match(rules::RuleSet::Icf, {}, PhysicsConfig{})));
     const auto seed = decode_match_state(
         {{"rule_set", "seed"}, {"scores", {3, 4}}, {"rules", {{"shot_clock_s", 0}}}});
     ASSERT_TRUE(seed.ok());
-    EXPECT_EQ(seed.value.rule_set, RuleSet::Seed);
+    EXPECT_EQ(seed.value.rule_set, rules::RuleSet::Seed);
     EXPECT_EQ(seed.value.scores, (std::vector<int>{3, 4}));
     EXPECT_EQ(seed.value.config.shot_clock_s, 0.0);
 }

@@ -31,7 +31,7 @@ RoomState sample_room() {
     room.rule_set = RuleSet::Seed;
     room.options = MatchOptions{30, 5, 20.0};
     room.seats = {SeatInfo{true, "Asha", true, false, Colour::White, Baseline::Bottom},
-                  SeatInfo{true, "Bot", true, true, Colour::Black, Baseline::Top}};
+                  SeatInfo{true, "Bot", true, true, Colour::Black, Baseline::Top, 1}};
     room.spectators = 3;
     room.scores = {4, -2};
     room.dues = {0, 1};
@@ -72,6 +72,7 @@ TEST(ProtoServer, RoomStateWireNames) {
     EXPECT_EQ(j["type"], "room_state");
     EXPECT_EQ(j["seats"][1]["colour"], "black");
     EXPECT_EQ(j["seats"][1]["baseline"], "top");
+    EXPECT_EQ(j["seats"][1]["team"], 1);
     EXPECT_EQ(j["queen"], json::parse(R"({"state":"pending","seat":0})"));
     EXPECT_EQ(j["bodies"][2],
               json::parse(R"({"id":19,"kind":"striker","x":300.5,"y":80.0,"vx":-1.5,"vy":2.25,

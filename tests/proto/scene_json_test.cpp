@@ -472,12 +472,12 @@ TEST(SceneJsonRoundTrip, DefaultConfigIsLeftOut) {
 }
 
 TEST(SceneJsonRoundTrip, ShotEncodesAsTheDecoderReadsIt) {
-    const ShotSpec shot{Baseline::Top, Shot{250.5, 1.25, 12.5}};
+    const ShotSpec shot{carrom::Baseline::Top, Shot{250.5, 1.25, 12.5}};
     const Json j = shot_to_json(shot);
     EXPECT_EQ(j, Json::parse(R"({"baseline": "top", "x": 250.5, "angle": 1.25, "power": 12.5})"));
     const auto decoded = decode_shot(j, PhysicsConfig{});
     ASSERT_TRUE(decoded.ok());
-    EXPECT_EQ(decoded.value.baseline, Baseline::Top);
+    EXPECT_EQ(decoded.value.baseline, carrom::Baseline::Top);
     EXPECT_EQ(decoded.value.shot.x_px, 250.5);
     EXPECT_EQ(decoded.value.shot.angle_rad, 1.25);
     EXPECT_EQ(decoded.value.shot.power, 12.5);

@@ -21,9 +21,10 @@ TEST_F(RoomTest, BotSeatTakesItsTurnThroughTheSeam) {
     ASSERT_FALSE(room.seat_bot("Bot", std::make_shared<ScriptedBrain>()));
     EXPECT_TRUE(a_->last_room_state().seats[1].bot);
     EXPECT_FALSE(room.take_bot_turn()); // seat 0 breaks
-    auto early = room.bot_shoot(1, 0, {300.0, kUp, 10.0});
-    ASSERT_TRUE(early);
-    EXPECT_EQ(early->code, "not_your_turn");
+    const BotShotOutcome early = room.bot_shoot(1, 0, {300.0, kUp, 10.0});
+    ASSERT_TRUE(early.refused);
+    EXPECT_EQ(early.refused->code, "not_your_turn");
+    EXPECT_FALSE(early.replaced);
     room.shoot(*a_, {0, 300.0, 0.0, 2.0}); // a soft shot along the baseline: nothing pocketed
     while (room.phase() == proto::Phase::Moving) {
         clock_.set_ms(*room.next_wake_ms());
@@ -36,11 +37,45 @@ TEST_F(RoomTest, BotSeatTakesItsTurnThroughTheSeam) {
     EXPECT_EQ(turn->turn, room.match().turn_number);
     EXPECT_FALSE(room.take_bot_turn()); // handed out once per turn
     const Shot shot = turn->brain->choose_shot(turn->state, turn->seat, {});
-    EXPECT_FALSE(room.bot_shoot(turn->seat, turn->turn, {shot.x_px, -kUp, 10.0}));
+    const BotShotOutcome outcome = room.bot_shoot(turn->seat, turn->turn, {shot.x_px, -kUp, 10.0});
+    EXPECT_FALSE(outcome.refused);
+    EXPECT_FALSE(outcome.replaced);
     EXPECT_EQ(room.phase(), proto::Phase::Moving);
     EXPECT_FALSE(room.abandoned());
     room.leave(*a_);
     EXPECT_TRUE(room.abandoned()); // bots alone do not keep a room open
+}
+
+// A brain that places the striker off the board.
+class OffTheBoardBrain final : public BotBrain {
+public:
+    Shot choose_shot(const rules::MatchState&, int, std::chrono::milliseconds) override {
+        return {1e6, kUp, 10.0};
+    }
+};
+
+TEST_F(RoomTest, BotShotTheRulesRefuseIsPlayedAsTheNearestLegalOne) {
+    // No shot clock (the fixture's): a refused bot shot would leave the turn to nobody.
+    ASSERT_FALSE(room_.seat_bot("Bot", std::make_shared<OffTheBoardBrain>())); // seat 0
+    ASSERT_FALSE(room_.join(a_, proto::Role::Player));
+    auto turn = room_.take_bot_turn();
+    ASSERT_TRUE(turn);
+    const Shot shot = turn->brain->choose_shot(turn->state, turn->seat, {});
+    const BotShotOutcome outcome = room_.bot_shoot(turn->seat, turn->turn, shot);
+    EXPECT_FALSE(outcome.refused);
+    ASSERT_TRUE(outcome.replaced);
+    EXPECT_EQ(outcome.replaced->code, "illegal_placement");
+    EXPECT_EQ(room_.phase(), proto::Phase::Moving);
+    while (room_.phase() == proto::Phase::Moving) {
+        clock_.set_ms(*room_.next_wake_ms());
+        room_.tick();
+    }
+    const auto results = a_->all<proto::ShotResult>();
+    ASSERT_EQ(results.size(), 1U);
+    EXPECT_EQ(results[0].seat, 0);
+    EXPECT_EQ(results[0].x_px, 487.0); // the nearer end of the baseline
+    EXPECT_EQ(results[0].angle_rad, kUp);
+    EXPECT_EQ(results[0].power, 10.0);
 }
 
 TEST_F(RoomTest, BotsAndPlayersTakeSeatsTheSameWay) {

@@ -63,7 +63,7 @@ int play(Room& room, ManualClock& clock, RecordingJournal& sink, FakePeer& playe
                     return strokes;
                 }
                 const Shot shot = t.brain->choose_shot(t.state, t.seat, {});
-                if (room.bot_shoot(t.seat, t.turn, shot)) {
+                if (room.bot_shoot(t.seat, t.turn, shot).refused) {
                     continue;
                 }
             }

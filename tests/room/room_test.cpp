@@ -33,8 +33,10 @@ TEST_F(RoomTest, SecondPlayerStartsTheGame) {
     const auto state = b_->last_room_state();
     EXPECT_EQ(state.you, 1);
     EXPECT_EQ(state.phase, proto::Phase::Aiming);
-    EXPECT_EQ(state.seats[0].baseline, Baseline::Bottom);
-    EXPECT_EQ(state.seats[1].baseline, Baseline::Top);
+    EXPECT_EQ(state.seats[0].baseline, proto::Baseline::Bottom);
+    EXPECT_EQ(state.seats[1].baseline, proto::Baseline::Top);
+    EXPECT_EQ(state.seats[0].team, 0);
+    EXPECT_EQ(state.seats[1].team, 1);
     EXPECT_EQ(state.seats[0].colour, proto::Colour::White); // icf: the breaker plays white
     EXPECT_EQ(state.seats[1].name, "Bo");
     ASSERT_EQ(a_->events<proto::TurnEvent>().size(), 1U);

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <chrono>
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -77,6 +78,32 @@ TEST_F(MatchApiTest, AListDecodesThePlayerName) {
     EXPECT_EQ(json["format"], 1);
     EXPECT_EQ(json["player"], "Ann Lee!");
     EXPECT_TRUE(json["matches"].empty());
+}
+
+TEST_F(MatchApiTest, AListGivesEverySeatsTeam) {
+    proto::MatchCreated doubles;
+    doubles.match_id = "dbl1";
+    doubles.room_code = "DBXAAA";
+    doubles.rules.seat_count = 4;
+    doubles.seats = {{"Ann", false}, {"Bo", false}, {"Bot (easy)", true}, {"Cy", false}};
+    doubles.time_ms = 1700000000000;
+    proto::MatchCreated singles = doubles;
+    singles.match_id = "sgl1";
+    singles.rules.seat_count = 2;
+    singles.seats = {{"Ann", false}, {"Cy", false}};
+    singles.time_ms = 1700000001000;
+    store_->create(doubles);
+    store_->create(singles);
+    ASSERT_TRUE(store_->flush(std::chrono::milliseconds(5000)));
+    const auto answer = answer_match_api(store_.get(), "/matches?player=Cy");
+    ASSERT_EQ(answer.status, 200) << answer.body;
+    const auto matches = nlohmann::json::parse(answer.body)["matches"];
+    ASSERT_EQ(matches.size(), 2U);
+    EXPECT_EQ(matches[0]["id"], "sgl1"); // newest first
+    EXPECT_EQ(matches[0]["teams"], nlohmann::json::parse("[0, 1]"));
+    EXPECT_EQ(matches[1]["players"],
+              nlohmann::json::parse(R"j(["Ann", "Bo", "Bot (easy)", "Cy"])j"));
+    EXPECT_EQ(matches[1]["teams"], nlohmann::json::parse("[0, 1, 0, 1]"));
 }
 
 TEST(MatchApi, WithoutAStoreEveryRequestIs503) {

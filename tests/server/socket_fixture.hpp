@@ -1,12 +1,12 @@
 #pragma once
 // The socket tests' fixture: the real server on 127.0.0.1 with an ephemeral port, and helpers
-// that connect clients, seat two players and ask over plain HTTP.
+// that connect clients, seat two players and ask over plain HTTP. No Boost here: the socket
+// tests compile Beast once, in ws_test_client.cpp and socket_fixture.cpp.
 
 #include "carrom/server/server.hpp"
 
 #include "server/ws_test_client.hpp"
 
-#include <boost/beast/http.hpp>
 #include <gtest/gtest.h>
 
 #include <memory>
@@ -63,20 +63,8 @@ protected:
         return created->code;
     }
 
-    std::string http_get(const std::string& target) {
-        namespace http = boost::beast::http;
-        boost::asio::io_context ioc;
-        boost::beast::tcp_stream stream(ioc);
-        stream.connect(
-            boost::asio::ip::tcp::endpoint(boost::asio::ip::make_address("127.0.0.1"), port_));
-        http::request<http::empty_body> request{http::verb::get, target, 11};
-        request.set(http::field::host, "127.0.0.1");
-        http::write(stream, request);
-        boost::beast::flat_buffer buffer;
-        http::response<http::string_body> response;
-        http::read(stream, buffer, response);
-        return std::to_string(response.result_int()) + " " + response.body();
-    }
+    // GET over plain HTTP/1.1: "<status> <body>" (socket_fixture.cpp).
+    std::string http_get(const std::string& target);
 
     std::unique_ptr<Server> server_;
     std::uint16_t port_ = 0;

@@ -10,6 +10,7 @@
 
 #include <map>
 #include <set>
+#include <vector>
 
 namespace carrom::server {
 namespace {
@@ -166,6 +167,43 @@ TEST(RateLimiter, AFloodDisconnects) {
     EXPECT_EQ(limiter.on_message(0), RateLimiter::Verdict::Disconnect);
 }
 
+TEST(RateLimiter, AFloodReadSlowlyStillDisconnects) {
+    // 500/s (half a token per ms), burst 3, a flood the server reads one message per ms: a
+    // token comes back every other message, and those accepted messages do not forgive the
+    // rejected ones in between.
+    RateLimiter limiter(500.0, 3.0, 0);
+    using V = RateLimiter::Verdict;
+    std::vector<V> verdicts;
+    for (std::int64_t t = 0; t < 20 && (verdicts.empty() || verdicts.back() != V::Disconnect);
+         ++t) {
+        verdicts.push_back(limiter.on_message(t));
+    }
+    EXPECT_EQ(verdicts, (std::vector<V>{V::Accept, V::Accept, V::Accept, V::Accept, V::Accept,
+                                        V::Reject, V::Accept, V::Reject, V::Accept,
+                                        V::Disconnect}));
+}
+
+TEST(RateLimiter, QuietUntilTheBucketIsFullForgivesEarlierRejections) {
+    RateLimiter limiter(500.0, 2.0, 0);
+    EXPECT_EQ(limiter.on_message(0), RateLimiter::Verdict::Accept);
+    EXPECT_EQ(limiter.on_message(0), RateLimiter::Verdict::Accept);
+    EXPECT_EQ(limiter.on_message(0), RateLimiter::Verdict::Reject);
+    // 4 ms of quiet refill both tokens: the rejection is forgotten.
+    EXPECT_EQ(limiter.on_message(4), RateLimiter::Verdict::Accept);
+    EXPECT_EQ(limiter.on_message(4), RateLimiter::Verdict::Accept);
+    EXPECT_EQ(limiter.on_message(4), RateLimiter::Verdict::Reject);
+    EXPECT_EQ(limiter.on_message(4), RateLimiter::Verdict::Disconnect);
+}
+
+TEST(RateLimiter, QuietShorterThanARefillForgivesNothing) {
+    RateLimiter limiter(500.0, 2.0, 0);
+    EXPECT_EQ(limiter.on_message(0), RateLimiter::Verdict::Accept);
+    EXPECT_EQ(limiter.on_message(0), RateLimiter::Verdict::Accept);
+    EXPECT_EQ(limiter.on_message(0), RateLimiter::Verdict::Reject);
+    EXPECT_EQ(limiter.on_message(3), RateLimiter::Verdict::Accept); // 1.5 tokens, not full
+    EXPECT_EQ(limiter.on_message(3), RateLimiter::Verdict::Disconnect);
+}
+
 TEST(Random, TokensAre128BitHex) {
     SeededRandom random(42);
     std::set<std::string> seen;
@@ -287,18 +325,54 @@ TEST(Registry, ARestoredRoomKeepsItsCodeAndItsSeatsAreClaimedOnceByTokenKey) {
 TEST(Registry, QuickMatchPairsWithinARuleSet) {
     SeededRandom random(1);
     TestRegistry registry(random, 2);
-    EXPECT_FALSE(registry.quick_match(proto::RuleSet::Icf, 1, 100));
-    EXPECT_FALSE(registry.quick_match(proto::RuleSet::Icf, 1, 100)); // not queued twice
+    EXPECT_FALSE(registry.quick_match(proto::RuleSet::Icf, 2, 1, 100));
+    EXPECT_FALSE(registry.quick_match(proto::RuleSet::Icf, 2, 1, 100)); // not queued twice
     EXPECT_EQ(registry.waiting_count(), 1U);
-    EXPECT_FALSE(registry.quick_match(proto::RuleSet::Seed, 2, 200)); // another rule set
-    const auto partner = registry.quick_match(proto::RuleSet::Icf, 3, 300);
+    EXPECT_FALSE(registry.quick_match(proto::RuleSet::Seed, 2, 2, 200)); // another rule set
+    const auto partner = registry.quick_match(proto::RuleSet::Icf, 2, 3, 300);
     ASSERT_TRUE(partner);
-    EXPECT_EQ(*partner, 100);
+    EXPECT_EQ(*partner, (std::vector<int>{100}));
     EXPECT_EQ(registry.waiting_count(), 1U);
     EXPECT_TRUE(registry.cancel_quick_match(2)); // it was waiting
     EXPECT_EQ(registry.waiting_count(), 0U);
     EXPECT_FALSE(registry.cancel_quick_match(2)); // no longer
     EXPECT_FALSE(registry.cancel_quick_match(1)); // paired: taken out by the partner
+}
+
+TEST(Registry, QuickMatchForDoublesGroupsFourOfTheSameRuleSetAndSeatCount) {
+    SeededRandom random(1);
+    TestRegistry registry(random, 2);
+    EXPECT_FALSE(registry.quick_match(proto::RuleSet::Icf, 4, 1, 100));
+    EXPECT_FALSE(registry.quick_match(proto::RuleSet::Icf, 2, 5, 500));  // singles: apart
+    EXPECT_FALSE(registry.quick_match(proto::RuleSet::Seed, 4, 6, 600)); // another rule set
+    EXPECT_FALSE(registry.quick_match(proto::RuleSet::Icf, 4, 2, 200));
+    EXPECT_FALSE(registry.quick_match(proto::RuleSet::Icf, 4, 2, 200)); // not queued twice
+    EXPECT_FALSE(registry.quick_match(proto::RuleSet::Icf, 4, 3, 300));
+    EXPECT_EQ(registry.waiting_count(), 5U);
+    const auto group = registry.quick_match(proto::RuleSet::Icf, 4, 4, 400);
+    ASSERT_TRUE(group);
+    EXPECT_EQ(*group, (std::vector<int>{100, 200, 300})); // longest-waiting first
+    EXPECT_EQ(registry.waiting_count(), 2U);
+    EXPECT_FALSE(registry.cancel_quick_match(2));
+    EXPECT_TRUE(registry.cancel_quick_match(5));
+}
+
+TEST(Registry, AWaitThatRunsOutTakesTheWholeQueueOfItsMode) {
+    SeededRandom random(1);
+    TestRegistry registry(random, 2);
+    EXPECT_FALSE(registry.quick_match(proto::RuleSet::Icf, 4, 1, 100));
+    EXPECT_FALSE(registry.quick_match(proto::RuleSet::Icf, 4, 2, 200));
+    EXPECT_FALSE(registry.quick_match(proto::RuleSet::Icf, 2, 3, 300));
+    EXPECT_FALSE(registry.take_waiting(proto::RuleSet::Icf, 4, 3)); // waits for singles
+    const auto others = registry.take_waiting(proto::RuleSet::Icf, 4, 1);
+    ASSERT_TRUE(others);
+    EXPECT_EQ(*others, (std::vector<int>{200}));
+    EXPECT_FALSE(registry.take_waiting(proto::RuleSet::Icf, 4, 2)); // taken along
+    EXPECT_EQ(registry.waiting_count(), 1U);
+    const auto alone = registry.take_waiting(proto::RuleSet::Icf, 2, 3);
+    ASSERT_TRUE(alone);
+    EXPECT_TRUE(alone->empty());
+    EXPECT_EQ(registry.waiting_count(), 0U);
 }
 
 TEST(Metrics, PrometheusText) {

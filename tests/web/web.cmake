@@ -13,13 +13,15 @@ endif()
 set(web_dir ${CMAKE_CURRENT_SOURCE_DIR}/web)
 add_test(NAME web.unit COMMAND ${CARROM_NODE} ${web_dir}/unit_test.mjs)
 set_tests_properties(web.unit PROPERTIES TIMEOUT 60 LABELS web)
+add_test(NAME web.doubles_unit COMMAND ${CARROM_NODE} ${web_dir}/doubles_test.mjs)
+set_tests_properties(web.doubles_unit PROPERTIES TIMEOUT 60 LABELS web)
 
 if(NOT CARROM_CHROMIUM OR NOT TARGET carrom-server OR NOT TARGET carrom-bot)
     message(STATUS "web tests: chromium, carrom-server or carrom-bot missing, browser tests not registered")
     return()
 endif()
 
-foreach(test two_pages_match page_vs_bot touch_phone reload_resume lobby_paths)
+foreach(test two_pages_match page_vs_bot touch_phone reload_resume lobby_paths doubles_pages)
     add_test(NAME web.${test} COMMAND ${CARROM_NODE} ${web_dir}/${test}.mjs)
     set_tests_properties(web.${test} PROPERTIES
         TIMEOUT 200

@@ -1,7 +1,9 @@
 // Pointer input -> a shot, in board px (client/src/aim_controller.cpp). The page maps canvas px
 // to board px first, so the same logic works for a turned view, a mouse or a finger.
 //
-// On the player's turn the striker sits on their baseline:
+// On the player's turn the striker sits on their baseline (any of the four sides: `x` is the
+// position along it, as the protocol's shot: board x for bottom and top, board y for left and
+// right; the angle is the board's absolute angle):
 //  - press in the baseline band (not on the striker) and drag: the striker follows along the
 //    baseline, clamped to the legal range; arrow keys move it in fine steps;
 //  - press on the striker and pull back: the shot goes from the pointer towards the striker, its
@@ -9,7 +11,9 @@
 //    Cancel button cancels, and a pull shorter than the dead zone is no shot.
 // An illegal placement (overlapping a piece) is shown before release and never shoots.
 
-import { baselineXMax, baselineXMin, baselineY, PHYSICS, radiusOf } from './board_geometry.js';
+import {
+  alongOf, baselineXMax, baselineXMin, PHYSICS, radiusOf, sideways, strikerAt,
+} from './board_geometry.js';
 
 export const AIM_DEFAULTS = Object.freeze({
   fullPowerDrag: 160, // pull length (board px) that gives max power
@@ -54,7 +58,8 @@ export class AimController {
     this.moved = false;
   }
 
-  // Our turn starts: the striker goes to x on our baseline (clamped).
+  // Our turn starts: the striker goes to x along our baseline (clamped). baseline: the seat's
+  // side, 'bottom', 'right', 'top' or 'left'.
   beginTurn(baseline, x) {
     this.baseline = baseline;
     this.x = clampBaselineX(x, this.c);
@@ -68,7 +73,7 @@ export class AimController {
   }
 
   striker() {
-    return { x: this.x, y: baselineY(this.baseline, this.c) };
+    return strikerAt(this.baseline, this.x, this.c);
   }
 
   setX(x, pieces) {
@@ -89,16 +94,16 @@ export class AimController {
     if ((p.x - s.x) ** 2 + (p.y - s.y) ** 2 <= grab * grab) {
       this.phase = 'pulling';
       this.placement = checkPlacement(s, pieces, this.c);
-    } else if (Math.abs(p.y - s.y) <= Math.max(this.aim.slideBand, minGrab)) {
+    } else if (this.acrossDistance(p, s) <= Math.max(this.aim.slideBand, minGrab)) {
       this.phase = 'sliding';
-      this.setX(p.x, pieces);
+      this.setX(alongOf(this.baseline, p), pieces);
     }
   }
 
   pointerMove(p, pieces) {
     if (!Number.isFinite(p.x) || !Number.isFinite(p.y)) return;
     this.pointer = p;
-    if (this.phase === 'sliding') this.setX(p.x, pieces);
+    if (this.phase === 'sliding') this.setX(alongOf(this.baseline, p), pieces);
   }
 
   // Returns the shot {x, angle, power} to send, or null.
@@ -116,7 +121,12 @@ export class AimController {
     return shot;
   }
 
-  // Arrow keys: +1 or -1 steps along the board's x axis.
+  // How far p is from the baseline through s, across it.
+  acrossDistance(p, s) {
+    return sideways(this.baseline) ? Math.abs(p.x - s.x) : Math.abs(p.y - s.y);
+  }
+
+  // Arrow keys: +1 or -1 steps along the baseline (board x, or board y for a side baseline).
   nudge(direction, coarse, pieces) {
     if (this.phase !== 'idle' && this.phase !== 'sliding') return;
     const step = coarse ? this.aim.coarseStep : this.aim.fineStep;

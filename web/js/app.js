@@ -6,7 +6,7 @@
 // query parameter: index.html?ws=ws://127.0.0.1:7777/.
 
 import { AimController, clampBaselineX } from './aim_controller.js';
-import { baselineY } from './board_geometry.js';
+import { alongOf, strikerAt } from './board_geometry.js';
 import { Connection } from './connection.js';
 import { Hud } from './hud.js';
 import { Lobby } from './lobby.js';
@@ -15,6 +15,7 @@ import { errorSentence } from './plain_words.js';
 import * as proto from './protocol.js';
 import { Renderer } from './renderer.js';
 import { parseRoomHash, roomHash, roomLink, showHash } from './room_link.js';
+import { teamSummaries } from './seat_panels.js';
 import { Session, SESSION_DEFAULTS } from './session.js';
 import { SoundPlayer } from './sound.js';
 
@@ -163,12 +164,17 @@ class App {
     const side = Math.min(this.stage.clientWidth, this.stage.clientHeight);
     if (this.renderer.resize(side, window.devicePixelRatio || 1)) {
       this.dirty = true;
+      // The seat panels on the frame (doubles) size themselves from these.
+      const wrap = document.getElementById('board-wrap').style;
+      const g = this.model.geometry;
+      wrap.setProperty('--side', `${this.renderer.side}px`);
+      wrap.setProperty('--frame', `${(this.renderer.side * g.frame) / g.boardSize}px`);
       this.resizes.push(`${this.stage.clientWidth}x${this.stage.clientHeight}`);
     }
   }
 
   mapping() {
-    return this.renderer.mapping(this.model.flipped());
+    return this.renderer.mapping(this.model.viewTurns());
   }
 
   boardPoint(e) {
@@ -225,9 +231,9 @@ class App {
         this.aim.cancel();
         this.pointerId = null;
       } else if (e.key === 'ArrowLeft' || e.key === 'ArrowRight') {
-        // Screen left is board -x, or +x when the view is turned.
-        let dir = e.key === 'ArrowLeft' ? -1 : 1;
-        if (this.model.flipped()) dir = -dir;
+        // Screen left and right as a step along our baseline in the turned view.
+        const screen = { x: e.key === 'ArrowLeft' ? -1 : 1, y: 0 };
+        const dir = alongOf(this.aim.baseline, this.mapping().directionToBoard(screen));
         this.aim.nudge(dir, e.shiftKey, pieces);
         e.preventDefault();
       }
@@ -265,7 +271,8 @@ class App {
     }
   }
 
-  // What the canvas shows besides the pieces: our striker while we aim, or the opponent's.
+  // What the canvas shows besides the pieces: our striker while we aim, or the striker of the seat
+  // to play (an opponent, or in doubles our partner) on its own baseline.
   overlays() {
     const v = this.model.view;
     if (this.aim.phase !== 'inactive') {
@@ -279,8 +286,8 @@ class App {
     }
     if (v.inRoom && v.phase === 'aiming' && !this.model.animating() && v.toPlay !== v.you) {
       const x = clampBaselineX(v.aimX ?? this.model.physics.boardSize / 2, this.model.physics);
-      const y = baselineY(this.model.seatBaseline(v.toPlay), this.model.physics);
-      return { placing: { striker: { x, y }, alpha: 0.85, warning: false }, aim: null, grabHint: false };
+      const striker = strikerAt(this.model.seatBaseline(v.toPlay), x, this.model.physics);
+      return { placing: { striker, alpha: 0.85, warning: false }, aim: null, grabHint: false };
     }
     return { placing: null, aim: null, grabHint: false };
   }
@@ -298,10 +305,11 @@ class App {
     for (const cue of this.model.takeSounds()) this.sound.play(cue);
     const o = this.overlays();
     const key = [v.inRoom, this.model.version, this.aim.phase, this.aim.x, this.aim.pointer.x,
-      this.aim.pointer.y, o.placing?.striker.x, this.renderer.side, this.model.flipped()].join('|');
+      this.aim.pointer.y, o.placing?.striker.x, o.placing?.striker.y, this.renderer.side,
+      this.model.viewTurns()].join('|');
     if (animating || this.dirty || key !== this.drawKey) {
       if (v.inRoom) {
-        this.renderer.draw({ bodies: this.bodies, flipped: this.model.flipped(), ...o });
+        this.renderer.draw({ bodies: this.bodies, turns: this.model.viewTurns(), ...o });
       } else {
         this.renderer.drawEmpty();
       }
@@ -339,12 +347,16 @@ class App {
       session: { phase: this.session.phase, status: this.session.status, badFrames: this.session.badFrames() },
       inRoom: v.inRoom, code: v.code, you: v.you, ruleSet: v.ruleSet, phase: v.phase, turn: v.turn,
       toPlay: v.toPlay, winner: v.winner, gameEnd: v.gameEnd, myTurn: this.model.myTurn(),
-      animating: this.model.animating(), flipped: this.model.flipped(),
+      animating: this.model.animating(), flipped: this.model.flipped(), turns: this.model.viewTurns(),
+      panels: this.hud.panels.map((p) => ({ ...p })), teams: this.model.doubles() ? teamSummaries(v) : [],
       seats: v.seats.map((s) => ({ ...s })), queen: { ...v.queen }, aimX: v.aimX,
       board: this.model.boardNow().map((b) => ({ ...b })),
       drawn: this.renderer.drawn.map((d) => ({ ...d })),
       canvas: { left: rect.left, top: rect.top, side: this.renderer.side, dpr: this.renderer.dpr },
-      aim: { phase: this.aim.phase, x: this.aim.x, y: this.aim.striker().y, legal: this.aim.placement.legal },
+      aim: {
+        phase: this.aim.phase, x: this.aim.x, side: this.aim.baseline, striker: this.aim.striker(),
+        y: this.aim.striker().y, legal: this.aim.placement.legal,
+      },
       shotSentTurn: this.shotSentTurn, shots: this.model.shots, lastShot: this.model.lastShot,
       frames: this.renderer.frames, paints: this.renderer.painter.paints, woodMs: this.renderer.painter.woodMs, resizes: this.resizes.slice(), sounds: this.sound.played,
       cues: { heard: this.model.cuesHeard, late: this.model.cues.late, merged: this.model.cuesMerged },

@@ -19,9 +19,28 @@ export function radiusOf(kind, c = PHYSICS) {
   return kind === 'striker' ? c.strikerRadius : c.coinRadius;
 }
 
-// y of the striker centre line for a seat's baseline ('bottom' or 'top').
-export function baselineY(baseline, c = PHYSICS) {
-  return baseline === 'top' ? c.baselineOffset : c.boardSize - c.baselineOffset;
+// Whether a side's baseline runs down the board (left, right) rather than across it.
+export function sideways(side) {
+  return side === 'left' || side === 'right';
+}
+
+// A board point's coordinate along a side's baseline: x for bottom and top, y for left and right
+// (the protocol's shot and aim `x`).
+export function alongOf(side, p) {
+  return sideways(side) ? p.y : p.x;
+}
+
+// The striker's centre on a side's baseline ('bottom', 'right', 'top', 'left') at `along`
+// (rules::striker_for): baselines at baselineOffset from their edge.
+export function strikerAt(side, along, c = PHYSICS) {
+  const near = c.baselineOffset;
+  const far = c.boardSize - c.baselineOffset;
+  switch (side) {
+    case 'top': return { x: along, y: near };
+    case 'left': return { x: near, y: along };
+    case 'right': return { x: far, y: along };
+    default: return { x: along, y: far };
+  }
 }
 
 export function baselineXMin(c = PHYSICS) {

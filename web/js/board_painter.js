@@ -49,8 +49,8 @@ function grain(along, across, seed) {
   return 0.75 * rings + 0.25 * fine;
 }
 
-// The wood of the board, side x side px, in board orientation (the picture is symmetric enough
-// under a half turn that a turned view uses it as it is).
+// The wood of the board, side x side px, in board orientation. A turned view uses the picture as
+// it is: the markings are the same under every quarter turn; only the grain runs the other way.
 function paintWood(geo, side) {
   const canvas = makeCanvas(side, side);
   const ctx = canvas.getContext('2d');

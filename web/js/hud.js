@@ -1,5 +1,7 @@
 // The heads-up display as HTML around and over the canvas (client/app/hud_painter.cpp): both
-// seats with names, colours, dues and scores; whose turn and the shot clock; the queen; room,
+// seats with names, colours, dues and scores (in doubles: the two teams in the top bar and one
+// panel per seat on the board's frame at that seat's side, seat_panels.js); whose turn and the
+// shot clock; the queen; room,
 // rule set, board number, coins left and spectators; the connection and round trip; short
 // messages over the board; the room code with its shareable link while waiting; the result and
 // why the game ended, with Rematch and Lobby; the reconnecting notice. Text is written to the
@@ -7,6 +9,7 @@
 
 import { countWords, ruleSetName } from './plain_words.js';
 import { roomLink } from './room_link.js';
+import { freeSeats, seatPanels, teamSummaries } from './seat_panels.js';
 
 const $ = (id) => document.getElementById(id);
 
@@ -42,8 +45,10 @@ export class Hud {
       link: $('waiting-link'), over: $('game-over'), result: $('game-over-result'),
       rematch: $('rematch'), notice: $('notice'), noticeTitle: $('notice-title'),
       noticeText: $('notice-text'), retry: $('retry'), cancel: $('cancel-aim'), mute: $('mute'),
-      leave: $('leave'), copy: $('copy-link'),
+      leave: $('leave'), copy: $('copy-link'), share: $('waiting-share'),
+      frameSeats: [...document.querySelectorAll('.frame-seat')],
     };
+    this.panels = []; // what the frame panels show (doubles), for the debug hook
     this.messagesKey = '';
     this.el.rematch.addEventListener('click', () => actions.rematch());
     $('to-lobby').addEventListener('click', () => actions.lobby());
@@ -68,16 +73,59 @@ export class Hud {
     if (s.occupied && !s.connected) name += ' (away)';
     if (seat === v.you) name += ' (you)';
     let sub = s.colour === 'none' ? '' : s.colour;
-    if (s.dues > 0) sub += `${sub ? ', ' : ''}owes ${countWords(s.dues, 'due', 'dues')}`;
-    const parts = el.parts ?? (el.parts = {
-      name: el.querySelector('.name'), sub: el.querySelector('.sub'),
-      score: el.querySelector('.score'), dot: el.querySelector('.dot'),
-    });
+    this.fill(el, name, sub, s);
+  }
+
+  // A team in a top-bar box (doubles).
+  team(el, model, t) {
+    setHidden(el, false);
+    setClass(el, 'to-play', t.toPlay);
+    let name = t.names;
+    if (t.ours) name += ' (your team)';
+    let sub = t.colour === 'none' ? '' : t.colour;
+    if (t.free > 0) sub += `${sub ? ', ' : ''}${countWords(t.free, 'seat', 'seats')} free`;
+    this.fill(el, name, sub, t);
+  }
+
+  // A box's name, sub-line (plus the dues owed, in the alert colour), score and colour dot.
+  fill(el, name, sub, { dues, score, colour }) {
+    if (dues > 0) sub += `${sub ? ', ' : ''}owes ${countWords(dues, 'due', 'dues')}`;
+    const parts = this.parts(el);
     setText(parts.name, name);
     setText(parts.sub, sub);
-    setClass(parts.sub, 'alert', s.dues > 0);
-    setText(parts.score, String(s.score));
-    if (parts.dot.dataset.colour !== s.colour) parts.dot.dataset.colour = s.colour;
+    setClass(parts.sub, 'alert', dues > 0);
+    setText(parts.score, String(score));
+    if (parts.dot.dataset.colour !== colour) parts.dot.dataset.colour = colour;
+  }
+
+  parts(el) {
+    return el.parts ?? (el.parts = {
+      name: el.querySelector('.name'), sub: el.querySelector('.sub'),
+      score: el.querySelector('.score'), dot: el.querySelector('.dot'), tag: el.querySelector('.tag'),
+      dues: el.querySelector('.dues'),
+    });
+  }
+
+  // The four seats at their sides of the board (doubles); hidden in singles.
+  frameSeats(model) {
+    const panels = model.doubles() ? seatPanels(model.view) : [];
+    this.panels = panels;
+    for (const el of this.el.frameSeats) {
+      const p = panels.find((x) => x.at === el.dataset.at);
+      setHidden(el, !p);
+      if (!p) continue;
+      const parts = this.parts(el);
+      let name = p.name;
+      if (p.away) name += ' (away)';
+      else if (p.bot) name += ' (bot)';
+      setText(parts.name, name);
+      setText(parts.tag, p.tag);
+      setText(parts.dues, p.dues > 0 ? `owes ${p.dues}` : '');
+      setText(parts.score, String(p.score));
+      setClass(el, 'to-play', p.toPlay);
+      if (el.dataset.tag !== p.tag) el.dataset.tag = p.tag;
+      if (parts.dot.dataset.colour !== p.colour) parts.dot.dataset.colour = p.colour;
+    }
   }
 
   statusLine(model, now) {
@@ -85,7 +133,10 @@ export class Hud {
     let text;
     let tone = '';
     switch (v.phase) {
-      case 'waiting': text = 'Waiting for a player'; break;
+      case 'waiting':
+        text = model.doubles() ? `Waiting for ${countWords(freeSeats(v), 'player', 'players')}`
+          : 'Waiting for a player';
+        break;
       case 'moving': text = `${model.seatName(v.toPlay)} shot`; break;
       case 'aiming':
         text = model.myTurn() ? 'Your turn' : `${model.seatName(v.toPlay)} to play`;
@@ -93,7 +144,9 @@ export class Hud {
         break;
       case 'board_over': text = `Board ${v.boardNumber} over`; break;
       default:
-        text = v.winner < 0 ? 'Game drawn' : v.winner === v.you ? 'You won!' : `${model.seatName(v.winner)} won`;
+        if (v.winner < 0) text = 'Game drawn';
+        else if (model.ourTeam(v.winner)) text = model.doubles() ? 'Your team won!' : 'You won!';
+        else text = `${model.teamName(v.winner)} won`;
         tone = 'gold';
         break;
     }
@@ -110,10 +163,17 @@ export class Hud {
     const v = model.view;
     const e = this.el;
     setHidden(e.top, !v.inRoom);
+    this.frameSeats(model);
     if (v.inRoom) {
-      const left = v.you >= 0 ? v.you : 0;
-      this.seat(e.seats[0], model, left);
-      this.seat(e.seats[1], model, 1 - left);
+      if (model.doubles()) {
+        const teams = teamSummaries(v);
+        this.team(e.seats[0], model, teams[0]);
+        this.team(e.seats[1], model, teams[1]);
+      } else {
+        const left = v.you >= 0 ? v.you : 0;
+        this.seat(e.seats[0], model, left);
+        this.seat(e.seats[1], model, 1 - left);
+      }
       const status = this.statusLine(model, now);
       setText(e.status, status.text);
       e.status.dataset.tone = status.tone;
@@ -147,6 +207,9 @@ export class Hud {
     if (waiting) {
       setText(e.code, v.code);
       setText(e.link, roomLink(window.location, v.code));
+      setText(e.share, model.doubles()
+        ? 'Share this link: your partner and your opponents open it and play.'
+        : 'Share this link: your opponent opens it and plays.');
     }
     const over = v.inRoom && v.phase === 'game_over' && !model.animating() && !trouble;
     setHidden(e.over, !over);

@@ -1,11 +1,18 @@
 // The lobby (client/app/lobby_view.cpp, as an HTML form over the board): the player's name
-// (kept in localStorage), a rule set and match options for a new room, a server bot of a chosen
-// level, quick match, and a room code to join or watch. It hands the app a checked request; it
+// (kept in localStorage), a rule set, singles or doubles and match options for a new room, a
+// server bot of a chosen level (three of them in doubles), quick match, and a room code to join
+// or watch. It hands the app a checked request; it
 // never talks to the server itself.
 
 import {
   clipName, isPlayerName, isRoomCode, normaliseRoomCode, RULE_SETS, BOT_LEVELS,
 } from './protocol.js';
+
+// The new-game buttons' labels for singles and doubles.
+const LABELS = {
+  2: { create: 'Create room', quick: 'Quick match', 'play-bot': 'Play a bot' },
+  4: { create: 'Create doubles', quick: 'Quick match doubles', 'play-bot': 'Play bots (doubles)' },
+};
 
 const $ = (id) => document.getElementById(id);
 
@@ -18,7 +25,7 @@ function optionalInt(input, lo, hi) {
 }
 
 export class Lobby {
-  // onRequest(name, request): request is {kind, ruleSet, options, bot, code}.
+  // onRequest(name, request): request is {kind, ruleSet, options, bot, seats, code}.
   constructor(storage, onRequest) {
     this.storage = storage;
     this.onRequest = onRequest;
@@ -29,6 +36,8 @@ export class Lobby {
     this.boards = $('boards');
     this.shotClock = $('shot-clock');
     this.botLevel = $('bot-level');
+    this.seatCount = $('seat-count');
+    this.seatCount.addEventListener('change', () => this.labelButtons());
     this.code = $('room-code');
     this.status = $('lobby-status');
     this.error = $('lobby-error');
@@ -47,10 +56,22 @@ export class Lobby {
       const c = normaliseRoomCode(this.code.value);
       if (c !== this.code.value) this.code.value = c;
     });
+    this.labelButtons();
     this.name.addEventListener('input', () => {
       const n = clipName(this.name.value);
       if (n !== this.name.value) this.name.value = n;
     });
+  }
+
+  // 2 (singles) or 4 (doubles), as chosen.
+  seats() {
+    return this.seatCount.value === '4' ? 4 : 2;
+  }
+
+  labelButtons() {
+    for (const [id, text] of Object.entries(LABELS[this.seats()])) {
+      if ($(id).textContent !== text) $(id).textContent = text;
+    }
   }
 
   storedName() {
@@ -114,9 +135,11 @@ export class Lobby {
         }
       }
       const level = BOT_LEVELS.includes(this.botLevel.value) ? this.botLevel.value : 'medium';
-      request = { kind: 'create', ruleSet, options, bot: action === 'bot' ? level : null };
+      request = {
+        kind: 'create', ruleSet, options, bot: action === 'bot' ? level : null, seats: this.seats(),
+      };
     } else if (action === 'quick') {
-      request = { kind: 'quick', ruleSet };
+      request = { kind: 'quick', ruleSet, seats: this.seats() };
     } else {
       const code = normaliseRoomCode(this.code.value);
       if (!isRoomCode(code)) {

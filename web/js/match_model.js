@@ -18,6 +18,7 @@ import {
   countWords, errorSentence, gameEndSentence, pocketList, queenSentence,
 } from './plain_words.js';
 import { DEFAULT_MOTION } from './protocol.js';
+import { viewTurns } from './seat_panels.js';
 import { ServerClock } from './server_clock.js';
 import { loudnessFromImpulse, SoundCueQueue } from './sound_cues.js';
 
@@ -31,7 +32,7 @@ function emptyView() {
     you: -1, // our seat, -1 for a spectator
     ruleSet: 'icf',
     options: { target_points: 0, boards: 0, shot_clock_s: 0 },
-    seats: [], // {occupied, name, connected, bot, colour, baseline, score, dues}
+    seats: [], // {occupied, name, connected, bot, colour, baseline, team, score, dues}
     spectators: 0,
     boardNumber: 1,
     turn: 0,
@@ -102,14 +103,43 @@ export class MatchModel {
     return s ? s.baseline : seat === 1 ? 'top' : 'bottom';
   }
 
-  // Our baseline is the top one: the view is turned so that it is at the bottom.
+  // Quarter turns of the view that put our baseline at the bottom (screen_mapping.js);
+  // spectators see seat 0's view.
+  viewTurns() {
+    return viewTurns(this.view);
+  }
+
+  // Our baseline is the top one: the view is turned half a turn.
   flipped() {
-    return this.view.you >= 0 && this.seatBaseline(this.view.you) === 'top';
+    return this.viewTurns() === 2;
+  }
+
+  doubles() {
+    return this.view.seats.length === 4;
   }
 
   seatName(seat) {
     const s = this.view.seats[seat];
     return s && s.name ? s.name : `Seat ${seat + 1}`;
+  }
+
+  teamOf(seat) {
+    const s = this.view.seats[seat];
+    return s ? s.team : seat;
+  }
+
+  // A team's name: its players' names ("Asha & Chitra"); in singles the seat's name. The team's
+  // number is its first seat (the protocol's `winner`).
+  teamName(team) {
+    if (!this.doubles()) return this.seatName(team);
+    const names = [];
+    this.view.seats.forEach((s, i) => { if (s.team === team) names.push(this.seatName(i)); });
+    return names.length > 0 ? names.join(' & ') : `Team ${team + 1}`;
+  }
+
+  // Whether `team` is ours (never for a spectator).
+  ourTeam(team) {
+    return this.view.you >= 0 && team >= 0 && this.teamOf(this.view.you) === team;
   }
 
   // Seconds left on the shot clock by the server's clock, or null when none runs.
@@ -155,7 +185,7 @@ export class MatchModel {
     });
     v.seats = m.seats.map((s, i) => ({
       occupied: s.occupied, name: s.name, connected: s.connected, bot: s.bot, colour: s.colour,
-      baseline: s.baseline, score: m.scores[i] ?? 0, dues: m.dues[i] ?? 0,
+      baseline: s.baseline, team: s.team ?? (m.seats.length === 4 ? i % 2 : i), score: m.scores[i] ?? 0, dues: m.dues[i] ?? 0,
     }));
     const bodies = m.bodies.map((b) => {
       this.kinds.set(b.id, b.kind);
@@ -234,10 +264,14 @@ export class MatchModel {
         v.queen = e.queen;
         post(queenSentence(e.queen, this.seatName(e.queen.seat)), 'info');
         break;
-      case 'due':
-        this.setSeat(e.seat, { dues: e.owed });
-        if (e.owed > 0) post(`${this.seatName(e.seat)} owes ${countWords(e.owed, 'due', 'dues')}`, 'foul');
+      case 'due': {
+        // Dues are the team's: partners owe them together.
+        const team = this.teamOf(e.seat);
+        v.seats.forEach((s, i) => { if (i === e.seat || s.team === team) s.dues = e.owed; });
+        const who = this.doubles() ? `${this.teamName(team)} owe` : `${this.seatName(e.seat)} owes`;
+        if (e.owed > 0) post(`${who} ${countWords(e.owed, 'due', 'dues')}`, 'foul');
         break;
+      }
       case 'turn':
         this.serverClock.oneWay(e.server_time_ms, localS);
         Object.assign(v, {
@@ -249,15 +283,15 @@ export class MatchModel {
       case 'board_end':
         e.scores.forEach((score, i) => this.setSeat(i, { score }));
         v.phase = 'board_over';
-        post(e.winner >= 0 ? `Board ${e.board} to ${this.seatName(e.winner)} (+${e.points})`
+        post(e.winner >= 0 ? `Board ${e.board} to ${this.teamName(e.winner)} (+${e.points})`
           : `Board ${e.board} ends, no winner`, 'good');
         break;
       case 'game_end': {
         e.scores.forEach((score, i) => this.setSeat(i, { score }));
         v.winner = e.winner;
         v.phase = 'game_over';
-        const sentence = gameEndSentence(e.winner, e.winner === v.you && v.you >= 0,
-          this.seatName(e.winner), e.reason, v.you < 0);
+        const sentence = gameEndSentence(e.winner, this.ourTeam(e.winner), this.teamName(e.winner),
+          e.reason, v.you < 0, this.doubles());
         v.gameEnd = { winner: e.winner, reason: e.reason, sentence };
         post(sentence, 'good');
         break;

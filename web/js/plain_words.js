@@ -27,8 +27,9 @@ export function queenSentence(queen, seatName) {
   }
 }
 
-// Why a game ended, from game_end's reason.
-export function gameEndSentence(winner, weWon, winnerName, reason, spectator = false) {
+// Why a game ended, from game_end's reason. In doubles (team) the winner is a team, named by its
+// players ("Asha & Chitra").
+export function gameEndSentence(winner, weWon, winnerName, reason, spectator = false, team = false) {
   let why = '';
   if (reason === 'forfeit') why = ' (the opponent did not come back in time)';
   else if (reason === 'left') why = ' (the opponent left)';
@@ -40,7 +41,15 @@ export function gameEndSentence(winner, weWon, winnerName, reason, spectator = f
     why = reason === 'clock' ? ' (the other player ran out of time)'
       : ' (the other player left)';
   }
+  if (team && (reason === 'forfeit' || reason === 'left' || reason === 'clock')) {
+    why = {
+      forfeit: ' (a player of the other team did not come back in time)',
+      left: ' (a player of the other team left)',
+      clock: ' (the other team ran out of time)',
+    }[reason];
+  }
   if (winner < 0) return `The game is drawn${why}`;
+  if (team) return `${weWon ? 'Your team wins the game' : `${winnerName} win the game`}${why}`;
   return `${weWon ? 'You win the game' : `${winnerName} wins the game`}${why}`;
 }
 

@@ -9,6 +9,8 @@ export const ROOM_CODE_LENGTH = 6;
 export const ROOM_CODE_ALPHABET = 'ABCDEFGHJKMNPQRSTUVWXYZ23456789';
 export const RULE_SETS = ['icf', 'seed', 'freestyle', 'discpool'];
 export const BOT_LEVELS = ['random', 'easy', 'medium', 'hard'];
+export const SEAT_COUNTS = [2, 4]; // singles, doubles
+export const BASELINES = ['bottom', 'right', 'top', 'left']; // seat order 0..3 in doubles
 export const MAX_SERVER_MESSAGE_BYTES = 262144;
 
 const utf8 = new TextEncoder();
@@ -62,9 +64,12 @@ export function hello(name, resumeToken) {
   return m;
 }
 
-// options: {target_points?, boards?, shot_clock_s?}; bot: level string or null.
-export function createRoom(ruleSet, options = {}, botLevel = null) {
+// options: {target_points?, boards?, shot_clock_s?}; bot: level string or null; seats: 2 or 4
+// (sent only for doubles: older servers know singles only). In doubles the server's bots take
+// every seat but ours (bot.seats left out).
+export function createRoom(ruleSet, options = {}, botLevel = null, seats = 2) {
   const m = { type: 'create_room', rule_set: ruleSet };
+  if (seats === 4) m.seats = 4;
   const o = {};
   for (const key of ['target_points', 'boards', 'shot_clock_s']) {
     if (options[key] !== undefined && options[key] !== null && options[key] !== '') {
@@ -80,8 +85,10 @@ export function joinRoom(code, asSpectator = false) {
   return { type: 'join_room', code, as: asSpectator ? 'spectator' : 'player' };
 }
 
-export function quickMatch(ruleSet) {
-  return { type: 'quick_match', rule_set: ruleSet };
+export function quickMatch(ruleSet, seats = 2) {
+  const m = { type: 'quick_match', rule_set: ruleSet };
+  if (seats === 4) m.seats = 4;
+  return m;
 }
 
 export function aim(turn, x) {
@@ -155,14 +162,19 @@ function roomState(m) {
   int(m, 'you');
   oneOf(m, 'rule_set', RULE_SETS);
   need(m.options && typeof m.options === 'object', 'options', 'an object');
-  need(Array.isArray(m.seats) && m.seats.length >= 2, 'seats', 'an array of 2 or more seats');
+  need(Array.isArray(m.seats) && SEAT_COUNTS.includes(m.seats.length), 'seats',
+    'an array of 2 or 4 seats');
+  const count = m.seats.length;
   m.seats.forEach((s, i) => {
     const p = `seats[${i}]`;
     need(s && typeof s === 'object', p, 'an object');
     need(isBool(s.occupied) && isStr(s.name) && isBool(s.connected) && isBool(s.bot), p,
       'a seat');
     need(['none', 'black', 'white'].includes(s.colour), `${p}.colour`, 'a colour');
-    need(['bottom', 'top'].includes(s.baseline), `${p}.baseline`, 'bottom or top');
+    need(BASELINES.includes(s.baseline), `${p}.baseline`, 'bottom, right, top or left');
+    // An older server sends no team: the singles team is the seat, doubles' is seat % 2.
+    if (s.team === undefined) s.team = count === 4 ? i % 2 : i;
+    need(isInt(s.team) && s.team >= 0 && s.team < count, `${p}.team`, 'a team number');
   });
   intArray(m, 'scores');
   intArray(m, 'dues');

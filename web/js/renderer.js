@@ -43,16 +43,17 @@ export class Renderer {
     return true;
   }
 
-  mapping(flipped) {
+  // turns: quarter turns of the view (screen_mapping.js).
+  mapping(turns) {
     return new ScreenMapping(0, 0, this.side / this.geometry.boardSize, this.geometry.boardSize,
-      flipped);
+      turns);
   }
 
-  // frame: {bodies, flipped, placing: {striker, alpha, warning} | null,
+  // frame: {bodies, turns, placing: {striker, alpha, warning} | null,
   //         aim: {striker, angle, fraction} | null, grabHint: bool}
   draw(frame) {
     const ctx = this.ctx;
-    const m = this.mapping(frame.flipped);
+    const m = this.mapping(frame.turns);
     const devSide = Math.round(this.side * this.dpr);
     if (devSide <= 0) return;
     this.clearLastFrame(devSide);

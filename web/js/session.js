@@ -140,7 +140,7 @@ export class Session {
     this.link.send(proto.ping(nonce));
   }
 
-  // Ask for a room: {kind: create|join|spectate|quick, ruleSet, options, bot, code}. Sent as
+  // Ask for a room: {kind: create|join|spectate|quick, ruleSet, options, bot, seats, code}. Sent as
   // soon as the server has welcomed us (or at once if it has).
   ask(request) {
     this.request = request;
@@ -151,14 +151,16 @@ export class Session {
     const r = this.request;
     if (!r || !this.link) return;
     let m;
-    if (r.kind === 'create') m = proto.createRoom(r.ruleSet, r.options ?? {}, r.bot ?? null);
+    if (r.kind === 'create') m = proto.createRoom(r.ruleSet, r.options ?? {}, r.bot ?? null, r.seats ?? 2);
     else if (r.kind === 'join') m = proto.joinRoom(r.code, false);
     else if (r.kind === 'spectate') m = proto.joinRoom(r.code, true);
-    else m = proto.quickMatch(r.ruleSet);
+    else m = proto.quickMatch(r.ruleSet, r.seats ?? 2);
     this.link.send(m);
     this.lastRequest = r;
     this.request = null;
-    this.setStatus('joining', r.kind === 'quick' ? 'Waiting for an opponent...' : 'Joining...');
+    let status = 'Joining...';
+    if (r.kind === 'quick') status = r.seats === 4 ? 'Waiting for three players...' : 'Waiting for an opponent...';
+    this.setStatus('joining', status);
   }
 
   // Game input (aim, shoot, rematch): sent only while in a room.

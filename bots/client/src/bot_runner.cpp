@@ -1,6 +1,7 @@
 #include "carrom/bots/bot_runner.hpp"
 
 #include "carrom/bots/match_view.hpp"
+#include "carrom/rules/seat.hpp"
 
 #include <algorithm>
 #include <thread>
@@ -206,7 +207,7 @@ void BotRunner::send_room_request() {
         connection_->send(proto::JoinRoom{config_.code, proto::Role::Spectator});
         break;
     case JoinMode::Quick:
-        connection_->send(proto::QuickMatch{config_.quick_rule_set});
+        connection_->send(proto::QuickMatch{config_.quick_rule_set, config_.quick_seats});
         break;
     }
 }
@@ -228,6 +229,8 @@ void BotRunner::on_room_state(const proto::RoomState& room) {
     room_ = room;
     summary_.room_code = room.code;
     summary_.seat = room.you;
+    summary_.team =
+        room.you >= 0 ? rules::team_of_seat(room.you, room.seats.size() == 4 ? 4 : 2) : -1;
     if (missed_game_end) { // the game ended while this bot was away: its game_end is gone
         on_game_end(proto::GameEndEvent{room.winner, "ended_while_away", room.scores});
         return;
@@ -304,7 +307,7 @@ void BotRunner::on_game_end(const proto::GameEndEvent& end) {
     if (seat >= 0) {
         if (end.winner < 0) {
             ++summary_.draws;
-        } else if (end.winner == seat) {
+        } else if (end.winner == summary_.team) { // the winning team's number
             ++summary_.wins;
         } else {
             ++summary_.losses;

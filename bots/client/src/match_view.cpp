@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace carrom::bots {
 
@@ -12,6 +13,7 @@ namespace {
 
 rules::RulesConfig rules_config_from(const proto::RoomState& room) {
     rules::RulesConfig config;
+    config.seat_count = room.seats.size() == 4 ? 4 : 2; // doubles: four seats, partners opposite
     config.shot_clock_s = room.options.shot_clock_s;
     if (room.rule_set == proto::RuleSet::Freestyle) {
         config.freestyle.target = room.options.target_points;
@@ -42,7 +44,9 @@ rules::QueenState queen_from(const proto::QueenInfo& queen) {
     return out;
 }
 
-std::vector<int> per_seat(const std::vector<int>& values, std::size_t n) {
+// The first n entries of values (0 for missing ones). room_state carries one entry per seat, each
+// its team's value; teams 0 and 1 are seats 0 and 1, so the first entries are the teams' values.
+std::vector<int> per_team(const std::vector<int>& values, std::size_t n) {
     std::vector<int> out(values.begin(),
                          values.begin() + static_cast<std::ptrdiff_t>(std::min(values.size(), n)));
     out.resize(n, 0);
@@ -77,19 +81,28 @@ rules::MatchState match_state_from(const proto::RoomState& room, const PhysicsCo
         }
     }
     const std::size_t teams = state.scores.size();
-    state.scores = per_seat(room.scores, teams);
-    state.dues_owed = per_seat(room.dues, teams);
+    state.scores = per_team(room.scores, teams);
+    state.dues_owed = per_team(room.dues, teams);
     state.board = std::max(1, room.board_number);
     state.turn_seat = std::clamp(room.to_play, 0, static_cast<int>(state.seats.size()) - 1);
     state.turn_number = room.turn;
     state.queen = queen_from(room.queen);
+    // The breaker's team plays white: the first seat playing white, or (before the break, in
+    // doubles) the white seat to play, which is the breaker itself.
+    const bool breaker_plays_white =
+        room.rule_set == proto::RuleSet::Icf || room.rule_set == proto::RuleSet::DiscPool;
+    std::vector<int> white_seats;
     for (std::size_t s = 0; s < room.seats.size() && s < state.seats.size(); ++s) {
-        if (room.seats[s].colour == proto::Colour::White &&
-            (room.rule_set == proto::RuleSet::Icf || room.rule_set == proto::RuleSet::DiscPool)) {
-            state.breaker = static_cast<int>(s);
+        if (breaker_plays_white && room.seats[s].colour == proto::Colour::White) {
+            white_seats.push_back(static_cast<int>(s));
         }
     }
     state.break_done = moved_from_layout(state);
+    if (!white_seats.empty()) {
+        const bool turn_is_white =
+            std::find(white_seats.begin(), white_seats.end(), state.turn_seat) != white_seats.end();
+        state.breaker = !state.break_done && turn_is_white ? state.turn_seat : white_seats.front();
+    }
     state.strokes_this_board = state.break_done ? 1 : 0;
     if (room.phase == proto::Phase::GameOver) {
         state.phase = rules::Phase::GameOver;

@@ -1,5 +1,6 @@
 #include "carrom/rules/placement.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -135,6 +136,42 @@ std::optional<RuleError> check_placement(const MatchState& state, int seat, cons
     if (shot.power < 0.0 || shot.power > physics.max_power) {
         return RuleError{RuleErrorCode::PowerOutOfRange, "shot.power",
                          "The power must be in [0, " + std::to_string(physics.max_power) + "]."};
+    }
+    return std::nullopt;
+}
+
+std::optional<Shot> nearest_legal_shot(const MatchState& state, int seat, const Shot& shot) {
+    if (seat < 0 || seat >= static_cast<int>(state.seats.size())) {
+        return std::nullopt;
+    }
+    const PhysicsConfig& physics = state.physics;
+    const double lo = baseline_x_min(physics);
+    const double hi = baseline_x_max(physics);
+    Shot legal = shot;
+    legal.x_px = std::isfinite(shot.x_px) ? std::clamp(shot.x_px, lo, hi) : 0.5 * (lo + hi);
+    legal.power = std::isfinite(shot.power) ? std::clamp(shot.power, 0.0, physics.max_power) : 0.0;
+    const Side side = state.seats[static_cast<std::size_t>(seat)].side;
+    const auto placed = [&](double x) {
+        Shot s = legal;
+        s.x_px = x;
+        if (!std::isfinite(shot.angle_rad)) {
+            const Vec2 to_centre = physics.centre() - striker_for(physics, side, s).pos_px;
+            s.angle_rad = std::atan2(to_centre.y, to_centre.x);
+        }
+        return s;
+    };
+    constexpr double kStepPx = 0.125;
+    const double reach = std::fmax(legal.x_px - lo, hi - legal.x_px);
+    for (int i = 0; i * kStepPx <= reach; ++i) {
+        for (const double x : {legal.x_px - i * kStepPx, legal.x_px + i * kStepPx}) {
+            if (x < lo || x > hi) {
+                continue;
+            }
+            const Shot candidate = placed(x);
+            if (!check_placement(state, seat, candidate)) {
+                return candidate;
+            }
+        }
     }
     return std::nullopt;
 }

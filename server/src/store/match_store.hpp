@@ -72,6 +72,7 @@ struct MatchListing {
     std::string room_code;
     rules::RuleSet rule_set = rules::RuleSet::Icf;
     std::vector<std::string> players; // seat names as the game started
+    std::vector<int> teams;           // per seat: its team (singles: the seat; doubles: seat % 2)
     std::int64_t created_ms = 0;      // Unix time
     std::optional<std::int64_t> finished_ms;
     std::optional<rules::GameResult> result; // set when the game ended by the rules

@@ -164,6 +164,8 @@ Loaded<std::vector<MatchListing>> SqliteReader::recent_matches(const std::string
             const proto::MatchCreated head = decode_head(m.id, q.getColumn(2).getString());
             m.rule_set = head.rule_set;
             for (const proto::JournalSeat& seat : head.seats) {
+                m.teams.push_back(
+                    rules::team_of_seat(static_cast<int>(m.players.size()), head.rules.seat_count));
                 m.players.push_back(seat.name);
             }
             m.created_ms = q.getColumn(3).getInt64();

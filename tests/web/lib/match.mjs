@@ -5,8 +5,12 @@
 import { check, sleep } from './harness.mjs';
 import { chooseShot } from './shot_chooser.mjs';
 
-export function breakShot(baselineY) {
-  return { x: 300, angle: baselineY > 300 ? -Math.PI / 2 : Math.PI / 2, power: 25 };
+// A full-power shot from the middle of a baseline straight at the centre. side: 'bottom',
+// 'right', 'top', 'left', or (singles callers) the baseline's board y.
+export function breakShot(side) {
+  const s = typeof side === 'number' ? (side > 300 ? 'bottom' : 'top') : side;
+  const angle = { bottom: -Math.PI / 2, right: Math.PI, top: Math.PI / 2, left: 0 }[s];
+  return { x: 300, angle, power: 25 };
 }
 
 // players: pages with seats. onShot(player, shot, state) runs after each shot is sent.
@@ -30,7 +34,7 @@ export async function playUntilOver(players, { maxShots = 60, timeoutMs = 120000
     }
     const { p, s } = mover;
     check(shots < maxShots, `no winner after ${maxShots} shots by the pages`);
-    const shot = s.shots === 0 ? breakShot(s.aim.y) : chooseShot(s.board, s.aim.y, shots);
+    const shot = s.shots === 0 ? breakShot(s.aim.side) : chooseShot(s.board, s.aim.side, shots);
     await p.shoot(shot);
     shots += 1;
     if (onShot) await onShot(p, shot, s);

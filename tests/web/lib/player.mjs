@@ -105,21 +105,25 @@ export class Player {
       (s) => s.phase === 'game_over' || (s.myTurn && !s.animating && s.aim.phase === 'idle'), timeoutMs);
   }
 
-  // Places the striker at x (a slide along the baseline) and shoots at `angle` with `power`
-  // (a pull back from the striker). Checks that the page sent it.
+  // Places the striker at x (a slide along the baseline, any side) and shoots at `angle` (the
+  // board's absolute angle) with `power` (a pull back from the striker). Checks that the page
+  // sent it.
   async shoot({ x, angle, power }) {
     let s = await this.state();
     check(s.aim.phase === 'idle', `${this.label}: not ready to aim (${s.aim.phase})`);
     const turn = s.turn;
-    const y = s.aim.y;
+    // Board points on our baseline (x along it: board x, or board y for a side seat).
+    const sideways = s.aim.side === 'left' || s.aim.side === 'right';
+    const on = (along) => (sideways ? { x: s.aim.striker.x, y: along } : { x: along, y: s.aim.striker.y });
     const far = s.aim.x > 300 ? 113 : 487; // away from the striker: a press there slides
-    await this.drag([{ x: far, y }, { x: (far + x) / 2, y }, { x, y }]);
+    await this.drag([on(far), on((far + x) / 2), on(x)]);
     s = await this.state();
     check(Math.abs(s.aim.x - x) < 1.5, `${this.label}: striker at ${s.aim.x}, wanted ${x}`);
     const drag = DEAD_ZONE + (power / MAX_POWER) * (FULL_POWER_DRAG - DEAD_ZONE);
+    const from = s.aim.striker;
     const path = [0, 0.25, 0.5, 0.75, 1].map((k) => ({
-      x: s.aim.x - Math.cos(angle) * drag * k,
-      y: y - Math.sin(angle) * drag * k,
+      x: from.x - Math.cos(angle) * drag * k,
+      y: from.y - Math.sin(angle) * drag * k,
     }));
     await this.drag(path);
     s = await this.state();

@@ -22,13 +22,26 @@ const unit = (v) => {
   return { x: v.x / l, y: v.y / l };
 };
 
-// board: [{id, kind, x, y, pocketed}], baselineY: 520 (bottom) or 80 (top).
-// Returns {x, angle, power} and `why` (which coin into which pocket, or 'fallback').
-export function chooseShot(board, baselineY, seed = 0) {
+// The striker on a side's baseline at `along` (board x for bottom and top, y for left and right).
+function strikerAt(side, along) {
+  return {
+    bottom: { x: along, y: 520 }, top: { x: along, y: 80 }, left: { x: 80, y: along }, right: { x: 520, y: along },
+  }[side];
+}
+
+// The angle from a side's baseline straight into the board.
+const INWARD = { bottom: -Math.PI / 2, right: Math.PI, top: Math.PI / 2, left: 0 };
+
+// board: [{id, kind, x, y, pocketed}]; side: 'bottom', 'right', 'top', 'left', or the baseline's
+// board y in singles (520 bottom, 80 top).
+// Returns {x, angle, power} and `why` (which coin into which pocket, or 'fallback'); x is the
+// position along the baseline, as the protocol's shot.
+export function chooseShot(board, side, seed = 0) {
+  if (typeof side === 'number') side = side > 300 ? 'bottom' : 'top';
   const pieces = board.filter((b) => !b.pocketed && b.kind !== 'striker');
   let best = null;
   for (let x = X_MIN; x <= X_MAX; x += 3) {
-    const s = { x, y: baselineY };
+    const s = strikerAt(side, x);
     if (pieces.some((q) => Math.hypot(q.x - s.x, q.y - s.y) < STRIKER_R + COIN_R + 1)) continue;
     for (const c of pieces) {
       for (const p of POCKETS) {
@@ -54,6 +67,6 @@ export function chooseShot(board, baselineY, seed = 0) {
     return { x: best.x, angle: best.angle, power, why: best.why };
   }
   const x = X_MIN + ((seed * 97) % (X_MAX - X_MIN));
-  const angle = baselineY > 300 ? -Math.PI / 2 + 0.3 : Math.PI / 2 - 0.3;
+  const angle = INWARD[side] + (side === 'top' ? -0.3 : 0.3);
   return { x, angle, power: 18, why: 'fallback' };
 }

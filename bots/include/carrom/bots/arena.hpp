@@ -1,14 +1,15 @@
 #pragma once
-// Offline games between two strategies: the rules engine and the exact physics, no network and
+// Offline games between strategies: the rules engine and the exact physics, no network and
 // no clock but the strategies' own time budgets. Used by carrom-arena (docs/bots.md) to measure
-// strategies against each other, and by tests.
+// strategies against each other, and by tests. Singles (two seats) and doubles (four seats,
+// partners opposite: seats 0 and 2 against 1 and 3).
 
 #include "carrom/bots/strategy.hpp"
 #include "carrom/rules/match.hpp"
 
-#include <array>
 #include <cstdint>
 #include <optional>
+#include <vector>
 
 namespace carrom::bots {
 
@@ -22,12 +23,12 @@ struct SeatRecord {
 };
 
 struct GameRecord {
-    std::optional<int> winner_seat; // empty: a draw, or unfinished
+    std::optional<int> winner_team; // empty: a draw, or unfinished (singles: team == seat)
     bool finished = false;          // the game reached GameOver within max_strokes
     rules::RuleCode reason = rules::RuleCode::BoardCleared;
-    int boards = 0; // boards played (the last one included)
-    std::array<SeatRecord, 2> seats{};
-    std::vector<int> scores; // per team at the end
+    int boards = 0;                // boards played (the last one included)
+    std::vector<SeatRecord> seats; // one per seat of the match
+    std::vector<int> scores;       // per team at the end
 };
 
 struct ArenaOptions {
@@ -36,9 +37,10 @@ struct ArenaOptions {
     int max_refusals = 20;  // refused shots in a row before the seat forfeits
 };
 
-// Plays one game from start (phase AwaitingShot; two seats) to its end: players[seat] chooses
-// for seat. Boards are started as they end.
-GameRecord play_game(const rules::MatchState& start, std::array<Strategy*, 2> players,
+// Plays one game from start (phase AwaitingShot) to its end: players[seat] chooses for seat,
+// one player per seat of start (players.size() == start.seats.size(); otherwise nothing is
+// played and the record is unfinished). Boards are started as they end.
+GameRecord play_game(const rules::MatchState& start, const std::vector<Strategy*>& players,
                      const ArenaOptions& options);
 
 } // namespace carrom::bots

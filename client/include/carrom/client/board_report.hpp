@@ -18,12 +18,16 @@ struct ReportContext {
     double window_h = 0.0;
     int shots_seen = 0;          // shot results received so far
     std::optional<Rect> overlay; // window px covered by messages drawn over the board
+    PredictionStats prediction;  // the own strokes predicted and the server's corrections
 };
 
-// One JSON object (one line): {"room", "you", "turn", "phase", "flipped", "window" {w, h},
-// "board" {x, y, side} (window px), "shots_seen", "scores" [per seat], "bodies" [{"id", "kind",
-// "x", "y" (board px), "screen_x", "screen_y" (window px), "scale", "alpha"}] in drawing order
-// (id -1: the striker being placed), "overlay" {x, y, w, h} or null}.
+// One JSON object (one line): {"room", "you", "turn", "phase", "flipped" (the view is turned half
+// a turn), "bottom_side" (the side drawn at the bottom: "bottom", "right", "top", "left"), "window"
+// {w, h}, "board" {x, y, side} (window px), "shots_seen", "scores" [per seat], "bodies" [{"id",
+// "kind", "x", "y" (board px), "screen_x", "screen_y" (window px), "scale", "alpha"}] in drawing
+// order (id -1: the striker being placed), "overlay" {x, y, w, h} or null, "prediction"
+// {"strokes", "corrections", "max_difference_px"} (the own strokes predicted, the bodies the
+// server corrected, the largest difference seen)}.
 std::string board_report_json(const MatchView& view, const std::vector<RenderedBody>& bodies,
                               const ScreenMapping& mapping, const ReportContext& context);
 

@@ -23,8 +23,15 @@ struct RoomRequest {
     Kind kind = Kind::Create;
     std::string code; // Join, Spectate
     proto::RuleSet rule_set = proto::RuleSet::Icf;
-    std::optional<proto::BotSeat> bot; // Create: a server bot in seat 1
+    // Create: server bots at bot->seats (empty: every seat but ours), at bot->level.
+    std::optional<proto::BotSeat> bot;
+    int seats = 2; // Create, Quick: 2 (singles) or 4 (doubles)
 };
+
+// A create or quick-match request the server would refuse for its seats (the server checks the
+// same, with bad_field): seats not 2 or 4; bot seats repeated or outside 1..seats - 1 (singles:
+// only seat 1). Empty if it is fine, else one sentence naming the flag.
+std::string check_room_request(const RoomRequest& request);
 
 enum class SessionPhase {
     Connecting,   // first link opening

@@ -19,6 +19,7 @@
 #include "carrom/config.hpp"
 #include "carrom/proto/client_messages.hpp"
 #include "carrom/proto/server_messages.hpp"
+#include "carrom/rules/seat.hpp"
 
 #include <cstdint>
 #include <map>
@@ -34,18 +35,18 @@ struct SeatView {
     bool connected = false;
     bool bot = false;
     proto::Colour colour = proto::Colour::None;
-    Baseline baseline = Baseline::Bottom;
-    int score = 0;
-    int dues = 0;
+    rules::Side side = rules::Side::Bottom; // the seat's baseline (room_state's "baseline")
+    int score = 0;                          // the team's score (partners show the same)
+    int dues = 0;                           // the team's dues
 };
 
 // How the game ended.
 struct GameResult {
-    int winner = -1; // seat; -1: a draw
+    int winner = -1; // the winning team (its first seat: singles the seat); -1: a draw
     // game_end's reason: "score", "boards", "cleared", "forfeit", "left" or "clock"; empty when
     // the client came in after the end (a room state that was already over).
     std::string reason;
-    std::vector<int> scores;        // final, per seat
+    std::vector<int> scores;        // final, per seat (a seat's is its team's)
     std::vector<std::string> names; // per seat when the game ended (a seat may empty later)
 };
 
@@ -62,7 +63,7 @@ struct MatchView {
     int to_play = 0;
     proto::Phase phase = proto::Phase::Waiting;
     proto::QueenInfo queen;
-    int winner = -1;
+    int winner = -1;                         // team, -1 none
     std::optional<std::int64_t> deadline_ms; // shot clock, server clock
     std::optional<double> aim_x_px;          // the shooter's live striker x (aim events)
     std::optional<GameResult> result;        // from game over until a new game starts
@@ -72,6 +73,18 @@ struct MatchView {
 std::string seat_name(const MatchView& view, int seat);
 // After a game: the name the seat had when it ended (its player may have left since).
 std::string player_name_at_end(const MatchView& view, int seat);
+// The team of a seat, -1 for no such seat: the rules' team for the room's seat count, which is
+// room_state's "team" (singles: the seat; doubles: seat % 2, partners opposite).
+int team_of(const MatchView& view, int seat);
+// The seats of a team in seat order: one in singles, the two partners in doubles.
+std::vector<int> team_seats(const MatchView& view, int team);
+// The partner's seat in doubles, -1 in singles (or for no such seat).
+int partner_of(const MatchView& view, int seat);
+// A team's players as a sentence subject, e.g. "Asha & Ravi" (at the end of the game: the names
+// they had then).
+std::string team_name(const MatchView& view, int team);
+// The side a seat shoots from (its room_state baseline).
+rules::Side seat_side(const MatchView& view, int seat);
 
 class MatchModel {
 public:
@@ -90,12 +103,13 @@ public:
     const MatchView& view() const { return view_; }
     bool my_turn() const;
     bool spectator() const { return view_.you < 0; }
-    // Our baseline is the top one: the view is turned so it is at the bottom of the window.
-    bool flipped() const;
+    // The side drawn at the bottom of the window: our own baseline's (seat 0's, the bottom one,
+    // for a spectator). The view is turned by that side's quarter turns (screen_mapping.hpp).
+    rules::Side view_side() const;
     // Seconds left on the shot clock by the server's clock, if one runs.
     std::optional<double> shot_clock_left_s(double local_s) const;
     std::string seat_name(int seat) const;
-    Baseline seat_baseline(int seat) const;
+    rules::Side seat_side(int seat) const { return client::seat_side(view_, seat); }
 
     // The board to draw at local_s; sound cues that became due are kept for take_sounds().
     std::vector<RenderedBody> render(double local_s);

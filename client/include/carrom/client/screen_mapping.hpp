@@ -1,9 +1,11 @@
 #pragma once
 // Where the board and the HUD go in a window of any size, and the mapping between board px and
 // window px. The board is a letterboxed square (uniform scale, centred in the space left by the
-// HUD bars). A seat that shoots from the top baseline sees the board turned half a turn, so that
-// every player's own baseline is at the bottom of their window.
+// HUD bars). Every player sees the board turned so that their own baseline is at the bottom of
+// their window: a quarter turn for the right seat of doubles, half a turn for the top seat, three
+// quarters for the left seat (spectators see seat 0's view, the board as it is).
 
+#include "carrom/rules/seat.hpp"
 #include "carrom/vec2.hpp"
 
 namespace carrom::client {
@@ -17,14 +19,18 @@ struct Rect {
 };
 
 struct ScreenLayout {
-    Rect top_bar;    // names, scores, turn, shot clock
+    Rect top_bar;    // singles: names, scores, turn, shot clock; doubles: the seats left, across
+                     // and right of ours, each at its side of the turned board
     Rect board;      // square, where the board is drawn
+    Rect seat_bar;   // doubles: our seat (the bottom one) with the turn, shot clock and queen;
+                     // singles: empty (h = 0) at the bottom bar's top
     Rect bottom_bar; // rule set, connection, messages
 };
 
 // Bar heights scale with the window height within fixed bounds (window px). Every rect is on
-// whole window px (the board texture and the HUD layers are copied pixel for pixel).
-ScreenLayout make_layout(double window_w, double window_h);
+// whole window px (the board texture and the HUD layers are copied pixel for pixel). A room of
+// four seats gets a seat bar as high as the top bar between the board and the bottom bar.
+ScreenLayout make_layout(double window_w, double window_h, int seats = 2);
 
 // Board px <-> window px. Invariant: scale > 0.
 struct ScreenMapping {
@@ -32,15 +38,22 @@ struct ScreenMapping {
     double origin_y = 0.0;
     double scale = 1.0; // window px per board px
     double board_size_px = 600.0;
-    bool flipped = false; // half a turn: board (x, y) appears at (size - x, size - y)
+    // The side of the board drawn at the bottom of the window. The board is turned by that
+    // side's index (rules::Side: bottom 0, right 1, top 2, left 3) quarter turns, clockwise on
+    // the screen, about its centre: right puts board (x, y) at (size - y, x), top at
+    // (size - x, size - y), left at (y, size - x).
+    rules::Side bottom = rules::Side::Bottom;
 
     Vec2 to_screen(Vec2 board_px) const;
     Vec2 to_board(Vec2 window_px) const;
+    // A direction in the window (e.g. screen right, {1, 0}) as a board direction.
+    Vec2 direction_to_board(Vec2 window_dir) const;
     // Lengths (radii, line widths) are only scaled.
     double length_to_screen(double board_len) const { return board_len * scale; }
     double length_to_board(double window_len) const { return window_len / scale; }
 };
 
-ScreenMapping make_mapping(const Rect& board_rect, double board_size_px, bool flipped);
+ScreenMapping make_mapping(const Rect& board_rect, double board_size_px,
+                           rules::Side bottom = rules::Side::Bottom);
 
 } // namespace carrom::client

@@ -15,6 +15,7 @@
 #include "carrom/client/sound_synth.hpp"
 #include "carrom/config.hpp"
 #include "carrom/event.hpp"
+#include "carrom/rules/seat.hpp"
 #include "carrom/scene.hpp"
 #include "carrom/trajectory.hpp"
 
@@ -43,10 +44,10 @@ public:
     explicit ShotPrediction(const PhysicsConfig& physics, const PredictionConfig& config = {});
 
     // Simulates the stroke of `turn` from `board` (the board at rest; a striker in it is
-    // replaced) with the striker placed as the server places it for `baseline`; its t = 0 is
+    // replaced) with the striker placed as the server places it for `side`; its t = 0 is
     // offset_s on the continuous timeline. False (and nothing predicted) when the engine refuses
     // the scene (the server will refuse the shot as well).
-    bool start(int turn, std::span<const BodyState> board, Baseline baseline, const Shot& shot,
+    bool start(int turn, std::span<const BodyState> board, rules::Side side, const Shot& shot,
                double offset_s);
     // Stops drawing the prediction at the end of the stroke (its sounds stay claimable).
     void stop() { active_ = false; }
@@ -68,8 +69,10 @@ public:
         confirmed_ = true;
     }
 
-    // The server's full board state at continuous time t_s, arrived at local_s.
-    void confirm(std::span<const BodyState> server, double t_s, double local_s);
+    // The server's full board state at shot time shot_t_s (the snapshot's own t, not the
+    // continuous timeline: at a pocketing, offset + t - offset may land a hair before it),
+    // arrived at local_s.
+    void confirm(std::span<const BodyState> server, double shot_t_s, double local_s);
     // Some body's drawn offset is still moving towards the server's.
     bool blending(double local_s) const;
 

@@ -1,5 +1,5 @@
 #pragma once
-// Seats around the board. Two seats now (bottom and top); four for doubles, where partners sit
+// Seats around the board: two in singles (bottom and top); four in doubles, where partners sit
 // opposite each other and the turn passes anticlockwise (as seen on screen: bottom, right, top,
 // left). Seat indices follow that order, so the next seat is always (seat + 1) % seat_count.
 

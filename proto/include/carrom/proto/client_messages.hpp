@@ -9,6 +9,7 @@
 #include <string>
 #include <string_view>
 #include <variant>
+#include <vector>
 
 namespace carrom::proto {
 
@@ -30,14 +31,19 @@ struct RoomOptions {
 
 struct BotSeat {
     BotLevel level = BotLevel::Medium; // "level"
+    // "seats", optional: the seats the server's bots take, distinct, in 1..seats-1, at least one.
+    // Empty (absent on the wire): every seat but the creator's.
+    std::vector<int> seats{};
     friend bool operator==(const BotSeat&, const BotSeat&) = default;
 };
 
-// "create_room": a private room; the creator takes seat 0. With "bot", seat 1 is a server bot.
+// "create_room": a private room; the creator takes seat 0. With "bot", server bots take the bot
+// seats (singles: seat 1).
 struct CreateRoom {
     RuleSet rule_set = RuleSet::Icf; // "rule_set", optional on the wire (default icf)
     RoomOptions options;             // "options", optional object
     std::optional<BotSeat> bot;      // "bot", optional object
+    int seats = 2;                   // "seats", optional: 2 (singles, default) or 4 (doubles)
     friend bool operator==(const CreateRoom&, const CreateRoom&) = default;
 };
 
@@ -48,9 +54,10 @@ struct JoinRoom {
     friend bool operator==(const JoinRoom&, const JoinRoom&) = default;
 };
 
-// "quick_match": wait to be paired with another waiting player of the same rule set.
+// "quick_match": wait to be paired with other waiting players of the same rule set and seat count.
 struct QuickMatch {
     RuleSet rule_set = RuleSet::Icf; // "rule_set", optional (default icf)
+    int seats = 2;                   // "seats", optional: 2 (singles, default) or 4 (doubles)
     friend bool operator==(const QuickMatch&, const QuickMatch&) = default;
 };
 
@@ -70,7 +77,7 @@ struct Shoot {
     friend bool operator==(const Shoot&, const Shoot&) = default;
 };
 
-struct Rematch { // "rematch": after game over; a new game starts when both seats ask
+struct Rematch { // "rematch": after game over; a new game starts when every human seat asks
     friend bool operator==(const Rematch&, const Rematch&) = default;
 };
 struct Leave { // "leave": give up the seat (forfeit if a game is running) or stop spectating

@@ -15,7 +15,7 @@ inline constexpr std::size_t kMaxNameBytes = 24;      // UTF-8 bytes, no control
 inline constexpr std::size_t kRoomCodeLength = 6;     // characters from kRoomCodeAlphabet
 inline constexpr std::size_t kResumeTokenLength = 32; // lowercase hex, 128 bits
 inline constexpr std::size_t kMaxTextBytes = 200;     // error messages, foul descriptions
-inline constexpr std::size_t kMaxSeats = 4;           // two now; doubles later
+inline constexpr std::size_t kMaxSeats = 4;           // 2 (singles) or 4 (doubles)
 inline constexpr std::size_t kMaxBodies = 64;         // bodies in one board or snapshot
 
 // Unambiguous room code characters: no 0/O, 1/I/L.

@@ -63,7 +63,7 @@ template <class T> struct Decoded {
 
 // A shot from a named baseline.
 struct ShotSpec {
-    Baseline baseline = Baseline::Bottom;
+    carrom::Baseline baseline = carrom::Baseline::Bottom;
     Shot shot;
 };
 

@@ -33,7 +33,8 @@ struct SeatInfo {
     bool connected = false;               // "connected": false while a dropped player has grace
     bool bot = false;                     // "bot": a server-side bot
     Colour colour = Colour::None;         // "colour": the coins the seat plays (none in freestyle)
-    Baseline baseline = Baseline::Bottom; // "baseline": "bottom" or "top"
+    Baseline baseline = Baseline::Bottom; // "baseline": "bottom", "right", "top" or "left"
+    int team = 0; // "team": singles: the seat; doubles: seat % 2 (absent on the wire: the seat)
     friend bool operator==(const SeatInfo&, const SeatInfo&) = default;
 };
 
@@ -63,8 +64,8 @@ struct RoomState {
     MatchOptions options;            // "options"
     std::vector<SeatInfo> seats;     // "seats", 2..kMaxSeats
     int spectators = 0;              // "spectators"
-    std::vector<int> scores;         // "scores", one per seat
-    std::vector<int> dues;           // "dues": dues owed, one per seat
+    std::vector<int> scores;         // "scores", one per seat: its team's (partners share one)
+    std::vector<int> dues;           // "dues": dues owed, one per seat: its team's
     int board_number = 1;            // "board_number", 1-based
     int turn = 0;                    // "turn": the number the next game input must carry
     int to_play = 0;                 // "to_play": seat to shoot
@@ -72,7 +73,7 @@ struct RoomState {
     std::int64_t server_time_ms = 0;                    // "server_time_ms"
     Phase phase = Phase::Waiting;                       // "phase"
     QueenInfo queen;                                    // "queen": {"state", "seat"}
-    int winner = -1;                                    // "winner": seat, -1 while none
+    int winner = -1;               // "winner": the winning team (= its first seat), -1 while none
     std::vector<BoardBody> bodies; // "bodies": the full board, every body with its kind
     MotionInfo motion;             // "motion", optional on the wire (absent: the defaults above)
     friend bool operator==(const RoomState&, const RoomState&) = default;
@@ -152,7 +153,7 @@ struct TurnEvent { // "turn": seat to play turn number `turn`, with the shot clo
     std::int64_t server_time_ms = 0;
     friend bool operator==(const TurnEvent&, const TurnEvent&) = default;
 };
-struct BoardEndEvent { // "board_end": board `board` won by `winner` (-1: none) for `points`
+struct BoardEndEvent { // "board_end": board `board` won by team `winner` (-1: none) for `points`
     int board = 1;
     int winner = -1;
     int points = 0;
@@ -206,7 +207,7 @@ struct ShotResult {
     std::vector<int> pocketed; // "pocketed": ids pocketed by this shot (striker included)
     std::vector<int> returned; // "returned": ids put back on the board by the rules
     std::vector<Foul> fouls;   // "fouls"
-    std::vector<int> points;   // "points": score change per seat
+    std::vector<int> points;   // "points": score change per seat (its team's)
     std::vector<int> scores;   // "scores": scores after the shot
     std::vector<int> dues;     // "dues": dues owed per seat after the shot
     QueenInfo queen;           // "queen"
@@ -215,7 +216,7 @@ struct ShotResult {
     int next_seat = 0;         // "next_seat"
     bool board_over = false;   // "board_over"
     bool game_over = false;    // "game_over"
-    int winner = -1;           // "winner": of the game when game_over, else -1
+    int winner = -1;           // "winner": team of the game when game_over, else -1
     friend bool operator==(const ShotResult&, const ShotResult&) = default;
 };
 

@@ -4,6 +4,7 @@
 
 #include "carrom/body.hpp"
 #include "carrom/rules/rule_set.hpp"
+#include "carrom/rules/seat.hpp"
 #include "carrom/scene.hpp"
 #include "carrom/vec2.hpp"
 
@@ -27,6 +28,10 @@ enum class Phase : std::uint8_t { Waiting, Aiming, Moving, BoardOver, GameOver }
 enum class QueenState : std::uint8_t { OnBoard, Pending, Covered, None };
 // "on_board" "pending" "covered" "none" (a rule set without a queen: discpool)
 enum class BotLevel : std::uint8_t { Random, Easy, Medium, Hard }; // "random" "easy" ...
+// The side of the board a seat shoots from: "bottom" "right" "top" "left" (the rules engine's
+// seat sides, in seat order: singles uses bottom and top). Not carrom::Baseline, which names
+// the two baselines of a scene file.
+using Baseline = rules::Side;
 
 std::string_view to_string(RuleSet value);
 // The rules engine's rule set for a wire rule set (the two enums list the same rule sets).
@@ -36,7 +41,7 @@ std::string_view to_string(Colour value);
 std::string_view to_string(Phase value);
 std::string_view to_string(QueenState value);
 std::string_view to_string(BotLevel value);
-std::string_view baseline_name(Baseline value);  // "bottom" "top"
+std::string_view baseline_name(Baseline value);  // "bottom" "right" "top" "left"
 std::string_view body_kind_name(BodyKind value); // "black" "white" "queen" "striker"
 
 bool parse(std::string_view text, RuleSet& out);

@@ -5,11 +5,13 @@
 // posts the result back to the room's strand; the client's offline demo calls its opponent on
 // the UI thread. A brain must be callable from any single thread at a time.
 
+#include "carrom/proto/error.hpp"
 #include "carrom/rules/match_state.hpp"
 #include "carrom/scene.hpp"
 
 #include <chrono>
 #include <memory>
+#include <optional>
 #include <string>
 
 namespace carrom::room {
@@ -29,6 +31,16 @@ struct BotTurn {
     int turn = 0;
     rules::MatchState state;
     std::shared_ptr<BotBrain> brain;
+};
+
+// What Room::bot_shoot did with a brain's shot. A shot the rules refuse for its numbers or its
+// place (off the baseline, on a piece, not finite, power out of range) is played as the nearest
+// legal one (rules::nearest_legal_shot): a brain's mistake must not stall the match, and with
+// the shot clock off nothing else would end the turn.
+struct BotShotOutcome {
+    std::optional<proto::Error> refused;  // nothing was played: no bot there, not its turn
+    std::optional<proto::Error> replaced; // played as the nearest legal shot: why the brain's
+                                          // own was refused
 };
 
 } // namespace carrom::room

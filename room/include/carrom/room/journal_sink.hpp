@@ -1,6 +1,6 @@
 #pragma once
 // Where a room's match journals go (proto/journal.hpp). The Room calls its sink on the room's
-// thread, in the order things happen: created() when a game starts (both seats taken, or a
+// thread, in the order things happen: created() when a game starts (every seat taken, or a
 // rematch), then append() with every entry of that game, numbered 0, 1, 2, ... per match.
 // carrom-server's sink writes them to the match store (server/src/store_journal.hpp); tests keep
 // them in memory. A room without a sink journals nothing and behaves the same otherwise.

@@ -1,5 +1,6 @@
 #pragma once
-// One room: two seats, spectators, the match and the shot being streamed. Plain single-threaded
+// One room: its seats (2, or 4 for doubles: rules.seat_count), spectators, the match and the shot
+// being streamed. Plain single-threaded
 // logic (carrom-server calls it only on the room's strand; the client's offline demo on its UI
 // thread); time comes from the injected clock. The room answers its members through Peer::send:
 // broadcasts are encoded once and shared.
@@ -68,6 +69,7 @@ public:
 
     const std::string& code() const { return code_; }
     proto::RuleSet rule_set() const { return config_.rule_set; }
+    int seat_count() const { return static_cast<int>(seats_.size()); }
 
     // Restores an unfinished match from its journal into this new room (no member, no game):
     // the state after the journal's last entry (proto::replay), the seats (humans dropped, their
@@ -86,8 +88,10 @@ public:
     // Reclaims the seat held by peer->player_id() (dropped or still connected elsewhere: the
     // old connection is closed with "replaced"). Error bad_token if the player holds no seat.
     std::optional<proto::Error> resume(std::shared_ptr<Peer> peer);
-    // Seats a bot in the first free seat. Error room_full.
-    std::optional<proto::Error> seat_bot(std::string name, std::shared_ptr<BotBrain> brain);
+    // Seats a bot in the first free seat, or in `seat` when it is >= 0. Errors: room_full (no
+    // free seat, or `seat` is taken), bad_field (`seat` is not a seat of this room).
+    std::optional<proto::Error> seat_bot(std::string name, std::shared_ptr<BotBrain> brain,
+                                         int seat = -1);
     // Members are identified by their connection (a replaced connection has no say any more).
     // Leaves for good: a seated player in a running game forfeits.
     void leave(const Peer& peer);
@@ -99,9 +103,9 @@ public:
     void shoot(Peer& peer, const proto::Shoot& shoot);
     void rematch(Peer& peer);
 
-    // Bots: the bot's turn, once per turn; then its shot.
+    // Bots: the bot's turn, once per turn; then its shot (see BotShotOutcome).
     std::optional<BotTurn> take_bot_turn();
-    std::optional<proto::Error> bot_shoot(int seat, int turn, const Shot& shot);
+    BotShotOutcome bot_shoot(int seat, int turn, const Shot& shot);
 
     void tick();
     std::optional<std::int64_t> next_wake_ms() const;
@@ -148,9 +152,10 @@ private:
     // turn check (rules::check_turn) as a wire error.
     std::optional<proto::Error> check_input(int seat, int turn) const;
     std::optional<proto::Error> play(int seat, const Shot& shot);
-    // The one way into a seat, for players (slot.peer) and bots (slot.bot): the first free seat;
-    // the game starts once both are taken. Error room_full.
-    std::optional<proto::Error> fill_seat(SeatSlot slot);
+    // The one way into a seat, for players (slot.peer) and bots (slot.bot): the first free seat
+    // in index order, or `seat` when it is >= 0; the game starts once every seat is taken.
+    // Errors: room_full, bad_field (no such seat).
+    std::optional<proto::Error> fill_seat(SeatSlot slot, int seat = -1);
     // A game starts (counted, journaled as match_id); the first turn's clock runs.
     void start_game(std::string match_id, std::string rematch_of = {});
     // Appends an entry to the current match's journal (if any); returns its seq (-1: none).
@@ -189,9 +194,9 @@ private:
     std::int64_t journal_seq_ = 0; // the next entry's seq in it
     ExactEngine engine_;
     rules::MatchState match_;
-    std::array<SeatSlot, 2> seats_{};
+    std::vector<SeatSlot> seats_; // one per seat of the rules (rules.seat_count)
     std::vector<std::shared_ptr<Peer>> spectators_;
-    bool started_ = false; // a game has started (both seats were filled)
+    bool started_ = false; // a game has started (every seat was filled)
     std::int64_t turn_started_ms_ = 0;
     double aim_x_px_;      // the shooter's last aim position
     std::int64_t seq_ = 0; // last snapshot sequence number broadcast

@@ -1,7 +1,9 @@
 #pragma once
 // Token bucket per connection: `rate` messages per second sustained, bursts up to `burst`.
-// A client that keeps sending while empty is disconnected once its rejected messages reach
-// `burst` in a row.
+// A client that keeps sending over the rate is disconnected once its rejected messages reach
+// `burst`; the count starts again only when the client was quiet long enough for the bucket to
+// refill completely. Accepted messages in between (one per 1/rate s during a flood) do not reset
+// it, so how fast the server happens to read a flood does not decide whether it closes.
 
 #include <cstdint>
 
@@ -19,7 +21,7 @@ private:
     double burst_;
     double tokens_;
     std::int64_t last_ms_;
-    int rejected_in_a_row_ = 0;
+    int rejected_ = 0; // rejected messages since the bucket was last full
 };
 
 } // namespace carrom::server

@@ -1,6 +1,7 @@
 #pragma once
 // The server-wide registry, shared by all threads (one mutex, short critical sections): rooms by
-// code (with the room limit), players by resume token, and the quick-match queue. It never
+// code (with the room limit), players by resume token, and the quick-match queues (one per rule
+// set and seat count). It never
 // touches a room's state; the room type is a parameter so tests can use a plain one.
 
 #include "carrom/proto/error.hpp"
@@ -17,6 +18,7 @@
 #include <optional>
 #include <string>
 #include <unordered_map>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -151,18 +153,29 @@ public:
     }
 
     // --- quick match ---
-    // Pairs the waiter with the longest-waiting one of the same rule set (returned, and removed
-    // from the queue), or queues it. A player already queued is not queued twice.
-    std::optional<WaiterT> quick_match(proto::RuleSet rule_set, std::int64_t player_id,
-                                       WaiterT waiter) {
+    // Groups the waiter with the seats - 1 longest-waiting other players of the same rule set
+    // and seat count: returns them, longest-waiting first, taken out of the queue. With fewer
+    // waiting, queues the waiter (once: a player already queued keeps its place) and returns
+    // nothing.
+    std::optional<std::vector<WaiterT>> quick_match(proto::RuleSet rule_set, int seats,
+                                                    std::int64_t player_id, WaiterT waiter) {
         std::lock_guard lock(mutex_);
-        auto& queue = queues_[rule_set];
-        for (auto it = queue.begin(); it != queue.end(); ++it) {
-            if (it->first != player_id) {
-                WaiterT partner = std::move(it->second);
-                queue.erase(it);
-                return partner;
+        auto& queue = queues_[{rule_set, seats}];
+        const auto others = static_cast<std::size_t>(std::count_if(
+            queue.begin(), queue.end(), [&](const auto& w) { return w.first != player_id; }));
+        if (seats >= 2 && others >= static_cast<std::size_t>(seats - 1)) {
+            std::vector<WaiterT> group;
+            for (auto it = queue.begin();
+                 it != queue.end() && group.size() < static_cast<std::size_t>(seats - 1);) {
+                if (it->first == player_id) {
+                    ++it;
+                    continue;
+                }
+                group.push_back(std::move(it->second));
+                it = queue.erase(it);
             }
+            std::erase_if(queue, [&](const auto& w) { return w.first == player_id; });
+            return group;
         }
         if (std::none_of(queue.begin(), queue.end(),
                          [&](const auto& w) { return w.first == player_id; })) {
@@ -170,11 +183,31 @@ public:
         }
         return std::nullopt;
     }
+    // The wait of player_id ran out: it and every other player waiting for the same rule set
+    // and seat count leave the queue together (to be seated with bots); returns the others,
+    // longest-waiting first. Nothing if player_id was not waiting there (a group took it).
+    std::optional<std::vector<WaiterT>> take_waiting(proto::RuleSet rule_set, int seats,
+                                                     std::int64_t player_id) {
+        std::lock_guard lock(mutex_);
+        auto& queue = queues_[{rule_set, seats}];
+        if (std::none_of(queue.begin(), queue.end(),
+                         [&](const auto& w) { return w.first == player_id; })) {
+            return std::nullopt;
+        }
+        std::vector<WaiterT> others;
+        for (auto& w : queue) {
+            if (w.first != player_id) {
+                others.push_back(std::move(w.second));
+            }
+        }
+        queue.clear();
+        return others;
+    }
     // Takes the player out of every queue; true if it was waiting (so nobody paired it).
     bool cancel_quick_match(std::int64_t player_id) {
         std::lock_guard lock(mutex_);
         std::size_t removed = 0;
-        for (auto& [rule_set, queue] : queues_) {
+        for (auto& [mode, queue] : queues_) {
             removed += std::erase_if(queue, [&](const auto& w) { return w.first == player_id; });
         }
         return removed > 0;
@@ -182,7 +215,7 @@ public:
     std::size_t waiting_count() const {
         std::lock_guard lock(mutex_);
         std::size_t n = 0;
-        for (const auto& [rule_set, queue] : queues_) {
+        for (const auto& [mode, queue] : queues_) {
             n += queue.size();
         }
         return n;
@@ -197,7 +230,8 @@ private:
     // Restored seats not yet claimed: token key -> (player id, room code).
     std::unordered_map<std::string, std::pair<std::int64_t, std::string>> restored_;
     std::unordered_map<std::string, std::shared_ptr<RoomT>> rooms_;
-    std::map<proto::RuleSet, std::deque<std::pair<std::int64_t, WaiterT>>> queues_;
+    // By (rule set, seat count): (player id, waiter), longest-waiting first.
+    std::map<std::pair<proto::RuleSet, int>, std::deque<std::pair<std::int64_t, WaiterT>>> queues_;
 };
 
 } // namespace carrom::server

@@ -38,6 +38,7 @@ struct BotConfig {
     proto::CreateRoom create;                            // JoinMode::Create
     std::string code;                                    // JoinMode::Join and Spectate
     proto::RuleSet quick_rule_set = proto::RuleSet::Icf; // JoinMode::Quick
+    int quick_seats = 2;                                 // JoinMode::Quick: 2, or 4 (doubles)
     int games = 1;         // games to see to the end before leaving (rematch in between)
     DecisionBudget budget; // per shot
     bool send_aim = true;  // send the striker position before each shot
@@ -50,12 +51,13 @@ struct BotConfig {
 struct BotSummary {
     std::string room_code;
     int seat = -1; // -1: spectator or not seated
+    int team = -1; // the seat's team (singles: the seat; doubles: seat % 2), -1 without a seat
     int games = 0; // games seen to the end
     int shots = 0; // shots this bot sent and the server played
-    int wins = 0;
+    int wins = 0;  // games the seat's team won (game_end's winner is the team)
     int losses = 0;
     int draws = 0;
-    std::vector<int> scores; // at the last game end
+    std::vector<int> scores; // at the last game end, one per seat (partners share a value)
     std::string last_reason; // game_end reason of the last game
     int snapshots = 0;
     int keyframes = 0;

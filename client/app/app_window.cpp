@@ -1,0 +1,267 @@
+#include "app_window.hpp"
+
+#include "carrom/client/demo_link.hpp"
+#include "carrom/client/game_over_text.hpp"
+#include "draw_util.hpp"
+#include "network_link.hpp"
+#include "window_output.hpp"
+
+#include <chrono>
+#include <ctime>
+#include <iostream>
+
+namespace carrom::client::app {
+namespace {
+
+// Demo screenshots and the benchmark step a fixed 1/60 s per frame (reproducible pictures); a
+// networked client always follows real time, as the server does.
+bool fixed_step(const AppOptions& o) {
+    return o.demo && (!o.screenshot_path.empty() || o.bench_frames > 0);
+}
+
+} // namespace
+
+AppWindow::AppWindow(const AppOptions& options, const sf::Font& font)
+    : options_(options), font_(font), clock_(fixed_step(options)),
+      geometry_(make_board_geometry(physics_)), model_(physics_), aim_(physics_),
+      board_painter_(geometry_), hud_(font), lobby_(font),
+      sound_(!options.mute && options.bench_frames == 0 && options.screenshot_path.empty()),
+      session_(make_factory(), options.name, network_session_config()),
+      bench_(options.bench_frames) {
+    if (options.autoplay) {
+        auto_player_.emplace(*options.autoplay, 1);
+    }
+}
+
+LinkFactory AppWindow::make_factory() {
+    if (!options_.demo) {
+        return make_network_link_factory(options_.url);
+    }
+    DemoConfig demo;
+    demo.first_shot_at_s = options_.demo_break_at_s;
+    demo.autoplay_after_s = options_.demo_autoplay_s;
+    const PhysicsConfig physics = physics_;
+    return [this, demo, physics]() -> std::unique_ptr<MessageLink> {
+        return std::make_unique<DemoLink>(
+            physics, [this] { return clock_.now(); }, demo);
+    };
+}
+
+void AppWindow::handle_event(const sf::Event& e) {
+    if (handle_window_event(window_, e, layout_, layout_seats_)) {
+        return;
+    }
+    if (session_.phase() == SessionPhase::Lobby) {
+        if (auto request = lobby_.on_event(e, layout_.board)) {
+            session_.request(*request);
+        }
+        return;
+    }
+    if (model_.view().in_room && model_.view().phase == proto::Phase::GameOver) {
+        handle_game_over_input(e);
+    } else if (model_.view().in_room) {
+        handle_match_input(e);
+    }
+}
+
+void AppWindow::handle_game_over_input(const sf::Event& e) {
+    const auto choice = game_over_.on_event(e, game_over_text(model_.view(), rematch_asked_));
+    if (choice == GameOverPanel::Choice::Rematch) {
+        rematch_asked_ = session_.send_game(proto::Rematch{});
+    } else if (choice == GameOverPanel::Choice::Lobby) {
+        back_to_lobby();
+    }
+}
+
+void AppWindow::back_to_lobby() {
+    session_.leave_room();
+    model_.reset();
+    aim_.end_turn();
+    aim_turn_ = -1;
+    shot_sent_turn_ = -1;
+    rematch_asked_ = false;
+    announced_room_.clear();
+}
+
+void AppWindow::handle_match_input(const sf::Event& e) {
+    const std::vector<BodyState> pieces = model_.board_now();
+    const ScreenMapping m = mapping();
+    auto board_at = [&m](int x, int y) {
+        return m.to_board({static_cast<double>(x), static_cast<double>(y)});
+    };
+    std::optional<ShotIntent> shot;
+    switch (e.type) {
+    case sf::Event::MouseButtonPressed:
+        if (e.mouseButton.button == sf::Mouse::Left) {
+            aim_.pointer_down(board_at(e.mouseButton.x, e.mouseButton.y), pieces);
+        }
+        break;
+    case sf::Event::MouseMoved:
+        aim_.pointer_move(board_at(e.mouseMove.x, e.mouseMove.y), pieces);
+        break;
+    case sf::Event::MouseButtonReleased:
+        if (e.mouseButton.button == sf::Mouse::Left) {
+            shot = aim_.pointer_up(board_at(e.mouseButton.x, e.mouseButton.y), pieces);
+        }
+        break;
+    case sf::Event::KeyPressed:
+        if (e.key.code == sf::Keyboard::Escape) {
+            aim_.cancel();
+        } else if (e.key.code == sf::Keyboard::Left || e.key.code == sf::Keyboard::Right) {
+            // Screen right as a direction along our baseline (the view may be turned).
+            const double along = along_baseline(aim_.side(), m.direction_to_board({1.0, 0.0}));
+            const int dir = (e.key.code == sf::Keyboard::Left ? -1 : 1) * (along < 0.0 ? -1 : 1);
+            aim_.nudge(dir, e.key.shift, pieces);
+        }
+        break;
+    default:
+        break;
+    }
+    if (aim_.take_moved()) {
+        aim_dirty_ = true;
+    }
+    if (shot) {
+        const int turn = model_.view().turn;
+        const proto::Shoot shoot{turn, shot->x_px, shot->angle_rad, shot->power};
+        if (session_.send_game(shoot)) {
+            shot_sent_turn_ = turn;
+            aim_.end_turn();
+            const bool predicted = model_.predict(shoot, clock_.now()); // drawn from next frame
+            frame_log_.shoot(shoot, predicted);
+        }
+    }
+}
+
+void AppWindow::sync_aim(double now) {
+    const MatchView& v = model_.view();
+    const bool can_aim = model_.my_turn() && !model_.animating() && shot_sent_turn_ != v.turn;
+    if (!can_aim) {
+        aim_.end_turn();
+        return;
+    }
+    if (aim_.phase() == AimPhase::Inactive) {
+        const double x = aim_turn_ == v.turn ? aim_.striker_x() : physics_.centre().x;
+        aim_.begin_turn(model_.seat_side(v.you), x);
+        aim_turn_ = v.turn;
+        aim_dirty_ = true;
+    }
+    // Tell the room where the striker is, at most 20 times a second.
+    if (aim_dirty_ && now - last_aim_sent_s_ >= 0.05) {
+        session_.send_game(proto::Aim{v.turn, aim_.striker_x()});
+        last_aim_sent_s_ = now;
+        aim_dirty_ = false;
+    }
+}
+
+void AppWindow::update(double now) {
+    for (const proto::ServerMessage& m : session_.update(now)) {
+        if (std::holds_alternative<proto::Error>(m) || std::holds_alternative<proto::Welcome>(m)) {
+            shot_sent_turn_ = -1; // a rejected shot, or one lost with the link: aim again if due
+        }
+        if (std::holds_alternative<proto::ShotResult>(m)) {
+            ++shots_seen_;
+        }
+        if (const auto* room = std::get_if<proto::RoomState>(&m)) {
+            room_ = *room;
+        }
+        model_.handle(m, now);
+    }
+    if (session_.seat_lost() && model_.view().in_room) {
+        back_to_lobby(); // the server no longer holds our seat: the lobby says so
+    }
+    for (const ClientSession::PongSample& p : session_.take_pongs()) {
+        model_.server_clock().round_trip(p.server_ms, p.sent_s, p.received_s);
+    }
+    if (model_.view().phase != proto::Phase::GameOver) {
+        rematch_asked_ = false; // a new game started (or none is over)
+    }
+    // Doubles has a seat bar below the board.
+    const int seats = model_.view().in_room ? static_cast<int>(model_.view().seats.size()) : 2;
+    if (seats != layout_seats_) {
+        layout_seats_ = seats;
+        const sf::Vector2u size = window_.getSize();
+        layout_ = make_layout(size.x, size.y, layout_seats_);
+    }
+    // Render first: the aim starts in the very frame the board comes to rest.
+    bodies_ = model_.render(now);
+    sync_aim(now);
+    announce_room();
+    for (const SoundCue& cue : model_.take_sounds()) {
+        sound_.play(cue);
+    }
+}
+
+int AppWindow::run() {
+    sf::ContextSettings settings;
+    settings.antialiasingLevel = options_.msaa;
+    window_.create(sf::VideoMode(options_.width, options_.height),
+                   "Carrom" + std::string(options_.demo ? " (demo)" : ""), sf::Style::Default,
+                   settings);
+    if (!window_.isOpen()) {
+        std::cerr << "carrom-client: could not open a window (is DISPLAY set?)\n";
+        return 1;
+    }
+    if (!options_.frame_log_path.empty()) {
+        if (auto problem = frame_log_.open(options_.frame_log_path)) {
+            std::cerr << "carrom-client: " << *problem << "\n";
+            return 2;
+        }
+    }
+    if (!fixed_step(options_)) {
+        window_.setVerticalSyncEnabled(true);
+        // A screenshot of a networked match counts frames at 60 per second of real time.
+        window_.setFramerateLimit(options_.screenshot_path.empty() ? 144 : 60);
+    }
+    const auto started = std::chrono::steady_clock::now();
+    const sf::Vector2u size = window_.getSize();
+    window_.setView(sf::View(sf::FloatRect(0.0f, 0.0f, f(size.x), f(size.y))));
+    layout_ = make_layout(size.x, size.y, layout_seats_);
+    if (options_.request) {
+        session_.request(*options_.request);
+    }
+    session_.start(clock_.now());
+    int frame = 0;
+    while (window_.isOpen()) {
+        const auto t0 = std::chrono::steady_clock::now();
+        const std::clock_t cpu0 = std::clock();
+        sf::Event event;
+        while (window_.pollEvent(event)) {
+            handle_event(event);
+        }
+        const double now = clock_.now();
+        update(now);
+        autoplay();
+        draw(now);
+        if (model_.view().in_room) {
+            frame_log_.frame(frame, model_, bodies_, session_.phase());
+        }
+        ++frame;
+        if (final_state_due()) {
+            const int code = write_final_state();
+            window_.close();
+            return code;
+        }
+        if (screenshot_due(frame)) {
+            const int code = finish_screenshot();
+            window_.close();
+            return code;
+        }
+        if (timed_out(started)) {
+            window_.close();
+            return 3;
+        }
+        window_.display();
+        const double ms =
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0)
+                .count();
+        const double cpu_ms = 1000.0 * static_cast<double>(std::clock() - cpu0) / CLOCKS_PER_SEC;
+        if (bench_done(frame, ms, cpu_ms)) {
+            window_.close();
+            return 0;
+        }
+        clock_.tick();
+    }
+    return 0;
+}
+
+} // namespace carrom::client::app

@@ -1,0 +1,99 @@
+#pragma once
+// The desktop client's window: lobby, match view, input, sound, and the unattended modes
+// (screenshot and report, final state, timeout, frame benchmark, autoplay). One class over three
+// files: app_window.cpp (the loop, messages, input), app_window_draw.cpp (drawing),
+// app_window_unattended.cpp (what the unattended modes write and when they end the loop).
+
+#include "app.hpp"
+#include "auto_player.hpp"
+#include "blitter.hpp"
+#include "board_painter.hpp"
+#include "carrom/client/aim_controller.hpp"
+#include "carrom/client/board_geometry.hpp"
+#include "carrom/client/client_session.hpp"
+#include "carrom/client/connection.hpp"
+#include "carrom/client/match_model.hpp"
+#include "carrom/client/screen_mapping.hpp"
+#include "frame_bench.hpp"
+#include "frame_clock.hpp"
+#include "frame_log.hpp"
+#include "game_over_panel.hpp"
+#include "hud_painter.hpp"
+#include "lobby_view.hpp"
+#include "reconnect_panel.hpp"
+#include "sound_player.hpp"
+
+#include <SFML/Graphics.hpp>
+
+#include <chrono>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace carrom::client::app {
+
+class AppWindow {
+public:
+    AppWindow(const AppOptions& options, const sf::Font& font);
+
+    int run();
+
+private:
+    LinkFactory make_factory();
+    void handle_event(const sf::Event& e);
+    void handle_match_input(const sf::Event& e);
+    void handle_game_over_input(const sf::Event& e);
+    void back_to_lobby();
+    void update(double now);
+    void sync_aim(double now);
+    void draw(double now);
+    void draw_aim();
+    void draw_status_panel(const std::string& title, const std::string& detail);
+    bool save_screenshot();
+    bool timed_out(std::chrono::steady_clock::time_point started) const;
+    bool bench_done(int frame, double ms, double cpu_ms);
+    bool screenshot_due(int frame) const;
+    int finish_screenshot();
+    void announce_room();
+    void autoplay();
+    bool final_state_due() const;
+    int write_final_state();
+    ScreenMapping mapping() const {
+        return make_mapping(layout_.board, physics_.board_size_px, model_.view_side());
+    }
+
+    AppOptions options_;
+    const sf::Font& font_;
+    FrameClock clock_;
+    PhysicsConfig physics_{};
+    BoardGeometry geometry_;
+    MatchModel model_;
+    AimController aim_;
+    Blitter blitter_;
+    BoardPainter board_painter_;
+    HudPainter hud_;
+    LobbyView lobby_;
+    GameOverPanel game_over_;
+    ReconnectPanel reconnect_panel_;
+    SoundPlayer sound_;
+    ClientSession session_;
+    sf::RenderWindow window_;
+    ScreenLayout layout_;
+    int layout_seats_ = 2; // the seat count layout_ was made for
+    std::vector<RenderedBody> bodies_;
+    int aim_turn_ = -1;       // the turn the aim controller was set up for
+    int shot_sent_turn_ = -1; // the turn we already shot in (no double shots)
+    double last_aim_sent_s_ = -1.0;
+    bool aim_dirty_ = false;
+    FrameBench bench_;                      // --bench-frames
+    int shots_seen_ = 0;                    // shot results received
+    std::optional<Vec2> aim_striker_drawn_; // a striker being placed, drawn this frame
+    std::string announced_room_;            // the room code last printed on stdout
+    bool rematch_asked_ = false;            // sent `rematch` for the game that is over
+    std::optional<AutoPlayer> auto_player_; // --autoplay
+    std::optional<proto::RoomState> room_;  // the newest room state (what --autoplay plays from)
+    int auto_turn_ = -1;                    // the turn --autoplay last aimed in
+    FrameLog frame_log_;                    // --frame-log
+};
+
+} // namespace carrom::client::app

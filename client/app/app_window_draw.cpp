@@ -1,0 +1,139 @@
+#include "app_window.hpp"
+
+#include "carrom/client/game_over_text.hpp"
+#include "carrom/client/reconnect_text.hpp"
+#include "draw_util.hpp"
+#include "text.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace carrom::client::app {
+
+void AppWindow::draw_aim() {
+    aim_striker_drawn_.reset();
+    const ScreenMapping m = mapping();
+    const MatchView& v = model_.view();
+    if (aim_.phase() != AimPhase::Inactive) {
+        const Vec2 s = aim_.striker_px();
+        if (aim_.phase() == AimPhase::Pulling) {
+            const ShotIntent shot = aim_.pending_shot();
+            const double frac = aim_.power_fraction();
+            sf::VertexArray tris(sf::Triangles);
+            const Vec2 dir{std::cos(shot.angle_rad), std::sin(shot.angle_rad)};
+            const double reach = 40.0 + 260.0 * frac;
+            for (double d = physics_.striker_radius_px + 4.0; d < reach; d += 14.0) {
+                add_line(tris, m.to_screen(s + dir * d),
+                         m.to_screen(s + dir * std::min(d + 8.0, reach)),
+                         std::max(m.length_to_screen(2.0), 1.5), sf::Color(255, 255, 255, 210));
+            }
+            add_line(tris, m.to_screen(s), m.to_screen(s - dir * (20.0 + 140.0 * frac)),
+                     std::max(m.length_to_screen(1.0), 1.0), sf::Color(40, 20, 10, 150));
+            const auto red = static_cast<sf::Uint8>(std::lround(60 + 195 * frac));
+            const auto green = static_cast<sf::Uint8>(std::lround(210 - 150 * frac));
+            add_arc(tris, m.to_screen(s), m.length_to_screen(physics_.striker_radius_px + 7.0),
+                    m.length_to_screen(4.0), -std::numbers::pi / 2.0,
+                    -std::numbers::pi / 2.0 + 2.0 * std::numbers::pi * frac,
+                    sf::Color(red, green, 40), 48);
+            window_.draw(tris);
+            const Vec2 label = m.to_screen(s + Vec2{0.0, 0.0}) +
+                               Vec2{0.0, -m.length_to_screen(physics_.striker_radius_px + 22.0)};
+            hud_.texts().draw(window_, "Power " + std::to_string(std::lround(100.0 * frac)) + "%",
+                              static_cast<unsigned>(std::max(12.0, m.length_to_screen(11.0))),
+                              f(label.x), f(label.y), sf::Color::White, Align::Centre);
+        }
+        board_painter_.draw_striker(window_, blitter_, m, s, 1.0, !aim_.placement().legal);
+        aim_striker_drawn_ = s;
+        if (!aim_.placement().legal) {
+            const Vec2 label =
+                m.to_screen(s) + Vec2{0.0, m.length_to_screen(physics_.striker_radius_px + 16.0)};
+            hud_.texts().draw(window_, "Overlaps a piece",
+                              static_cast<unsigned>(std::max(12.0, m.length_to_screen(10.0))),
+                              f(label.x), f(label.y), sf::Color(255, 90, 80), Align::Centre);
+        }
+        return;
+    }
+    if (v.phase == proto::Phase::Aiming && !model_.animating() && v.to_play != v.you) {
+        // The shooter's striker, where they are placing it on their baseline.
+        const double x = v.aim_x_px.value_or(physics_.centre().x);
+        const Vec2 s =
+            baseline_point(physics_, model_.seat_side(v.to_play), clamp_baseline_x(physics_, x));
+        board_painter_.draw_striker(window_, blitter_, m, s, 0.85, false);
+        aim_striker_drawn_ = s;
+    }
+}
+
+void AppWindow::draw_status_panel(const std::string& title, const std::string& detail) {
+    const Rect& b = layout_.board;
+    draw_panel(window_, b, sf::Color(20, 12, 8, 200));
+    const float cx = f(b.x + b.w / 2.0);
+    draw_text(window_, font_, title, static_cast<unsigned>(std::clamp(b.h * 0.05, 18.0, 44.0)), cx,
+              f(b.y + b.h * 0.42), sf::Color(236, 184, 64), Align::Centre);
+    // One sentence per line, so long reasons stay inside the window.
+    const auto size = static_cast<unsigned>(std::clamp(b.h * 0.024, 12.0, 22.0));
+    std::size_t start = 0;
+    double y = b.y + b.h * 0.52;
+    while (start < detail.size()) {
+        std::size_t end = detail.find(". ", start);
+        end = end == std::string::npos ? detail.size() : end + 1;
+        draw_text(window_, font_, detail.substr(start, end - start), size, cx, f(y),
+                  sf::Color(242, 232, 214), Align::Centre);
+        y += size * 1.5;
+        start = end < detail.size() ? end + 1 : end;
+    }
+}
+
+void AppWindow::draw(double now) {
+    const ScreenMapping m = mapping();
+    const SessionPhase phase = session_.phase();
+    const Rect band{0.0, layout_.top_bar.h, layout_.top_bar.w,
+                    layout_.seat_bar.y - layout_.top_bar.h};
+    if (model_.view().in_room) {
+        // The bars and the band between them cover the window: no clear.
+        board_painter_.draw_board(window_, blitter_, m, band);
+        board_painter_.draw_pieces(window_, blitter_, m, bodies_);
+        draw_aim();
+        // While the link is lost the card over the board has the details; the bar its title.
+        const bool linked = phase == SessionPhase::InRoom || phase == SessionPhase::Joining;
+        const ReconnectText card =
+            reconnect_text(phase, session_.reconnect_info(now), session_.status_text());
+        ConnectionLine line{linked ? session_.status_text() : card.title, linked,
+                            session_.rtt_ms()};
+        hud_.draw(window_, blitter_, layout_, model_, line, now);
+        if (model_.view().phase == proto::Phase::GameOver) {
+            game_over_.draw(window_, blitter_, hud_.texts(), layout_.board,
+                            game_over_text(model_.view(), rematch_asked_));
+        }
+        if (phase == SessionPhase::Reconnecting || phase == SessionPhase::Failed ||
+            phase == SessionPhase::Connecting || phase == SessionPhase::Greeting) {
+            reconnect_panel_.draw(window_, hud_.texts(), layout_.board, card);
+        }
+        return;
+    }
+    window_.clear(BoardPainter::kMargin);
+    board_painter_.draw_board(window_, blitter_, m, band);
+    std::string error;
+    for (const HudLine& l : model_.log().visible(now)) {
+        if (l.tone == Tone::Error) {
+            error = l.text;
+        }
+    }
+    switch (phase) {
+    case SessionPhase::Lobby:
+        lobby_.draw(window_, layout_.board, options_.name, session_.status_text(), error, true);
+        break;
+    case SessionPhase::Joining:
+        lobby_.draw(window_, layout_.board, options_.name, session_.status_text(), error, false);
+        break;
+    case SessionPhase::Failed:
+        draw_status_panel("Cannot connect", session_.status_text());
+        break;
+    default:
+        draw_status_panel(options_.demo ? "Starting the demo" : "Connecting to " + options_.url,
+                          session_.status_text());
+        break;
+    }
+}
+
+} // namespace carrom::client::app

@@ -1,0 +1,273 @@
+// WsSession before and between rooms: hello (new, or a resume with its token), create_room,
+// join_room, quick_match and its wait for partners (then bots), entering a room.
+#include "ws_session.hpp"
+
+#include "room_actor.hpp"
+#include "server_core.hpp"
+
+#include "carrom/proto/codec.hpp"
+#include "carrom/proto/limits.hpp"
+#include "carrom/proto/version.hpp"
+
+#include <boost/asio/post.hpp>
+#include <spdlog/spdlog.h>
+
+#include <algorithm>
+
+namespace carrom::server {
+
+void WsSession::handle_hello(const proto::Hello& hello) {
+    if (hello_done_) {
+        send_error(proto::code::kAlreadyHello, "This connection already said hello.");
+        return;
+    }
+    if (hello.version != proto::kProtocolVersion) {
+        fail(proto::code::kVersionMismatch,
+             "The server speaks protocol version " + std::to_string(proto::kProtocolVersion) +
+                 "; the client sent " + std::to_string(hello.version) + ".",
+             proto::kCloseVersionMismatch);
+        return;
+    }
+    hello_done_ = true;
+    hello_timer_.cancel();
+    name_ = hello.name;
+    std::optional<PlayerRecord> record;
+    if (hello.resume_token) {
+        record = core_.registry.find_player(*hello.resume_token);
+        if (!record) {
+            // A seat of a match recovered after a restart (docs/server.md, "Recovery after a
+            // restart"): the store kept the token's hash.
+            record = core_.claim_restored_seat(*hello.resume_token);
+        }
+        if (!record) {
+            send_error(proto::code::kBadToken,
+                       "That resume token is unknown or expired; you join as a new player.");
+        }
+    }
+    if (!record) {
+        record = core_.registry.new_player();
+    }
+    player_id_ = record->player_id;
+    token_ = record->token;
+    send_now({std::make_shared<const std::string>(proto::encode(proto::Welcome{
+                  proto::kProtocolVersion, player_id_, token_, core_.clock.now_ms()})),
+              room::MessageKind::Normal});
+    if (!hello.resume_token || record->room_code.empty()) {
+        return;
+    }
+    auto room = core_.registry.find_room(record->room_code);
+    if (!room) {
+        send_error(proto::code::kBadToken, "That room has closed.");
+        return;
+    }
+    room_ = room;
+    room->post([self = shared_from_this(), room](room::Room& r) {
+        if (auto error = r.resume(self)) {
+            self->send({std::make_shared<const std::string>(proto::encode(*error)),
+                        room::MessageKind::Normal});
+            asio::post(self->ws_.get_executor(), [self, room] {
+                if (self->room_ == room) {
+                    self->room_.reset();
+                }
+            });
+        }
+    });
+}
+
+void WsSession::handle_create(const proto::CreateRoom& create) {
+    if (room_) {
+        send_error(proto::code::kAlreadyInRoom, "Leave this room first.");
+        return;
+    }
+    if (create.bot) {
+        if (!core_.bots) {
+            send_error(proto::code::kUnsupported, "This server has no bots.");
+            return;
+        }
+        std::vector<int> bot_seats = create.bot->seats; // the decoder checked them
+        if (bot_seats.empty()) {
+            for (int seat = 1; seat < create.seats; ++seat) {
+                bot_seats.push_back(seat); // every seat but the creator's
+            }
+        }
+        enter_bot_room(create.rule_set, create.options, create.seats, create.bot->level, bot_seats);
+        return;
+    }
+    auto created = core_.create_room(create.rule_set, create.options, create.seats);
+    if (auto* error = std::get_if<proto::Error>(&created)) {
+        send_error(error->code, error->message);
+        return;
+    }
+    enter_room(std::get<std::shared_ptr<RoomActor>>(created), proto::Role::Player);
+}
+
+void WsSession::enter_bot_room(proto::RuleSet rule_set, const proto::RoomOptions& options,
+                               int seats, proto::BotLevel level, const std::vector<int>& bot_seats,
+                               const std::vector<std::shared_ptr<WsSession>>& others) {
+    std::vector<std::pair<int, std::shared_ptr<room::BotBrain>>> bots;
+    for (const int seat : bot_seats) {
+        bots.emplace_back(seat, core_.bots(level));
+    }
+    auto created = core_.create_room(rule_set, options, seats);
+    if (auto* error = std::get_if<proto::Error>(&created)) {
+        send_error(error->code, error->message);
+        return;
+    }
+    auto room = std::get<std::shared_ptr<RoomActor>>(created);
+    // This player's join is posted first, so it takes seat 0; the bots take their own seats and
+    // the others (posted later, from their own threads) the first free ones.
+    enter_room(room, proto::Role::Player);
+    for (const auto& other : others) {
+        other->assign_room(room);
+    }
+    const std::string bot_name = "Bot (" + std::string(proto::to_string(level)) + ")";
+    room->post([bots = std::move(bots), bot_name](room::Room& r) {
+        for (const auto& [seat, brain] : bots) {
+            (void)r.seat_bot(bot_name, brain, seat);
+        }
+    });
+}
+
+void WsSession::handle_join(const proto::JoinRoom& join) {
+    if (room_) {
+        send_error(proto::code::kAlreadyInRoom, "Leave this room first.");
+        return;
+    }
+    auto room = core_.registry.find_room(join.code);
+    if (!room) {
+        send_error(proto::code::kRoomNotFound, "No room has the code " + join.code + ".");
+        return;
+    }
+    enter_room(room, join.as);
+}
+
+void WsSession::enter_room(const std::shared_ptr<RoomActor>& room, proto::Role role) {
+    stop_quick_match();
+    room_ = room;
+    if (role == proto::Role::Player) {
+        core_.registry.set_player_room(token_, room->code());
+    }
+    room->post([self = shared_from_this(), room, role](room::Room& r) {
+        if (auto error = r.join(self, role)) {
+            self->send({std::make_shared<const std::string>(proto::encode(*error)),
+                        room::MessageKind::Normal});
+            asio::post(self->ws_.get_executor(), [self, room] {
+                if (self->room_ == room) {
+                    self->room_.reset();
+                }
+            });
+        }
+    });
+}
+
+void WsSession::handle_quick_match(const proto::QuickMatch& quick) {
+    if (room_) {
+        send_error(proto::code::kAlreadyInRoom, "Leave this room first.");
+        return;
+    }
+    for (;;) {
+        auto group =
+            core_.registry.quick_match(quick.rule_set, quick.seats, player_id_, weak_from_this());
+        if (!group) {
+            // Queued (or already queued): paired when the next player asks, or given a bot once
+            // the wait is over. A repeated quick_match keeps the first wait.
+            const double wait_s = core_.settings.quick_match_bot_s;
+            if (!quick_waiting_ && wait_s > 0.0 && core_.bots) {
+                quick_waiting_ = true;
+                const auto generation = ++quick_generation_;
+                quick_timer_.expires_after(to_duration(wait_s));
+                quick_timer_.async_wait([self = shared_from_this(), generation,
+                                         rule_set = quick.rule_set,
+                                         seats = quick.seats](beast::error_code ec) {
+                    if (!ec) {
+                        self->on_quick_match_wait(generation, rule_set, seats);
+                    }
+                });
+            }
+            return;
+        }
+        std::vector<std::shared_ptr<WsSession>> partners;
+        for (const auto& ref : *group) {
+            if (auto partner = ref.lock()) {
+                partners.push_back(std::move(partner));
+            }
+        }
+        if (partners.empty()) {
+            continue; // those players left; try the next ones
+        }
+        const int humans = 1 + static_cast<int>(partners.size());
+        if (humans < quick.seats && core_.bots) {
+            // A player of the group left meanwhile: a bot takes that seat.
+            std::vector<int> bot_seats;
+            for (int seat = humans; seat < quick.seats; ++seat) {
+                bot_seats.push_back(seat);
+            }
+            enter_bot_room(quick.rule_set, proto::RoomOptions{}, quick.seats,
+                           core_.settings.quick_match_bot_level, bot_seats, partners);
+            return;
+        }
+        auto created = core_.create_room(quick.rule_set, proto::RoomOptions{}, quick.seats);
+        if (auto* error = std::get_if<proto::Error>(&created)) {
+            send_error(error->code, error->message);
+            return;
+        }
+        auto room = std::get<std::shared_ptr<RoomActor>>(created);
+        for (const auto& partner : partners) {
+            partner->assign_room(room);
+        }
+        enter_room(room, proto::Role::Player);
+        return;
+    }
+}
+
+void WsSession::stop_quick_match() {
+    if (player_id_ >= 0) {
+        (void)core_.registry.cancel_quick_match(player_id_);
+    }
+    if (quick_waiting_) {
+        quick_waiting_ = false;
+        ++quick_generation_;
+        quick_timer_.cancel();
+    }
+}
+
+void WsSession::on_quick_match_wait(std::uint64_t generation, proto::RuleSet rule_set, int seats) {
+    if (generation != quick_generation_ || !quick_waiting_) {
+        return; // cancelled, or a newer wait
+    }
+    quick_waiting_ = false;
+    if (ended_ || close_code_ || room_) {
+        return;
+    }
+    // Only a player still in the queue gets bots: if a partner took it out first, that
+    // partner's room is on its way (assign_room). The players waiting for the same mode come
+    // along (doubles: 1 to 3 players), bots take the other seats.
+    auto others = core_.registry.take_waiting(rule_set, seats, player_id_);
+    if (!others) {
+        return;
+    }
+    std::vector<std::shared_ptr<WsSession>> partners;
+    for (const auto& ref : *others) {
+        if (auto partner = ref.lock()) {
+            partners.push_back(std::move(partner));
+        }
+    }
+    std::vector<int> bot_seats;
+    for (int seat = 1 + static_cast<int>(partners.size()); seat < seats; ++seat) {
+        bot_seats.push_back(seat);
+    }
+    spdlog::debug("player {}: quick-match wait over, {} players and {} bots", player_id_,
+                  1 + partners.size(), bot_seats.size());
+    enter_bot_room(rule_set, proto::RoomOptions{}, seats, core_.settings.quick_match_bot_level,
+                   bot_seats, partners);
+}
+
+void WsSession::assign_room(std::shared_ptr<RoomActor> room) {
+    asio::post(ws_.get_executor(), [self = shared_from_this(), room] {
+        if (!self->room_ && !self->ended_ && !self->close_code_) {
+            self->enter_room(room, proto::Role::Player);
+        }
+    });
+}
+
+} // namespace carrom::server
