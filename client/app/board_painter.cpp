@@ -166,10 +166,6 @@ void add_piece_shape(sf::VertexArray& t, Vec2 c, double r, BodyKind kind, const 
 
 constexpr int kKinds = 4; // BodyKind: Black, White, Queen, Striker
 
-bool same_rect(const Rect& a, const Rect& b) {
-    return a.x == b.x && a.y == b.y && a.w == b.w && a.h == b.h;
-}
-
 } // namespace
 
 PieceLook piece_look(BodyKind kind) {
@@ -253,7 +249,7 @@ bool BoardPainter::repaint_atlas(sf::RenderTarget& target, Blitter& blitter, dou
 void BoardPainter::draw_board(sf::RenderTarget& target, Blitter& blitter,
                               const ScreenMapping& mapping, const Rect& band) {
     const Vec2 origin{mapping.origin_x, mapping.origin_y};
-    if (!band_ok_ || !same_rect(band, painted_band_) || !(origin == painted_origin_) ||
+    if (!band_ok_ || band != painted_band_ || !(origin == painted_origin_) ||
         mapping.scale != painted_scale_) {
         band_ok_ = repaint_band(target, blitter, mapping, band);
         painted_band_ = band;

@@ -6,6 +6,9 @@
 
 #include <SFML/Graphics.hpp>
 
+#include <algorithm>
+#include <cmath>
+
 namespace carrom::client::app {
 
 inline sf::Vector2f to_sf(Vec2 v) {
@@ -13,6 +16,11 @@ inline sf::Vector2f to_sf(Vec2 v) {
 }
 inline float f(double v) {
     return static_cast<float>(v);
+}
+// A size in window px (a font size, a margin): `fraction` of `length`, clamped to [lo, hi] and
+// rounded.
+inline unsigned scaled_size(double length, double fraction, double lo, double hi) {
+    return static_cast<unsigned>(std::lround(std::clamp(length * fraction, lo, hi)));
 }
 inline sf::Color with_alpha(sf::Color c, double alpha) {
     c.a = static_cast<sf::Uint8>(std::clamp(alpha, 0.0, 1.0) * c.a);

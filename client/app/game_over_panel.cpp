@@ -1,5 +1,8 @@
 #include "game_over_panel.hpp"
 
+#include "draw_util.hpp"
+#include "palette.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -7,15 +10,7 @@ namespace carrom::client::app {
 namespace {
 
 const sf::Color kPanel{24, 14, 8, 232};
-const sf::Color kGold{236, 184, 64};
-const sf::Color kText{242, 232, 214};
-const sf::Color kDim{186, 170, 150};
-const sf::Color kButton{96, 58, 28};
 const sf::Color kButtonOff{58, 40, 28};
-
-unsigned scaled(double board_h, double k, double lo, double hi) {
-    return static_cast<unsigned>(std::lround(std::clamp(board_h * k, lo, hi)));
-}
 
 // Greedy line filling: each line takes words while it fits in `width`.
 std::vector<std::string> fill_lines(TextCache& texts, const std::vector<std::string>& words,
@@ -64,8 +59,8 @@ std::vector<std::string> wrap_text(TextCache& texts, const std::string& text, un
 }
 
 Sketch GameOverPanel::sketch(TextCache& texts, const Rect& b, const GameOverText& text) {
-    const unsigned title_size = scaled(b.h, 0.062, 22.0, 56.0);
-    const unsigned body_size = scaled(b.h, 0.027, 13.0, 24.0);
+    const unsigned title_size = scaled_size(b.h, 0.062, 22.0, 56.0);
+    const unsigned body_size = scaled_size(b.h, 0.027, 13.0, 24.0);
     const double line_h = std::round(body_size * 1.45);
     const double button_h = std::round(std::clamp(b.h * 0.064, 32.0, 54.0));
     const double w = std::round(std::min(b.w * 0.84, 680.0));

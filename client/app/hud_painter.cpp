@@ -3,6 +3,7 @@
 #include "board_painter.hpp"
 #include "carrom/client/plain_words.hpp"
 #include "draw_util.hpp"
+#include "palette.hpp"
 #include "text.hpp"
 
 #include <algorithm>
@@ -13,9 +14,6 @@ namespace carrom::client::app {
 namespace {
 
 const sf::Color kBar{36, 22, 14};
-const sf::Color kText{242, 232, 214};
-const sf::Color kDim{186, 170, 150};
-const sf::Color kGold{236, 184, 64};
 const sf::Color kAlert{236, 84, 64};
 const sf::Color kOk{120, 200, 120};
 

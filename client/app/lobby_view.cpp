@@ -1,16 +1,14 @@
 #include "lobby_view.hpp"
 
 #include "carrom/proto/limits.hpp"
+#include "palette.hpp"
 #include "text.hpp"
 
 #include <cctype>
 
 namespace carrom::client::app {
 namespace {
-const sf::Color kButton{96, 58, 28};
 const sf::Color kButtonEdge{236, 184, 64};
-const sf::Color kText{242, 232, 214};
-const sf::Color kDim{186, 170, 150};
 } // namespace
 
 Rect LobbyView::control_rect(Control c, const Rect& area) const {

@@ -7,10 +7,6 @@
 namespace carrom::client::app {
 namespace {
 
-bool same_rect(const Rect& a, const Rect& b) {
-    return a.x == b.x && a.y == b.y && a.w == b.w && a.h == b.h;
-}
-
 struct ItemPainter {
     sf::RenderTarget& target;
     TextCache& texts;
@@ -31,7 +27,7 @@ struct ItemPainter {
 } // namespace
 
 bool operator==(const SketchPanel& a, const SketchPanel& b) {
-    return same_rect(a.rect, b.rect) && a.fill == b.fill && a.outline == b.outline &&
+    return a.rect == b.rect && a.fill == b.fill && a.outline == b.outline &&
            a.outline_px == b.outline_px;
 }
 

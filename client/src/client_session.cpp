@@ -22,7 +22,7 @@ bool refuses_request(const std::string& code) {
            code == proto::code::kBadField;
 }
 
-std::string seconds_text(double s) {
+std::string delay_text(double s) {
     std::ostringstream out;
     out.precision(s < 10.0 ? 1 : 0);
     out << std::fixed << s << " s";
@@ -177,7 +177,7 @@ void ClientSession::on_link_lost(double local_s, const std::string& why) {
     lost_reason_ = reason;
     if (local_s - lost_since_s_ >= config_.give_up_after_s) {
         phase_ = SessionPhase::Failed;
-        status_ = reason + " Gave up after " + seconds_text(local_s - lost_since_s_) + ".";
+        status_ = reason + " Gave up after " + delay_text(local_s - lost_since_s_) + ".";
         return;
     }
     retry_delay_s_ = attempts_ == 1 ? config_.first_retry_s
@@ -190,7 +190,7 @@ void ClientSession::on_link_lost(double local_s, const std::string& why) {
     resuming_ = resuming_ || (!token_.empty() &&
                               (phase_ == SessionPhase::InRoom || phase_ == SessionPhase::Joining));
     phase_ = ever_welcomed_ ? SessionPhase::Reconnecting : SessionPhase::Connecting;
-    status_ = reason + " Retrying in " + seconds_text(delay) + " (attempt " +
+    status_ = reason + " Retrying in " + delay_text(delay) + " (attempt " +
               std::to_string(attempts_) + ")";
 }
 

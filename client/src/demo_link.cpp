@@ -1,5 +1,6 @@
 #include "carrom/client/demo_link.hpp"
 
+#include "carrom/overloaded.hpp"
 #include "carrom/proto/codec.hpp"
 #include "carrom/proto/types.hpp"
 #include "carrom/proto/version.hpp"
@@ -9,9 +10,6 @@
 
 namespace carrom::client {
 namespace {
-
-template <class... F> struct Overloaded : F... { using F::operator()...; };
-template <class... F> Overloaded(F...) -> Overloaded<F...>;
 
 constexpr std::int64_t kPlayerId = 1;
 constexpr const char* kToken = "0123456789abcdef0123456789abcdef";

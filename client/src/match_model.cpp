@@ -1,6 +1,7 @@
 #include "carrom/client/match_model.hpp"
 
 #include "carrom/client/plain_words.hpp"
+#include "carrom/overloaded.hpp"
 #include "carrom/scene.hpp"
 
 #include <algorithm>
@@ -9,9 +10,6 @@
 
 namespace carrom::client {
 namespace {
-
-template <class... F> struct Overloaded : F... { using F::operator()...; };
-template <class... F> Overloaded(F...) -> Overloaded<F...>;
 
 constexpr std::size_t kTurnsKept = 8;
 

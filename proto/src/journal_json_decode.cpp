@@ -17,7 +17,6 @@ namespace {
 
 using namespace scene_json_detail;
 
-constexpr int kMaxScore = 1000000;
 constexpr int kMaxVersion = 1000000000;
 constexpr std::size_t kMaxFouls = 16;
 constexpr std::size_t kMaxServerVersionBytes = 64;
@@ -173,7 +172,8 @@ MaybeError decode_outcome(const Json& j, const std::string& path, int seats, int
     out.pocketed =
         r.ints("pocketed", 0, kCoinCount - 1, static_cast<std::size_t>(kCoinCount), false);
     out.fouls = read_fouls(r, "fouls");
-    out.scores = r.ints("scores", -kMaxScore, kMaxScore, static_cast<std::size_t>(teams), true);
+    out.scores =
+        r.ints("scores", -kMaxFileScore, kMaxFileScore, static_cast<std::size_t>(teams), true);
     out.next_seat = r.integer("next_seat", 0, seats - 1);
     if (const Json* board = r.optional("board_end")) {
         auto decoded = decode_board_result(*board, teams, r.at("board_end"));

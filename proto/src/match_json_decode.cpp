@@ -17,7 +17,6 @@ namespace {
 using namespace scene_json_detail;
 using rules::MatchState;
 
-constexpr int kMaxScore = 1000000;
 constexpr int kMaxCount = 1000000;
 constexpr int kMaxTurn = std::numeric_limits<int>::max();
 
@@ -110,7 +109,7 @@ MaybeError decode_freestyle(const Json& j, const std::string& path, rules::Frees
     }
     Fields f(j, path);
     for (const FreestyleField& field : fields) {
-        f.integer(field.name, 0, kMaxScore, out.*(field.member));
+        f.integer(field.name, 0, kMaxFileScore, out.*(field.member));
     }
     return f.error;
 }
@@ -132,7 +131,7 @@ MaybeError read_board_result(const Json& j, const std::string& path, int teams,
     Fields f(j, path);
     f.integer("board", 1, kMaxCount, out.board);
     out.winner_team = team_or_null(f, "winner_team", teams);
-    f.integer("points", 0, kMaxScore, out.points);
+    f.integer("points", 0, kMaxFileScore, out.points);
     f.enumeration("reason", &rules::parse_rule_code, out.reason);
     return f.error;
 }
@@ -292,7 +291,7 @@ MaybeError check_queen(const std::string& path, const MatchState& s) {
 MaybeError decode_counters(Fields& f, MatchState& s) {
     const auto teams = s.scores.size();
     const int seats = static_cast<int>(s.seats.size());
-    f.int_array("scores", teams, -kMaxScore, kMaxScore, s.scores);
+    f.int_array("scores", teams, -kMaxFileScore, kMaxFileScore, s.scores);
     f.int_array("dues_owed", teams, 0, kCoinCount, s.dues_owed);
     f.int_array("missed_turns", s.seats.size(), 0, kMaxCount, s.missed_turns);
     f.integer("board", 1, kMaxCount, s.board);
@@ -372,11 +371,11 @@ Decoded<rules::RulesConfig> decode_rules_config(const nlohmann::json& j,
         {"seat_count", &rules::RulesConfig::seat_count, 2, 4},
         {"first_breaker", &rules::RulesConfig::first_breaker, 0, 3},
         {"missed_turns_to_lose", &rules::RulesConfig::missed_turns_to_lose, 1, 1000},
-        {"target_points", &rules::RulesConfig::target_points, 1, kMaxScore},
+        {"target_points", &rules::RulesConfig::target_points, 1, kMaxFileScore},
         {"max_boards", &rules::RulesConfig::max_boards, 1, 1000},
-        {"queen_points", &rules::RulesConfig::queen_points, 0, kMaxScore},
-        {"queen_points_limit", &rules::RulesConfig::queen_points_limit, 0, kMaxScore},
-        {"board_points_cap", &rules::RulesConfig::board_points_cap, 1, kMaxScore},
+        {"queen_points", &rules::RulesConfig::queen_points, 0, kMaxFileScore},
+        {"queen_points_limit", &rules::RulesConfig::queen_points_limit, 0, kMaxFileScore},
+        {"board_points_cap", &rules::RulesConfig::board_points_cap, 1, kMaxFileScore},
         {"break_tries", &rules::RulesConfig::break_tries, 1, 100},
     };
     Decoded<rules::RulesConfig> out;

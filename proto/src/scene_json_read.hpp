@@ -18,6 +18,9 @@ namespace carrom::proto::scene_json_detail {
 using Json = nlohmann::json;
 using MaybeError = std::optional<JsonError>;
 
+// The largest |score| (and points, dues, target) a match or journal file may hold.
+inline constexpr int kMaxFileScore = 1000000;
+
 std::string field_path(const std::string& parent, std::string_view name);
 std::string index_path(const std::string& parent, std::size_t index);
 JsonError make_error(std::string_view code, std::string path, std::string message);

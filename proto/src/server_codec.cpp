@@ -13,7 +13,7 @@ using nlohmann::json;
 namespace {
 
 constexpr int kMaxId = 1000000;
-constexpr int kMaxScore = 100000;
+constexpr int kMaxMessageScore = 100000;
 constexpr int kMaxSeatIndex = static_cast<int>(kMaxSeats) - 1;
 
 json encode_queen(const QueenInfo& q) {
@@ -177,8 +177,8 @@ void decode_body(FieldReader& r, RoomState& m) {
         }
     }
     m.spectators = r.small_int("spectators", 0, 1000000);
-    m.scores = r.int_array("scores", -kMaxScore, kMaxScore, kMaxSeats);
-    m.dues = r.int_array("dues", 0, kMaxScore, kMaxSeats);
+    m.scores = r.int_array("scores", -kMaxMessageScore, kMaxMessageScore, kMaxSeats);
+    m.dues = r.int_array("dues", 0, kMaxMessageScore, kMaxSeats);
     if (r.ok() && (m.scores.size() != m.seats.size() || m.dues.size() != m.seats.size())) {
         r.fail("scores", "and 'dues' must have one item per seat");
     }
@@ -338,7 +338,7 @@ void decode_event(FieldReader& r, QueenEvent& e) {
 }
 void decode_event(FieldReader& r, DueEvent& e) {
     e.seat = read_seat(r, "seat");
-    e.owed = r.small_int("owed", 0, kMaxScore);
+    e.owed = r.small_int("owed", 0, kMaxMessageScore);
 }
 void decode_event(FieldReader& r, TurnEvent& e) {
     e.turn = read_turn(r);
@@ -349,13 +349,13 @@ void decode_event(FieldReader& r, TurnEvent& e) {
 void decode_event(FieldReader& r, BoardEndEvent& e) {
     e.board = r.small_int("board", 1, 1000);
     e.winner = r.small_int("winner", -1, kMaxSeatIndex);
-    e.points = r.small_int("points", -kMaxScore, kMaxScore);
-    e.scores = r.int_array("scores", -kMaxScore, kMaxScore, kMaxSeats);
+    e.points = r.small_int("points", -kMaxMessageScore, kMaxMessageScore);
+    e.scores = r.int_array("scores", -kMaxMessageScore, kMaxMessageScore, kMaxSeats);
 }
 void decode_event(FieldReader& r, GameEndEvent& e) {
     e.winner = r.small_int("winner", -1, kMaxSeatIndex);
     e.reason = r.text("reason", 1, 32);
-    e.scores = r.int_array("scores", -kMaxScore, kMaxScore, kMaxSeats);
+    e.scores = r.int_array("scores", -kMaxMessageScore, kMaxMessageScore, kMaxSeats);
 }
 void decode_event(FieldReader& r, PlayerDroppedEvent& e) {
     e.seat = read_seat(r, "seat");
@@ -442,9 +442,9 @@ void decode_body(FieldReader& r, ShotResult& m) {
     m.pocketed = r.int_array("pocketed", 0, kMaxId, kMaxBodies);
     m.returned = r.int_array("returned", 0, kMaxId, kMaxBodies);
     decode_object_array(r, "fouls", 16, m.fouls, decode_foul);
-    m.points = r.int_array("points", -kMaxScore, kMaxScore, kMaxSeats);
-    m.scores = r.int_array("scores", -kMaxScore, kMaxScore, kMaxSeats);
-    m.dues = r.int_array("dues", 0, kMaxScore, kMaxSeats);
+    m.points = r.int_array("points", -kMaxMessageScore, kMaxMessageScore, kMaxSeats);
+    m.scores = r.int_array("scores", -kMaxMessageScore, kMaxMessageScore, kMaxSeats);
+    m.dues = r.int_array("dues", 0, kMaxMessageScore, kMaxSeats);
     decode_queen(r, "queen", m.queen);
     m.extra_turn = r.boolean("extra_turn");
     m.next_turn = static_cast<int>(r.integer("next_turn", 0, kMaxTurn));

@@ -170,7 +170,9 @@ TEST(Reconnect, SigtermClosesWithRestarting) {
 }
 
 // Both bots' summaries after a fault: both finished the match, the same scores, one result each,
-// and each got `error_code` from the server once (none: not checked).
+// and each got `error_code` from the server at least once (none: not checked). More than once is
+// allowed: with a 1 s idle timeout a loaded machine can delay a keep-alive pong past it outside
+// the fault too, and the bots resume from that as well.
 void expect_finished_with_resume(BotPair& bots, const std::string& error_code = "") {
     const auto a = BotPair::summary(*bots.creator);
     const auto b = BotPair::summary(*bots.joiner);
@@ -184,8 +186,8 @@ void expect_finished_with_resume(BotPair& bots, const std::string& error_code = 
     EXPECT_EQ(a["scores"], b["scores"]);
     EXPECT_NE(a["result"], b["result"]);
     if (!error_code.empty()) {
-        EXPECT_EQ(a["errors"].value(error_code, 0), 1) << a.dump();
-        EXPECT_EQ(b["errors"].value(error_code, 0), 1) << b.dump();
+        EXPECT_GE(a["errors"].value(error_code, 0), 1) << a.dump();
+        EXPECT_GE(b["errors"].value(error_code, 0), 1) << b.dump();
     }
 }
 

@@ -1,5 +1,7 @@
 #include "frame_error_mode.hpp"
 
+#include "sim_cli.hpp"
+
 #include "carrom/proto/journal_json.hpp"
 #include "carrom/proto/journal_replay.hpp"
 #include "carrom/scene.hpp"
@@ -21,7 +23,7 @@ namespace {
 
 using Json = nlohmann::json;
 
-constexpr int kExitBadInput = 2;
+using sim_cli::kExitBadInput;
 // A frame jumped when a body moved more than this many times its exact displacement between the
 // two frames' shot times, plus kJumpSlackPx.
 constexpr double kJumpFactor = 3.0;
@@ -59,12 +61,8 @@ struct Failure {
     std::string message;
 };
 
-void print(std::ostream& out, const Json& j, bool pretty) {
-    out << j.dump(pretty ? 2 : -1, ' ', false, Json::error_handler_t::replace) << '\n';
-}
-
 int fail(std::ostream& err, const std::string& code, const std::string& message) {
-    print(err, proto::error_to_json({code, "", message}), false);
+    sim_cli::print_json(err, proto::error_to_json({code, "", message}), false);
     return kExitBadInput;
 }
 
@@ -299,14 +297,14 @@ int run_frame_error_mode(const std::string& frames_path, const std::string& jour
     text << journal_file.rdbuf();
     const auto journal = proto::decode_journal_text(text.str());
     if (!journal.ok()) {
-        print(err, proto::error_to_json(*journal.error), false);
+        sim_cli::print_json(err, proto::error_to_json(*journal.error), false);
         return kExitBadInput;
     }
     proto::ReplayOptions options;
     options.record_trajectory = true;
     const proto::ReplayResult replayed = proto::replay(journal.value, options);
     if (replayed.error) {
-        print(err, proto::error_to_json(*replayed.error), false);
+        sim_cli::print_json(err, proto::error_to_json(*replayed.error), false);
         return kExitBadInput;
     }
     std::ifstream frames_file(frames_path, std::ios::binary);
@@ -325,22 +323,23 @@ int run_frame_error_mode(const std::string& frames_path, const std::string& jour
     for (const Stroke& s : strokes_of(replayed)) {
         turns.push_back(measure(physics, s, frames, interval_ms, totals));
     }
-    print(out,
-          {{"match", journal.value.created.match_id},
-           {"frames", frames.size()},
-           {"frame_interval_ms", interval_ms},
-           {"strokes", std::move(turns)},
-           {"samples", totals.samples},
-           {"rms_px", totals.samples > 0
-                          ? std::sqrt(totals.sum_sq / static_cast<double>(totals.samples))
-                          : 0.0},
-           {"max_px", totals.max_px},
-           {"jumps", totals.jumps},
-           {"freezes", totals.freezes},
-           {"longest_freeze_ms", totals.longest_freeze_ms},
-           {"finals_checked", totals.finals_checked},
-           {"finals_equal", totals.finals_equal}},
-          pretty);
+    sim_cli::print_json(
+        out,
+        {{"match", journal.value.created.match_id},
+         {"frames", frames.size()},
+         {"frame_interval_ms", interval_ms},
+         {"strokes", std::move(turns)},
+         {"samples", totals.samples},
+         {"rms_px", totals.samples > 0
+                        ? std::sqrt(totals.sum_sq / static_cast<double>(totals.samples))
+                        : 0.0},
+         {"max_px", totals.max_px},
+         {"jumps", totals.jumps},
+         {"freezes", totals.freezes},
+         {"longest_freeze_ms", totals.longest_freeze_ms},
+         {"finals_checked", totals.finals_checked},
+         {"finals_equal", totals.finals_equal}},
+        pretty);
     return 0;
 }
 

@@ -22,7 +22,7 @@ namespace {
 using carrom::proto::JsonError;
 using Json = nlohmann::json;
 
-constexpr int kExitBadInput = 2;
+using carrom::sim_cli::kExitBadInput;
 constexpr int kExitInternal = 1;
 
 // Text from the command line (paths, flags) may not be UTF-8: replace bad bytes when printing.

@@ -6,6 +6,8 @@
 
 #include "replay_mode.hpp"
 
+#include "sim_cli.hpp"
+
 #include "carrom/proto/journal_json.hpp"
 #include "carrom/proto/journal_replay.hpp"
 #include "carrom/proto/match_json.hpp"
@@ -20,7 +22,7 @@ namespace {
 using Json = nlohmann::json;
 
 constexpr int kExitMismatch = 1;
-constexpr int kExitBadInput = 2;
+using sim_cli::kExitBadInput;
 
 Json step_to_json(const proto::ReplayStep& step, const proto::JournalEntry& entry) {
     Json out = {{"entry", step.entry},
@@ -45,10 +47,6 @@ Json step_to_json(const proto::ReplayStep& step, const proto::JournalEntry& entr
     return out;
 }
 
-void print(std::ostream& out, const Json& j, bool pretty) {
-    out << j.dump(pretty ? 2 : -1, ' ', false, Json::error_handler_t::replace) << '\n';
-}
-
 } // namespace
 
 int run_replay_mode(std::istream& in, std::ostream& out, std::ostream& err, bool pretty) {
@@ -59,17 +57,18 @@ int run_replay_mode(std::istream& in, std::ostream& out, std::ostream& err, bool
         text.append(buffer, static_cast<std::size_t>(in.gcount()));
     }
     if (in.bad()) {
-        print(err, proto::error_to_json({"io_error", "", "reading the journal failed"}), false);
+        sim_cli::print_json(
+            err, proto::error_to_json({"io_error", "", "reading the journal failed"}), false);
         return kExitBadInput;
     }
     const auto journal = proto::decode_journal_text(text);
     if (!journal.ok()) {
-        print(err, proto::error_to_json(*journal.error), false);
+        sim_cli::print_json(err, proto::error_to_json(*journal.error), false);
         return kExitBadInput;
     }
     const proto::ReplayResult r = proto::replay(journal.value);
     if (r.error) {
-        print(err, proto::error_to_json(*r.error), false);
+        sim_cli::print_json(err, proto::error_to_json(*r.error), false);
         return kExitBadInput;
     }
     const proto::MatchCreated& created = journal.value.created;
@@ -77,7 +76,7 @@ int run_replay_mode(std::istream& in, std::ostream& out, std::ostream& err, bool
     for (const proto::ReplayStep& step : r.steps) {
         steps.push_back(step_to_json(step, journal.value.entries[step.entry]));
     }
-    print(
+    sim_cli::print_json(
         out,
         {{"match", created.match_id},
          {"room", created.room_code},

@@ -6,9 +6,18 @@
 #include <nlohmann/json.hpp>
 
 #include <optional>
+#include <ostream>
 #include <string>
 
 namespace carrom::sim_cli {
+
+// The exit code of a run whose input (scene, journal, frame log, options) was refused.
+inline constexpr int kExitBadInput = 2;
+
+// One JSON document on one line (or indented by 2 when pretty), invalid UTF-8 replaced.
+inline void print_json(std::ostream& out, const nlohmann::json& j, bool pretty) {
+    out << j.dump(pretty ? 2 : -1, ' ', false, nlohmann::json::error_handler_t::replace) << '\n';
+}
 
 enum class Integrator { Exact, Fixed };
 

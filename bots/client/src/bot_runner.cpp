@@ -1,6 +1,7 @@
 #include "carrom/bots/bot_runner.hpp"
 
 #include "carrom/bots/match_view.hpp"
+#include "carrom/overloaded.hpp"
 #include "carrom/rules/seat.hpp"
 
 #include <algorithm>
@@ -9,9 +10,6 @@
 namespace carrom::bots {
 
 namespace {
-
-template <class... F> struct Overloaded : F... { using F::operator()...; };
-template <class... F> Overloaded(F...) -> Overloaded<F...>;
 
 bool is_game_input_error(const std::string& code) {
     return code == proto::code::kIllegalPlacement || code == proto::code::kIllegalShot ||

@@ -24,7 +24,7 @@ int& score(Stroke& s) {
     return s.state.scores[static_cast<std::size_t>(s.team)];
 }
 
-void apply_queen(Stroke& s, bool coin_in) {
+void apply_freestyle_queen(Stroke& s, bool coin_in) {
     const bool queen_in = contains(s.in, kQueenId);
     if (!queen_in && !s.cover_stroke) {
         return;
@@ -41,7 +41,7 @@ void apply_queen(Stroke& s, bool coin_in) {
     }
 }
 
-void check_game_end(Stroke& s) {
+void check_freestyle_game_end(Stroke& s) {
     MatchState& st = s.state;
     if (score(s) >= st.config.freestyle.target) {
         end_board(s, s.team, 0, RuleCode::TargetPoints);
@@ -73,8 +73,8 @@ bool judge_freestyle(Stroke& s) {
         add_foul(s, RuleCode::StrikerPocketed);
         score(s) -= s.state.config.freestyle.striker_penalty;
     }
-    apply_queen(s, coin_in);
-    check_game_end(s);
+    apply_freestyle_queen(s, coin_in);
+    check_freestyle_game_end(s);
     return !s.foul && (coin_in || s.state.queen.status == QueenStatus::PendingCover);
 }
 

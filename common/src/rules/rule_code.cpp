@@ -6,7 +6,7 @@
 namespace carrom::rules {
 namespace {
 
-constexpr std::array<std::pair<RuleCode, std::string_view>, 16> kNames{{
+constexpr std::array<std::pair<RuleCode, std::string_view>, 16> kRuleCodeNames{{
     {RuleCode::StrikerPocketed, "striker_pocketed"},
     {RuleCode::QueenBeforeOwnCoin, "queen_before_own_coin"},
     {RuleCode::QueenNotCovered, "queen_not_covered"},
@@ -28,7 +28,7 @@ constexpr std::array<std::pair<RuleCode, std::string_view>, 16> kNames{{
 } // namespace
 
 std::string_view to_string(RuleCode code) {
-    for (const auto& [value, name] : kNames) {
+    for (const auto& [value, name] : kRuleCodeNames) {
         if (value == code) {
             return name;
         }
@@ -37,7 +37,7 @@ std::string_view to_string(RuleCode code) {
 }
 
 bool parse_rule_code(std::string_view text, RuleCode& out) {
-    for (const auto& [value, name] : kNames) {
+    for (const auto& [value, name] : kRuleCodeNames) {
         if (name == text) {
             out = value;
             return true;

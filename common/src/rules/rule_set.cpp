@@ -6,7 +6,7 @@
 namespace carrom::rules {
 namespace {
 
-constexpr std::array<std::pair<RuleSet, std::string_view>, 4> kNames{{
+constexpr std::array<std::pair<RuleSet, std::string_view>, 4> kRuleSetNames{{
     {RuleSet::Icf, "icf"},
     {RuleSet::Seed, "seed"},
     {RuleSet::Freestyle, "freestyle"},
@@ -16,7 +16,7 @@ constexpr std::array<std::pair<RuleSet, std::string_view>, 4> kNames{{
 } // namespace
 
 std::string_view to_string(RuleSet rule_set) {
-    for (const auto& [value, name] : kNames) {
+    for (const auto& [value, name] : kRuleSetNames) {
         if (value == rule_set) {
             return name;
         }
@@ -25,7 +25,7 @@ std::string_view to_string(RuleSet rule_set) {
 }
 
 bool parse_rule_set(std::string_view text, RuleSet& out) {
-    for (const auto& [value, name] : kNames) {
+    for (const auto& [value, name] : kRuleSetNames) {
         if (name == text) {
             out = value;
             return true;

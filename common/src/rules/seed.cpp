@@ -44,7 +44,7 @@ void cover_with_bonus(Stroke& s) {
 // an own coin in the same or that next stroke (the seed's code only allowed the same one). The
 // seed checks the cover on the stroke's pocketed list even on a foul; we keep that, but a foul
 // passes the turn, so an uncovered queen comes back at once.
-void apply_queen(Stroke& s, bool own_in) {
+void apply_seed_queen(Stroke& s, bool own_in) {
     const bool queen_in = contains(s.in, kQueenId);
     if (!queen_in && !s.cover_stroke) {
         return;
@@ -58,7 +58,7 @@ void apply_queen(Stroke& s, bool own_in) {
     }
 }
 
-void check_game_end(Stroke& s) {
+void check_seed_game_end(Stroke& s) {
     MatchState& st = s.state;
     const bool black_cleared = count_on_board(st, BodyKind::Black) == 0;
     const bool white_cleared = count_on_board(st, BodyKind::White) == 0;
@@ -87,8 +87,8 @@ bool judge_seed(Stroke& s) {
         add_foul(s, RuleCode::StrikerPocketed);
         return_last_own_coin(s, own);
     }
-    apply_queen(s, own_in);
-    check_game_end(s);
+    apply_seed_queen(s, own_in);
+    check_seed_game_end(s);
     return !s.foul && (own_in || s.state.queen.status == QueenStatus::PendingCover);
 }
 

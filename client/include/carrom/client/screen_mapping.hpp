@@ -16,6 +16,7 @@ struct Rect {
     double w = 0.0;
     double h = 0.0;
     bool contains(Vec2 p) const { return p.x >= x && p.x < x + w && p.y >= y && p.y < y + h; }
+    bool operator==(const Rect&) const = default; // exactly the same place and size
 };
 
 struct ScreenLayout {
