@@ -67,6 +67,10 @@ TEST(BotCli, TwoBotProcessesPlayAMatch) {
     EXPECT_EQ(a["strategy"], "sampling");
     EXPECT_EQ(b["strategy"], "random");
     EXPECT_NE(a["result"], b["result"]);
+    // A game to 30 points of freestyle's 320 ends when a side reaches them; the summary names
+    // that end as the journal and the Match API do.
+    EXPECT_EQ(a["reason"], "target_points");
+    EXPECT_EQ(b["reason"], "target_points");
 }
 
 TEST(BotCli, TraceHasEveryShotSentAndTheSnapshotsThatFollowIt) {
