@@ -19,6 +19,18 @@ std::vector<std::string> rule_set_names() {
     return names;
 }
 
+// --join or --spectate: a room code that also says which of the two the program asks for.
+CLI::Option* add_code_option(CLI::App& app, const std::string& name, RoomRequestFlags::Kind kind,
+                             RoomRequestFlags& flags, const std::string& description) {
+    return app.add_option_function<std::string>(
+        name,
+        [&flags, kind](const std::string& code) {
+            flags.kind = kind;
+            flags.code = code;
+        },
+        description);
+}
+
 } // namespace
 
 RoomRequestOptions add_room_request_flags(CLI::App& app, RoomRequestFlags& flags) {
@@ -26,20 +38,10 @@ RoomRequestOptions add_room_request_flags(CLI::App& app, RoomRequestFlags& flags
     RoomRequestOptions o;
     o.create = app.add_flag_callback(
         "--create", [&flags] { flags.kind = Kind::Create; }, "Create a private room (seat 0)");
-    o.join = app.add_option_function<std::string>(
-        "--join",
-        [&flags](const std::string& code) {
-            flags.kind = Kind::Join;
-            flags.code = code;
-        },
-        "Join the room with this code as a player");
-    o.spectate = app.add_option_function<std::string>(
-        "--spectate",
-        [&flags](const std::string& code) {
-            flags.kind = Kind::Spectate;
-            flags.code = code;
-        },
-        "Watch the room with this code");
+    o.join = add_code_option(app, "--join", Kind::Join, flags,
+                             "Join the room with this code as a player");
+    o.spectate =
+        add_code_option(app, "--spectate", Kind::Spectate, flags, "Watch the room with this code");
     o.quick = app.add_flag_callback(
         "--quick", [&flags] { flags.kind = Kind::Quick; },
         "Quick match: play the next waiting player");
