@@ -144,6 +144,14 @@ TEST(BotCli, UnwritableTraceIsRefusedWithExitTwo) {
         << ran.out;
 }
 
+TEST(BotCli, ARoomCodeOutsideTheAlphabetIsRefusedWithExitTwo) {
+    const CommandRun ran =
+        run_command(std::string(CARROM_BOT_PATH) + " --url ws://127.0.0.1:1 --join abc123 2>&1");
+    EXPECT_EQ(ran.exit, 2);
+    EXPECT_EQ(ran.out, "carrom-bot: a room code is 6 characters from "
+                       "ABCDEFGHJKMNPQRSTUVWXYZ23456789 (got \"abc123\")\n");
+}
+
 TEST(BotCli, UnreachableServerSaysSoAndExitsWithOne) {
     std::string url;
     {
