@@ -13,6 +13,8 @@ endif()
 set(web_dir ${CMAKE_CURRENT_SOURCE_DIR}/web)
 add_test(NAME web.unit COMMAND ${CARROM_NODE} ${web_dir}/unit_test.mjs)
 set_tests_properties(web.unit PROPERTIES TIMEOUT 60 LABELS web)
+add_test(NAME web.golden COMMAND ${CARROM_NODE} ${web_dir}/golden_test.mjs)
+set_tests_properties(web.golden PROPERTIES TIMEOUT 60 LABELS web)
 add_test(NAME web.doubles_unit COMMAND ${CARROM_NODE} ${web_dir}/doubles_test.mjs)
 set_tests_properties(web.doubles_unit PROPERTIES TIMEOUT 60 LABELS web)
 

@@ -1,0 +1,119 @@
+#include "carrom/golden/model_cases.hpp"
+
+#include "carrom/proto/codec.hpp"
+#include "carrom/rules/seat.hpp"
+
+#include <string>
+
+namespace carrom::golden {
+namespace {
+
+std::string tone_name(client::Tone tone) {
+    switch (tone) {
+    case client::Tone::Good:
+        return "good";
+    case client::Tone::Foul:
+        return "foul";
+    case client::Tone::Error:
+        return "error";
+    case client::Tone::Info:
+        break;
+    }
+    return "info";
+}
+
+std::string sound_name(client::SoundKind kind) {
+    switch (kind) {
+    case client::SoundKind::Cushion:
+        return "cushion";
+    case client::SoundKind::Pocket:
+        return "pocket";
+    case client::SoundKind::Click:
+        break;
+    }
+    return "click";
+}
+
+} // namespace
+
+nlohmann::json view_json(const client::MatchModel& model) {
+    const client::MatchView& v = model.view();
+    if (!v.in_room) {
+        return {{"in_room", false}}; // the rest is the defaults of each client's own
+    }
+    nlohmann::json seats = nlohmann::json::array();
+    for (const client::SeatView& s : v.seats) {
+        seats.push_back({{"occupied", s.occupied},
+                         {"name", s.name},
+                         {"connected", s.connected},
+                         {"bot", s.bot},
+                         {"colour", proto::to_string(s.colour)},
+                         {"side", rules::to_string(s.side)},
+                         {"score", s.score},
+                         {"dues", s.dues}});
+    }
+    nlohmann::json result = nullptr;
+    if (v.result) {
+        result = {{"winner", v.result->winner}, {"reason", v.result->reason}};
+    }
+    return {{"in_room", v.in_room},
+            {"code", v.code},
+            {"you", v.you},
+            {"rule_set", proto::to_string(v.rule_set)},
+            {"options",
+             {{"target_points", v.options.target_points},
+              {"boards", v.options.boards},
+              {"shot_clock_s", v.options.shot_clock_s}}},
+            {"seats", seats},
+            {"spectators", v.spectators},
+            {"board_number", v.board_number},
+            {"turn", v.turn},
+            {"to_play", v.to_play},
+            {"phase", proto::to_string(v.phase)},
+            {"queen", {{"state", proto::to_string(v.queen.state)}, {"seat", v.queen.seat}}},
+            {"winner", v.winner},
+            {"deadline_ms", v.deadline_ms ? nlohmann::json(*v.deadline_ms) : nullptr},
+            {"aim_x", v.aim_x_px ? nlohmann::json(rounded(*v.aim_x_px)) : nullptr},
+            {"result", result}};
+}
+
+nlohmann::json model_steps(const std::vector<StreamLine>& stream) {
+    client::MatchModel model(PhysicsConfig{});
+    nlohmann::json steps = nlohmann::json::array();
+    nlohmann::json last_view;
+    for (const StreamLine& line : stream) {
+        nlohmann::json step = nlohmann::json::object();
+        const auto decoded = proto::decode_server(line.text);
+        if (decoded.ok()) {
+            model.handle(*decoded.message, line.at_s);
+        } else {
+            step["refused"] = decoded.error.code;
+        }
+        nlohmann::json view = view_json(model);
+        if (view != last_view) {
+            step["view"] = view;
+            last_view = std::move(view);
+        }
+        nlohmann::json log = nlohmann::json::array();
+        for (const client::HudLine& l : model.log().all()) {
+            log.push_back({l.text, tone_name(l.tone)});
+        }
+        model.log() = client::HudLog(); // the next step shows only its own lines
+        if (!log.empty()) {
+            step["log"] = log;
+        }
+        model.render(line.at_s);
+        step["render_s"] = rounded(model.rendered_time_s());
+        nlohmann::json sounds = nlohmann::json::array();
+        for (const client::SoundCue& c : model.take_sounds()) {
+            sounds.push_back({sound_name(c.kind), rounded(c.time_s), rounded(c.volume)});
+        }
+        if (!sounds.empty()) {
+            step["sounds"] = sounds;
+        }
+        steps.push_back(std::move(step));
+    }
+    return steps;
+}
+
+} // namespace carrom::golden
