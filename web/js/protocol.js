@@ -3,15 +3,18 @@
 // decoder checks the fields this client reads, so a malformed frame is reported and ignored
 // instead of breaking the page.
 
-export const PROTOCOL_VERSION = 1;
-export const MAX_NAME_BYTES = 24;
-export const ROOM_CODE_LENGTH = 6;
-export const ROOM_CODE_ALPHABET = 'ABCDEFGHJKMNPQRSTUVWXYZ23456789';
+import { PHYSICS, PROTOCOL } from './physics_config.js';
+
+// The server's own values (physics_config.js, generated from proto/version.hpp and limits.hpp).
+export const PROTOCOL_VERSION = PROTOCOL.version;
+export const MAX_NAME_BYTES = PROTOCOL.maxNameBytes;
+export const ROOM_CODE_LENGTH = PROTOCOL.roomCodeLength;
+export const ROOM_CODE_ALPHABET = PROTOCOL.roomCodeAlphabet;
 export const RULE_SETS = ['icf', 'seed', 'freestyle', 'discpool'];
 export const BOT_LEVELS = ['random', 'easy', 'medium', 'hard'];
 export const SEAT_COUNTS = [2, 4]; // singles, doubles
 export const BASELINES = ['bottom', 'right', 'top', 'left']; // seat order 0..3 in doubles
-export const MAX_SERVER_MESSAGE_BYTES = 262144;
+export const MAX_SERVER_MESSAGE_BYTES = PROTOCOL.maxServerMessageBytes;
 
 const utf8 = new TextEncoder();
 
@@ -143,7 +146,7 @@ function oneOf(o, k, values) {
 // room_state's motion when the server sends none (an older server): the default k
 // (common/include/carrom/config.hpp) and only the regular snapshots.
 export const DEFAULT_MOTION = Object.freeze({
-  damping_per_s: 60 * Math.log(1 / 0.985), contact_snapshots: false,
+  damping_per_s: PHYSICS.dampingPerS, contact_snapshots: false,
 });
 
 const KINDS = ['black', 'white', 'queen', 'striker'];
