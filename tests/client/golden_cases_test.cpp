@@ -53,7 +53,7 @@ TEST(GoldenJson, FirstDifferenceNamesWhereNumbersOrTextDiffer) {
 
 TEST(GoldenCases, ModelStreamsGiveTheRecordedStates) {
     const std::vector<fs::path> files = cases_in("model");
-    ASSERT_EQ(files.size(), 2u); // doubles.json, singles.json
+    ASSERT_EQ(files.size(), 3u); // cues.json, doubles.json, singles.json
     for (const fs::path& file : files) {
         const nlohmann::json c = read_case(file);
         const auto stream =

@@ -71,6 +71,14 @@ int generate(const fs::path& dir) {
         if (std::string(name) != "singles") {
             continue;
         }
+        const std::vector<StreamLine> cues = cue_stream(stream);
+        ok = write_text((dir / "model" / "cues.stream.jsonl").string(), format_stream(cues)) &&
+             write_case(dir / "model" / "cues.json",
+                        {{"about", "The match model's sound cues at their limits: the first "
+                                   "shot of singles.stream.jsonl with 600 events of its own"},
+                         {"stream", "cues.stream.jsonl"},
+                         {"expected", model_steps(cues)}}) &&
+             ok;
         for (const bool every_change : {true, false}) {
             const nlohmann::json input = interpolation_input(stream, 2, every_change);
             ok = write_case(dir / "interpolation" /

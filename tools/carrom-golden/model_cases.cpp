@@ -116,4 +116,37 @@ nlohmann::json model_steps(const std::vector<StreamLine>& stream) {
     return steps;
 }
 
+std::vector<StreamLine> cue_stream(const std::vector<StreamLine>& recorded) {
+    std::vector<StreamLine> out;
+    int turn = -1;
+    for (const StreamLine& line : recorded) {
+        out.push_back(line);
+        const auto decoded = proto::decode_server(line.text);
+        const auto* s = decoded.ok() ? std::get_if<proto::Snapshot>(&*decoded.message) : nullptr;
+        if (s != nullptr && !s->keyframe) {
+            turn = s->turn;
+            break;
+        }
+    }
+    if (turn < 0) {
+        return out;
+    }
+    const double at = out.back().at_s;
+    for (int k = 0; k < 200; ++k) {
+        const double t = 0.1 + 0.006 * k;
+        const double impulse = 50.0 + 7.0 * (k % 13);
+        out.push_back(
+            {at, proto::encode(proto::Event{proto::CollisionEvent{turn, t, 1, 2, impulse}})});
+        out.push_back(
+            {at, proto::encode(proto::Event{proto::CollisionEvent{turn, t, 3, 4, impulse * 1.5}})});
+        out.push_back({at, proto::encode(proto::Event{
+                               proto::CushionEvent{turn, t + 0.003, 5, k % 4, impulse * 2.0}})});
+    }
+    std::int64_t nonce = 1;
+    for (const double later : {0.05, 0.2, 0.35, 0.5, 0.8, 1.0, 1.5, 2.0}) {
+        out.push_back({at + later, proto::encode(proto::Pong{nonce++, 0})});
+    }
+    return out;
+}
+
 } // namespace carrom::golden

@@ -20,4 +20,11 @@ nlohmann::json view_json(const client::MatchModel& model);
 // [[text, tone]], "sounds" [[kind, time_s, volume]]}.
 nlohmann::json model_steps(const std::vector<StreamLine>& stream);
 
+// A stream for the sound cues' limits, made from a recorded one: its lines up to the first
+// delta of the first shot, then 600 audible events of that shot arriving at once (pairs of
+// clicks at one instant with a cushion 3 ms later, every 6 ms of the shot: more than the 512
+// cues kept), then pongs later and later, each a render that takes the cues due by then (those
+// over 0.25 s late are dropped).
+std::vector<StreamLine> cue_stream(const std::vector<StreamLine>& recorded);
+
 } // namespace carrom::golden
