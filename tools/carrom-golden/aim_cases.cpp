@@ -17,18 +17,10 @@ namespace {
 using client::AimController;
 using client::BodyState;
 
+// The web client's names, by AimPhase's order (Inactive, Idle, Sliding, Pulling).
 std::string phase_name(client::AimPhase phase) {
-    switch (phase) {
-    case client::AimPhase::Idle:
-        return "idle";
-    case client::AimPhase::Sliding:
-        return "sliding";
-    case client::AimPhase::Pulling:
-        return "pulling";
-    case client::AimPhase::Inactive:
-        break;
-    }
-    return "inactive";
+    static constexpr const char* kNames[] = {"inactive", "idle", "sliding", "pulling"};
+    return kNames[static_cast<std::size_t>(phase)];
 }
 
 client::ScreenMapping mapping_from(const nlohmann::json& v) {

@@ -71,7 +71,8 @@ int generate(const fs::path& dir) {
         if (std::string(name) != "singles") {
             continue;
         }
-        const std::vector<StreamLine> cues = cue_stream(stream);
+        // As the replays read it back (times to six decimals).
+        const std::vector<StreamLine> cues = parse_stream(format_stream(cue_stream(stream)));
         ok = write_text((dir / "model" / "cues.stream.jsonl").string(), format_stream(cues)) &&
              write_case(dir / "model" / "cues.json",
                         {{"about", "The match model's sound cues at their limits: the first "

@@ -8,30 +8,16 @@
 namespace carrom::golden {
 namespace {
 
+// The web client's names, by the enums' order (Tone: Info, Good, Foul, Error; SoundKind: Click,
+// Cushion, Pocket).
 std::string tone_name(client::Tone tone) {
-    switch (tone) {
-    case client::Tone::Good:
-        return "good";
-    case client::Tone::Foul:
-        return "foul";
-    case client::Tone::Error:
-        return "error";
-    case client::Tone::Info:
-        break;
-    }
-    return "info";
+    static constexpr const char* kNames[] = {"info", "good", "foul", "error"};
+    return kNames[static_cast<std::size_t>(tone)];
 }
 
 std::string sound_name(client::SoundKind kind) {
-    switch (kind) {
-    case client::SoundKind::Cushion:
-        return "cushion";
-    case client::SoundKind::Pocket:
-        return "pocket";
-    case client::SoundKind::Click:
-        break;
-    }
-    return "click";
+    static constexpr const char* kNames[] = {"click", "cushion", "pocket"};
+    return kNames[static_cast<std::size_t>(kind)];
 }
 
 } // namespace
