@@ -279,7 +279,12 @@ test('the server\'s due per seat of a team makes one line per stroke', () => {
   m.handle({ type: 'event', kind: 'due', seat: 3, owed: 1 }, 11);
   assert.deepEqual(lines(), ['Ravi & Dev owe 1 due']);
   m.handle({ type: 'event', kind: 'due', seat: 1, owed: 2 }, 11); // another count: a line
-  m.handle({ type: 'event', kind: 'turn', turn: 8, seat: 2, server_time_ms: 1000 }, 12);
+  m.handle({
+    type: 'shot_result', turn: 7, seat: 1, x: 300, angle: 0, power: 5, pocketed: [], returned: [],
+    fouls: [], points: [0, 0, 0, 0], scores: [0, 0, 0, 0], dues: [0, 2, 0, 2],
+    queen: { state: 'on_board', seat: -1 }, extra_turn: false, next_turn: 8, next_seat: 2,
+    board_over: false, game_over: false, winner: -1,
+  }, 12);
   m.handle({ type: 'event', kind: 'due', seat: 3, owed: 2 }, 12); // another stroke: a line
   m.handle({ type: 'event', kind: 'due', seat: 0, owed: 2 }, 12); // the other team: a line
   assert.deepEqual(lines(), ['Ravi & Dev owe 1 due', 'Ravi & Dev owe 2 dues', 'Ravi & Dev owe 2 dues',
