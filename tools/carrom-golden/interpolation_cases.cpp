@@ -31,7 +31,7 @@ nlohmann::json body_json(int id, BodyKind kind, Vec2 pos, Vec2 vel, bool pockete
     return {id, to_string(kind), pos.x, pos.y, vel.x, vel.y, pocketed};
 }
 
-// A turn's snapshots as the stream has them, with the turn they belong to.
+// One turn's snapshots as the stream has them, with their arrival times (s).
 struct TurnSnapshots {
     std::vector<proto::Snapshot> snapshots;
     std::vector<double> arrivals_s;

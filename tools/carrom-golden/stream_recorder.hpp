@@ -1,9 +1,9 @@
 #pragma once
 // carrom-golden record: a real match as one of its players receives it. A bot of this process
-// (bots::BotRunner) creates a room on a running carrom-server with the
-// server's bots in every other seat, plays one game, and every message it receives is kept with
-// its arrival time. The text kept is the decoded message encoded again with proto::encode, the
-// server's own encoder, so it is the server's text in the server's field order.
+// (bots::BotRunner) creates a room on a running carrom-server with the server's bots in every
+// other seat, plays one game, and every message it receives is kept with its arrival time. The text
+// kept is the decoded message encoded again with proto::encode, the server's own encoder, so it is
+// the server's text in the server's field order.
 
 #include "carrom/golden/golden_json.hpp"
 
@@ -20,8 +20,9 @@ struct RecordOptions {
     double timeout_s = 600.0;
     std::uint64_t seed = 1;     // the recording bot's random choices
     std::string level = "hard"; // the server's bots: easy, medium or hard
-    // The recording bot's: "fouls" (a break, then the striker into the nearest pocket, again and
-    // again: every second shot is a foul that adds a due), "random" or "greedy".
+    // The recording bot's: "fouls" (a soft break, then the striker into the nearest pocket, again
+    // and again: every second shot a foul, which costs a due while the team has no coin to give
+    // back), "random" or "greedy".
     std::string strategy = "fouls";
 };
 
