@@ -116,7 +116,7 @@ export class Lobby {
   submit(action) {
     const name = this.name.value.trim();
     if (!isPlayerName(name)) {
-      this.setError('Enter a name first (1 to 24 bytes, no control characters).');
+      this.setError(`Enter a name first (1 to ${PROTOCOL.maxNameBytes} bytes, no control characters).`);
       this.name.focus();
       return;
     }

@@ -18,7 +18,8 @@ export const MAX_SERVER_MESSAGE_BYTES = PROTOCOL.maxServerMessageBytes;
 
 const utf8 = new TextEncoder();
 
-// A name the server accepts: 1-24 UTF-8 bytes, no control characters, a visible character.
+// A name the server accepts: 1 to MAX_NAME_BYTES UTF-8 bytes, no control characters, a visible
+// character.
 export function isPlayerName(name) {
   if (typeof name !== 'string') return false;
   const bytes = utf8.encode(name);
@@ -31,7 +32,7 @@ export function isPlayerName(name) {
   return visible;
 }
 
-// Cuts a name to at most 24 UTF-8 bytes without splitting a character.
+// Cuts a name to at most MAX_NAME_BYTES UTF-8 bytes without splitting a character.
 export function clipName(name) {
   let out = '';
   for (const ch of String(name).replace(/[\u0000-\u001f\u007f]/g, '')) {
