@@ -309,7 +309,8 @@ if in_container "$probe" /usr/local/bin/carrom-server --help 2> /dev/null | grep
     say "the match store /var/lib/carrom/carrom.db is written by uid 10001"
 fi
 
-# SIGTERM with a client connected: it is told (error shutting_down, close 1001) and the server
+# SIGTERM with a client connected: it is told (error shutting_down, close 1012 "restarting", as
+# docs/protocol.md says) and the server
 # exits with status 0 within the shutdown grace.
 "$python" "$helper" watch 127.0.0.1 "$port" $((shutdown_grace + 10)) > "$work/watch.json" 2> "$work/watch.err" &
 watch_pid=$!
@@ -331,8 +332,8 @@ wait "$server_run" || status=$?
 wait "$watch_pid" || fail "the WebSocket client failed: $(cat "$work/watch.err")"
 grep -q 'shutting_down' "$work/watch.json" ||
     fail "the connected client was not told the server is shutting down: $(cat "$work/watch.json")"
-grep -q '"close_code": 1001' "$work/watch.json" ||
-    fail "the connected client's connection was not closed with 1001: $(cat "$work/watch.json")"
+grep -q '"close_code": 1012, "close_reason": "restarting"' "$work/watch.json" ||
+    fail "the connected client's connection was not closed with 1012 restarting: $(cat "$work/watch.json")"
 say "SIGTERM: stopped in $stop_ms ms (grace ${shutdown_grace} s), status 0, the client was told"
 mapfile -t command < <(json_words "$image_health")
 if timeout 30 buildah run --isolation=chroot --network host "$probe" -- "${command[@]}" 2> /dev/null; then
