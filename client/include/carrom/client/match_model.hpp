@@ -1,12 +1,13 @@
 #pragma once
 // Everything the client knows about its match, built only from server messages: the HUD's view
-// (seats, scores, turn, shot clock, queen and dues), the board to draw (through the playout clock
-// and the interpolation buffer), sound cues and short messages for the player.
+// (match_view.hpp: seats, scores, turn, shot clock, queen and dues), the board to draw (through
+// the playout clock and the interpolation buffer), sound cues (sound_cue_schedule.hpp) and short
+// messages for the player; and the glue to the own stroke's prediction (shot_prediction.hpp).
 //
 // Snapshot and event times are seconds since the start of their shot (proto), so each shot's
-// times are placed on one continuous timeline: the first snapshot of a turn starts where the
-// local clock (less the base network transit) is when it arrives. Physics events for a turn
-// whose first snapshot has not arrived yet wait for it.
+// times are placed on one continuous timeline (shot_timeline.hpp): the first snapshot of a turn
+// starts where the local clock (less the base network transit) is when it arrives. Physics
+// events for a turn whose first snapshot has not arrived yet wait for it.
 
 #include "carrom/client/coins_left.hpp"
 #include "carrom/client/hud_log.hpp"
