@@ -123,8 +123,8 @@ TEST(LoadMessageHead, RefusesMalformedTextWithAnError) {
         {server_text + " x", proto::code::kMalformedJson,
          "The message is not valid JSON (error at byte " + std::to_string(server_text.size() + 2) +
              ")."},
-        {std::string("{\"type\":\"pong\"}\0{", 17), proto::code::kMalformedJson,
-         "The message is not valid JSON (a NUL byte at byte 15)."},
+        {std::string("{\"type\":\"event\"}\0{", 18), proto::code::kMalformedJson,
+         "The message is not valid JSON (error at byte 17)."},
         {"{}", proto::code::kMissingType, "A message must have a string field 'type'."},
         {"[1,2]", proto::code::kNotObject, "A message must be a JSON object."},
         {"\"snapshot\"", proto::code::kNotObject, "A message must be a JSON object."},
