@@ -106,6 +106,24 @@ TEST(LoadMessageHead, ReadsTheTypeOfOtherMessagesAndTheKindOfEvents) {
     }
 }
 
+TEST(LoadMessageHead, ReadsEscapedNamesAndPassesOverEveryKindOfValue) {
+    const auto read = read_message_head(
+        R"({"\u0074ype":"snap\u0073hot","k\u0065yframe":false,"t":-1.5E+2,"due_ms":-7,)"
+        R"("s":"\"\\\/\b\f\n\r\t\ud83c\udfaf \u00e9 Ã© ð¯","n":[null,true,)"
+        R"(false,0,-0.0e-0,{},[],{"a":[{}]}]})");
+    ASSERT_TRUE(read.ok()) << read.error.message;
+    EXPECT_EQ(*read.message, delta_head(-150.0, -7));
+}
+
+TEST(LoadMessageHead, PassesOverValuesNestedUpTo64Deep) {
+    // The message's object is the first level, so 63 arrays make 64.
+    const std::string deepest =
+        R"({"type":"event","x":)" + std::string(63, '[') + std::string(63, ']') + R"(,"kind":"k"})";
+    const auto read = read_message_head(deepest);
+    ASSERT_TRUE(read.ok()) << read.error.message;
+    EXPECT_EQ(*read.message, (MessageHead{"event", "k", {}}));
+}
+
 struct Refusal {
     std::string text;
     std::string_view code;
@@ -125,6 +143,30 @@ TEST(LoadMessageHead, RefusesMalformedTextWithAnError) {
              ")."},
         {std::string("{\"type\":\"event\"}\0{", 18), proto::code::kMalformedJson,
          "The message is not valid JSON (error at byte 17)."},
+        {R"({"type":"event","x":01})", proto::code::kMalformedJson,
+         "The message is not valid JSON (error at byte 22)."},
+        {R"({"type":"event","x":1.})", proto::code::kMalformedJson,
+         "The message is not valid JSON (error at byte 23)."},
+        {R"({"type":"event","x":-})", proto::code::kMalformedJson,
+         "The message is not valid JSON (error at byte 22)."},
+        {R"({"type":"event","x":tru})", proto::code::kMalformedJson,
+         "The message is not valid JSON (error at byte 24)."},
+        {R"({"type":"event","x":"\x"})", proto::code::kMalformedJson,
+         "The message is not valid JSON (error at byte 23)."},
+        {R"({"type":"event","x":"\udc00"})", proto::code::kMalformedJson,
+         "The message is not valid JSON (error at byte 28)."},
+        {"{\"type\":\"event\",\"x\":\"\t\"}", proto::code::kMalformedJson,
+         "The message is not valid JSON (error at byte 22)."},
+        {"{\"type\":\"event\",\"x\":\"\xc3\x28\"}", proto::code::kMalformedJson,
+         "The message is not valid JSON (error at byte 23)."},
+        {R"({"type":"event","x":[1,]})", proto::code::kMalformedJson,
+         "The message is not valid JSON (error at byte 24)."},
+        {R"({"type":"event","x":{"a"}})", proto::code::kMalformedJson,
+         "The message is not valid JSON (error at byte 25)."},
+        {R"({"type":"event",})", proto::code::kMalformedJson,
+         "The message is not valid JSON (error at byte 17)."},
+        {R"({"type":"event","x":)" + std::string(65, '[') + std::string(65, ']') + "}",
+         proto::code::kMalformedJson, "The message is not valid JSON (error at byte 84)."},
         {"{}", proto::code::kMissingType, "A message must have a string field 'type'."},
         {"[1,2]", proto::code::kNotObject, "A message must be a JSON object."},
         {"\"snapshot\"", proto::code::kNotObject, "A message must be a JSON object."},
