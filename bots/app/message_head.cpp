@@ -1,5 +1,7 @@
 #include "message_head.hpp"
 
+#include <algorithm>
+#include <cctype>
 #include <charconv>
 
 namespace carrom::load {
@@ -14,17 +16,13 @@ bool is_digit(char c) {
     return c >= '0' && c <= '9';
 }
 
-int hex_value(char c) {
-    if (is_digit(c)) {
-        return c - '0';
-    }
-    if (c >= 'a' && c <= 'f') {
-        return c - 'a' + 10;
-    }
-    if (c >= 'A' && c <= 'F') {
-        return c - 'A' + 10;
-    }
-    return -1;
+// The UTF-16 unit of four hexadecimal digits (either case) at `at`; -1 unless all four are.
+int hex4_at(std::string_view text, std::size_t at) {
+    unsigned unit = 0;
+    const char* first = text.data() + std::min(at, text.size());
+    const char* last = text.data() + std::min(at + 4, text.size());
+    const auto [ptr, ec] = std::from_chars(first, last, unit, 16);
+    return ec == std::errc{} && ptr == first + 4 ? static_cast<int>(unit) : -1;
 }
 
 void append_utf8(std::string& out, std::uint32_t code_point) {
@@ -374,13 +372,14 @@ private:
             return fail();
         }
         ++pos_;
-        for (int i = 0; i < 4; ++i, ++pos_) {
-            const int digit = at_end() ? -1 : hex_value(text_[pos_]);
-            if (digit < 0) {
-                return fail();
+        unit = hex4_at(text_, pos_);
+        if (unit < 0) {
+            while (!at_end() && std::isxdigit(static_cast<unsigned char>(text_[pos_]))) {
+                ++pos_; // the error names the first byte that is not a digit
             }
-            unit = unit * 16 + digit;
+            return fail();
         }
+        pos_ += 4;
         return true;
     }
 
@@ -399,17 +398,11 @@ private:
                 out += to[from.find(e)];
                 continue;
             }
-            const auto unit_at = [&](std::size_t at) {
-                std::uint32_t unit = 0;
-                for (std::size_t k = at; k < at + 4; ++k) {
-                    unit = unit * 16 + static_cast<std::uint32_t>(hex_value(raw[k]));
-                }
-                return unit;
-            };
-            std::uint32_t code_point = unit_at(i + 1);
+            auto code_point = static_cast<std::uint32_t>(hex4_at(raw, i + 1));
             i += 4;
             if (code_point >= 0xD800 && code_point <= 0xDBFF) {
-                code_point = 0x10000 + ((code_point - 0xD800) << 10) + (unit_at(i + 3) - 0xDC00);
+                const auto low = static_cast<std::uint32_t>(hex4_at(raw, i + 3));
+                code_point = 0x10000 + ((code_point - 0xD800) << 10) + (low - 0xDC00);
                 i += 6;
             }
             append_utf8(out, code_point);
