@@ -26,7 +26,9 @@ struct LoadCounts {
     std::int64_t messages = 0; // received, every kind
     std::int64_t bytes = 0;    // received payload bytes
     std::int64_t snapshots = 0;
-    std::int64_t malformed = 0;        // received messages that did not decode (not counted below)
+    // Received messages whose head (message_head.hpp) or, for those a player acts on, whole
+    // text did not decode.
+    std::int64_t malformed = 0;
     std::int64_t shots = 0;            // shot_result received by the shooter
     std::int64_t errors = 0;           // error messages received
     std::int64_t failures = 0;         // connections that broke or never opened

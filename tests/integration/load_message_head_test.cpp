@@ -130,43 +130,33 @@ struct Refusal {
     std::string message;
 };
 
+// Text that breaks the JSON grammar at `byte` (1-based; the end of the text is its size + 1).
+Refusal malformed_at(std::string text, std::size_t byte) {
+    return {std::move(text), proto::code::kMalformedJson,
+            "The message is not valid JSON (error at byte " + std::to_string(byte) + ")."};
+}
+
 TEST(LoadMessageHead, RefusesMalformedTextWithAnError) {
     const std::string server_text = room::encode_snapshot(server_delta());
     const std::string truncated = server_text.substr(0, server_text.size() - 5);
     const Refusal refusals[] = {
-        {"", proto::code::kMalformedJson, "The message is not valid JSON (error at byte 1)."},
-        {truncated, proto::code::kMalformedJson,
-         "The message is not valid JSON (error at byte " + std::to_string(truncated.size() + 1) +
-             ")."},
-        {server_text + " x", proto::code::kMalformedJson,
-         "The message is not valid JSON (error at byte " + std::to_string(server_text.size() + 2) +
-             ")."},
-        {std::string("{\"type\":\"event\"}\0{", 18), proto::code::kMalformedJson,
-         "The message is not valid JSON (error at byte 17)."},
-        {R"({"type":"event","x":01})", proto::code::kMalformedJson,
-         "The message is not valid JSON (error at byte 22)."},
-        {R"({"type":"event","x":1.})", proto::code::kMalformedJson,
-         "The message is not valid JSON (error at byte 23)."},
-        {R"({"type":"event","x":-})", proto::code::kMalformedJson,
-         "The message is not valid JSON (error at byte 22)."},
-        {R"({"type":"event","x":tru})", proto::code::kMalformedJson,
-         "The message is not valid JSON (error at byte 24)."},
-        {R"({"type":"event","x":"\x"})", proto::code::kMalformedJson,
-         "The message is not valid JSON (error at byte 23)."},
-        {R"({"type":"event","x":"\udc00"})", proto::code::kMalformedJson,
-         "The message is not valid JSON (error at byte 28)."},
-        {"{\"type\":\"event\",\"x\":\"\t\"}", proto::code::kMalformedJson,
-         "The message is not valid JSON (error at byte 22)."},
-        {"{\"type\":\"event\",\"x\":\"\xc3\x28\"}", proto::code::kMalformedJson,
-         "The message is not valid JSON (error at byte 23)."},
-        {R"({"type":"event","x":[1,]})", proto::code::kMalformedJson,
-         "The message is not valid JSON (error at byte 24)."},
-        {R"({"type":"event","x":{"a"}})", proto::code::kMalformedJson,
-         "The message is not valid JSON (error at byte 25)."},
-        {R"({"type":"event",})", proto::code::kMalformedJson,
-         "The message is not valid JSON (error at byte 17)."},
-        {R"({"type":"event","x":)" + std::string(65, '[') + std::string(65, ']') + "}",
-         proto::code::kMalformedJson, "The message is not valid JSON (error at byte 84)."},
+        malformed_at("", 1),
+        malformed_at(truncated, truncated.size() + 1),
+        malformed_at(server_text + " x", server_text.size() + 2),
+        malformed_at(std::string("{\"type\":\"event\"}\0{", 18), 17),
+        malformed_at(R"({"type":"event","x":01})", 22),
+        malformed_at(R"({"type":"event","x":1.})", 23),
+        malformed_at(R"({"type":"event","x":-})", 22),
+        malformed_at(R"({"type":"event","x":tru})", 24),
+        malformed_at(R"({"type":"event","x":"\x"})", 23),
+        malformed_at(R"({"type":"event","x":"\udc00"})", 28),
+        malformed_at("{\"type\":\"event\",\"x\":\"\t\"}", 22),
+        malformed_at("{\"type\":\"event\",\"x\":\"\xc3\x28\"}", 23),
+        malformed_at(R"({"type":"event","x":[1,]})", 24),
+        malformed_at(R"({"type":"event","x":{"a"}})", 25),
+        malformed_at(R"({"type":"event",})", 17),
+        malformed_at(R"({"type":"event","x":)" + std::string(65, '[') + std::string(65, ']') + "}",
+                     84),
         {"{}", proto::code::kMissingType, "A message must have a string field 'type'."},
         {"[1,2]", proto::code::kNotObject, "A message must be a JSON object."},
         {"\"snapshot\"", proto::code::kNotObject, "A message must be a JSON object."},
