@@ -73,7 +73,7 @@ TEST(LoadMessageHead, ReadsADeltaWithoutDueMs) {
     EXPECT_EQ(*read.message, delta_head(0.73, std::nullopt));
 }
 
-TEST(LoadMessageHead, ReadsOfAKeyframeOnlyThatItIsOne) {
+TEST(LoadMessageHead, ReadsNothingOfAKeyframeButThatItIsOne) {
     proto::Snapshot keyframe = server_delta();
     keyframe.keyframe = true;
     keyframe.due_ms.reset();
@@ -124,14 +124,14 @@ TEST(LoadMessageHead, PassesOverValuesNestedUpTo64Deep) {
     EXPECT_EQ(*read.message, (MessageHead{"event", "k", {}}));
 }
 
-struct Refusal {
+struct HeadRefusal {
     std::string text;
     std::string_view code;
     std::string message;
 };
 
 // Text that breaks the JSON grammar at `byte` (1-based; the end of the text is its size + 1).
-Refusal malformed_at(std::string text, std::size_t byte) {
+HeadRefusal malformed_at(std::string text, std::size_t byte) {
     return {std::move(text), proto::code::kMalformedJson,
             "The message is not valid JSON (error at byte " + std::to_string(byte) + ")."};
 }
@@ -139,7 +139,7 @@ Refusal malformed_at(std::string text, std::size_t byte) {
 TEST(LoadMessageHead, RefusesMalformedTextWithAnError) {
     const std::string server_text = room::encode_snapshot(server_delta());
     const std::string truncated = server_text.substr(0, server_text.size() - 5);
-    const Refusal refusals[] = {
+    const HeadRefusal head_refusals[] = {
         malformed_at("", 1),
         malformed_at(truncated, truncated.size() + 1),
         malformed_at(server_text + " x", server_text.size() + 2),
@@ -179,7 +179,7 @@ TEST(LoadMessageHead, RefusesMalformedTextWithAnError) {
         {R"({"type":"snapshot","keyframe":false,"t":1,"due_ms":9223372036854775808})",
          proto::code::kBadField, "A delta's field 'due_ms' must be an integer."},
     };
-    for (const Refusal& refusal : refusals) {
+    for (const HeadRefusal& refusal : head_refusals) {
         const auto read = read_message_head(refusal.text);
         EXPECT_FALSE(read.ok()) << refusal.text;
         EXPECT_EQ(read.error.code, refusal.code) << refusal.text;
