@@ -6,7 +6,6 @@
 // end the run.
 
 #include "carrom/client/aim_controller.hpp"
-#include "carrom/client/client_session.hpp"
 #include "carrom/client/interpolation_buffer.hpp"
 #include "carrom/client/match_model.hpp"
 #include "carrom/client/screen_mapping.hpp"
