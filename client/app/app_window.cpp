@@ -255,23 +255,27 @@ std::optional<int> AppWindow::unattended_frame(int frame) {
         return std::nullopt;
     }
     const ScreenMapping m = mapping();
-    UnattendedFrame f{frame,
-                      window_,
-                      model_,
-                      session_,
-                      shots_seen_,
-                      room_,
-                      aim_,
-                      shot_sent_turn_ == model_.view().turn,
-                      m,
-                      physics_,
-                      bodies_,
-                      aim_striker_drawn_,
-                      hud_.overlay_area(),
-                      shown_,
-                      board_painter_.repaints(),
-                      hud_.bar_repaints(),
-                      unattended_input_};
+    const MatchView& v = model_.view();
+    const LiveTurn live{room_, aim_, shot_sent_turn_ == v.turn};
+    UnattendedFrame f{
+        frame,
+        window_,
+        model_,
+        &live,
+        v.in_room && v.phase == proto::Phase::GameOver && v.result && !model_.animating(),
+        [this] {
+            return session_.status_text() + ", " + std::to_string(shots_seen_) + " shots seen";
+        },
+        shots_seen_,
+        m,
+        physics_,
+        bodies_,
+        aim_striker_drawn_,
+        hud_.overlay_area(),
+        shown_,
+        board_painter_.repaints(),
+        hud_.bar_repaints(),
+        unattended_input_};
     unattended_->on_frame(f);
     return unattended_->done();
 }

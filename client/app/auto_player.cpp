@@ -29,15 +29,18 @@ AutoPlayer::AutoPlayer(proto::BotLevel level, std::uint64_t seed)
     : strategy_(bots::make_level_strategy(level, seed)) {}
 
 void AutoPlayer::on_frame(UnattendedFrame& frame) {
+    if (frame.live == nullptr) {
+        return;
+    }
+    const LiveTurn& live = *frame.live;
     const MatchView& v = frame.model.view();
-    if (!busy() && frame.aim.phase() == AimPhase::Idle && frame.room &&
-        frame.room->turn == v.turn && frame.room->phase == proto::Phase::Aiming &&
-        !frame.shot_sent) {
+    if (!busy() && live.aim.phase() == AimPhase::Idle && live.room && live.room->turn == v.turn &&
+        live.room->phase == proto::Phase::Aiming && !live.shot_sent) {
         if (aimed_turn_ == v.turn) {
             strategy_->shot_refused(); // the last gesture of this turn made no shot
         }
         aimed_turn_ = v.turn;
-        aim(*frame.room, frame.aim.striker_x(), frame.aim.side(), frame.mapping, frame.physics);
+        aim(*live.room, live.aim.striker_x(), live.aim.side(), frame.mapping, frame.physics);
     }
     if (busy()) {
         frame.input.push_back(events_[next_++]);

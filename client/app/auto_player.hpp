@@ -30,7 +30,7 @@ public:
 
     // One queued mouse event per frame; on our turn, at rest, with the striker idle and the room
     // state of this turn, the strategy aims (again, differently, when the last gesture of this
-    // turn made no shot or the server refused it).
+    // turn made no shot or the server refused it). Nothing without a live turn (a replay).
     void on_frame(UnattendedFrame& frame) override;
     std::optional<int> done() const override { return std::nullopt; } // plays until another ends
 

@@ -6,11 +6,10 @@
 namespace carrom::client::app {
 
 void FinalStateMode::on_frame(UnattendedFrame& frame) {
-    const MatchView& v = frame.model.view();
-    if (!v.in_room || v.phase != proto::Phase::GameOver || !v.result || frame.model.animating()) {
-        return;
+    if (frame.at_end) {
+        done_ = write_final_state_file(
+            path_, final_state_json(frame.model.view(), frame.model.board_now()));
     }
-    done_ = write_final_state_file(path_, final_state_json(v, frame.model.board_now()));
 }
 
 } // namespace carrom::client::app

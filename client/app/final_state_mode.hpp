@@ -1,6 +1,7 @@
 #pragma once
-// --final-state PATH: once the game is over and drawn at rest, writes its final state as JSON
-// (board_report.hpp) and ends the run (exit code 0, or 1 when the file cannot be written).
+// --final-state PATH: once the game is over and drawn at rest (a replay: at its end;
+// UnattendedFrame::at_end), writes its final state as JSON (board_report.hpp) and ends the run
+// (exit code 0, or 1 when the file cannot be written).
 
 #include "unattended_mode.hpp"
 

@@ -10,8 +10,8 @@ void RunTimeout::on_frame(UnattendedFrame& frame) {
     if (elapsed_s <= timeout_s_) {
         return;
     }
-    std::cerr << "carrom-client: gave up after " << timeout_s_ << " s ("
-              << frame.session.status_text() << ", " << frame.shots_seen << " shots seen)\n";
+    std::cerr << "carrom-client: gave up after " << timeout_s_ << " s (" << frame.progress()
+              << ")\n";
     done_ = 3;
 }
 

@@ -1,6 +1,6 @@
 #pragma once
 // --timeout S: ends a run still going S seconds (wall clock) after it started, with exit code 3
-// and a sentence on stderr saying what the link was doing.
+// and a sentence on stderr saying what the run was doing (UnattendedFrame::progress).
 
 #include "unattended_mode.hpp"
 

@@ -1,11 +1,11 @@
 #pragma once
-// What the match window does unattended, as its flags ask (app.hpp): screenshots and their
-// report, the final state, the frame benchmark, autoplay, the timeout. The window holds at most
-// one mode (unattended_modes.hpp combines several) and hands it every frame after drawing it and
-// before showing it; the mode may queue input for the next frame and end the run.
+// What a window does unattended, as its flags ask (app.hpp): screenshots and their report, the
+// final state, the frame benchmark, autoplay, the timeout. The match window and the --replay
+// window each hold at most one mode (unattended_modes.hpp combines several) and hand it every
+// frame after drawing it and before showing it; the mode may queue input for the next frame and
+// end the run.
 
 #include "carrom/client/aim_controller.hpp"
-#include "carrom/client/client_session.hpp"
 #include "carrom/client/interpolation_buffer.hpp"
 #include "carrom/client/match_model.hpp"
 #include "carrom/client/screen_mapping.hpp"
@@ -15,7 +15,9 @@
 #include <SFML/Graphics/RenderWindow.hpp>
 #include <SFML/Window/Event.hpp>
 
+#include <functional>
 #include <optional>
+#include <string>
 #include <vector>
 
 namespace carrom::client::app {
@@ -27,16 +29,26 @@ struct FrameTime {
     bool moving = false; // pieces moved (MatchModel::animating)
 };
 
+// What the match window adds to a frame: the turn we may play (what --autoplay plays from).
+struct LiveTurn {
+    const std::optional<proto::RoomState>& room; // the newest room state
+    const AimController& aim;
+    bool shot_sent = false; // we shot in the current turn already
+};
+
 // One frame as a mode sees it: drawn into the window, not yet displayed.
 struct UnattendedFrame {
     int number = 0; // frames drawn so far, this one included
     sf::RenderWindow& window;
-    const MatchModel& model;
-    const ClientSession& session;
-    int shots_seen = 0;                          // shot results received
-    const std::optional<proto::RoomState>& room; // the newest room state
-    const AimController& aim;
-    bool shot_sent = false; // we shot in the current turn already
+    const MatchModel& model; // the HUD's model (a replay feeds it what a spectator got)
+    const LiveTurn* live;    // null in a replay (no turn to play)
+    // The game shown is over and drawn at rest: a match's game over with its result and nothing
+    // moving, a replay's end.
+    bool at_end = false;
+    // What the run is doing, in words, for the timeout's sentence ("connected, 3 shots seen",
+    // "replay at 12.5 of 80 s").
+    std::function<std::string()> progress;
+    int shots_seen = 0; // shot results the model was given
     const ScreenMapping& mapping;
     const PhysicsConfig& physics;
     const std::vector<RenderedBody>& bodies; // the pieces drawn

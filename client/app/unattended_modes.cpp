@@ -18,9 +18,17 @@ void UnattendedModes::on_frame(UnattendedFrame& frame) {
     }
 }
 
-std::unique_ptr<UnattendedMode> make_unattended_mode(const AppOptions& options) {
+namespace {
+
+// Which modes a window holds; the rest of `options` configures them.
+struct ModeSet {
+    bool autoplay = false;
+    bool bench = false;
+};
+
+std::unique_ptr<UnattendedMode> make_modes(const AppOptions& options, ModeSet set) {
     std::vector<std::unique_ptr<UnattendedMode>> modes;
-    if (options.autoplay) {
+    if (set.autoplay && options.autoplay) {
         modes.push_back(std::make_unique<AutoPlayer>(*options.autoplay, 1));
     }
     if (!options.final_state_path.empty()) {
@@ -32,7 +40,7 @@ std::unique_ptr<UnattendedMode> make_unattended_mode(const AppOptions& options) 
     if (options.timeout_s > 0.0) {
         modes.push_back(std::make_unique<RunTimeout>(options.timeout_s));
     }
-    if (options.bench_frames > 0) {
+    if (set.bench && options.bench_frames > 0) {
         modes.push_back(std::make_unique<FrameBench>(options.bench_frames, options.msaa));
     }
     if (modes.empty()) {
@@ -42,6 +50,16 @@ std::unique_ptr<UnattendedMode> make_unattended_mode(const AppOptions& options) 
         return std::move(modes.front());
     }
     return std::make_unique<UnattendedModes>(std::move(modes));
+}
+
+} // namespace
+
+std::unique_ptr<UnattendedMode> make_unattended_mode(const AppOptions& options) {
+    return make_modes(options, ModeSet{.autoplay = true, .bench = true});
+}
+
+std::unique_ptr<UnattendedMode> make_replay_unattended_mode(const AppOptions& options) {
+    return make_modes(options, ModeSet{.autoplay = false, .bench = false});
 }
 
 } // namespace carrom::client::app

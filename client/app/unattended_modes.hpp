@@ -23,8 +23,12 @@ private:
     std::optional<int> done_;
 };
 
-// The modes `options` ask for (--autoplay, --final-state, --screenshot, --timeout,
-// --bench-frames), null for none; a timeout counts from this call.
+// The match window's modes `options` ask for (--autoplay, --final-state, --screenshot,
+// --timeout, --bench-frames), null for none; a timeout counts from this call.
 std::unique_ptr<UnattendedMode> make_unattended_mode(const AppOptions& options);
+
+// The --replay window's: --final-state, --screenshot, --timeout (a replay has no turn to
+// autoplay and no benchmark), null for none; a timeout counts from this call.
+std::unique_ptr<UnattendedMode> make_replay_unattended_mode(const AppOptions& options);
 
 } // namespace carrom::client::app

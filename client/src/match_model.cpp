@@ -299,7 +299,8 @@ void MatchModel::on_event(const proto::Event& m, double local_s) {
                 }
                 view_.winner = e.winner;
                 view_.phase = proto::Phase::GameOver;
-                view_.result = GameResult{e.winner, e.reason, e.scores, names_of(view_.seats)};
+                view_.result =
+                    GameResult{e.winner, e.reason, e.scores, names_of(view_.seats), e.rule};
             },
             [&](const proto::PlayerDroppedEvent& e) {
                 if (e.seat >= 0 && static_cast<std::size_t>(e.seat) < view_.seats.size()) {

@@ -1,6 +1,11 @@
 #include "carrom/client/match_view.hpp"
 
 namespace carrom::client {
+
+const std::string& game_end_name(const GameResult& result) {
+    return result.rule.empty() ? result.reason : result.rule;
+}
+
 namespace {
 
 bool has_seat(const MatchView& view, int seat) {

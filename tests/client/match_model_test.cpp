@@ -87,9 +87,13 @@ TEST(MatchModel, DoublesGameEndNamesTheWinningTeam) {
     end.winner = 0; // team 0: seats 0 and 2
     end.reason = "score";
     end.scores = {25, 11, 25, 11};
+    end.rule = "target_points";
     m.handle(proto::Event{end}, 2.0);
     ASSERT_TRUE(m.view().result.has_value());
     EXPECT_EQ(m.view().result->winner, 0);
+    EXPECT_EQ(m.view().result->reason, "score");
+    EXPECT_EQ(m.view().result->rule, "target_points");
+    EXPECT_EQ(game_end_name(*m.view().result), "target_points");
     EXPECT_EQ(m.view().seats[2].score, 25);
     EXPECT_EQ(team_of(m.view(), m.view().you), m.view().result->winner);
 }
@@ -332,6 +336,8 @@ TEST(MatchModel, GameEndKeepsWhoWonWhyAndTheScores) {
     ASSERT_TRUE(m.view().result.has_value());
     EXPECT_EQ(m.view().result->winner, 1);
     EXPECT_EQ(m.view().result->reason, "clock");
+    EXPECT_EQ(m.view().result->rule, ""); // a server that sends no rule
+    EXPECT_EQ(game_end_name(*m.view().result), "clock");
     EXPECT_EQ(m.view().result->scores, (std::vector<int>{0, 0}));
     EXPECT_EQ(m.view().result->names, (std::vector<std::string>{"Ana", "Ben"}));
     // The room state that follows keeps the reason.

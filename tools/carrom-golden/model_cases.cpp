@@ -40,7 +40,7 @@ nlohmann::json view_json(const client::MatchModel& model) {
     }
     nlohmann::json result = nullptr;
     if (v.result) {
-        result = {{"winner", v.result->winner}, {"reason", v.result->reason}};
+        result = {{"winner", v.result->winner}, {"reason", game_end_name(*v.result)}};
     }
     return {{"in_room", v.in_room},
             {"code", v.code},

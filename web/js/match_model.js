@@ -42,7 +42,9 @@ function emptyView() {
     winner: -1,
     deadlineMs: null, // shot clock, server clock
     aimX: null, // the shooter's live striker x (aim events)
-    gameEnd: null, // {winner, reason, sentence} once the game ended
+    // {winner, reason, sentence} once the game ended; reason: the name the journal, the Match API
+    // and carrom-bot give the end (game_end's rule code, or its reason from a server without one).
+    gameEnd: null,
     rematchAsked: false,
   };
 }
@@ -300,7 +302,7 @@ export class MatchModel {
           e.reason, v.you < 0, this.doubles());
         // Said by the result panel (hud.js), as the desktop client's game-over panel says it: no
         // HUD line.
-        v.gameEnd = { winner: e.winner, reason: e.reason, sentence };
+        v.gameEnd = { winner: e.winner, reason: e.rule || e.reason, sentence };
         break;
       }
       case 'player_dropped': {

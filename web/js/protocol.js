@@ -135,6 +135,10 @@ function optInt(o, k) {
   if (o[k] === undefined) return undefined;
   return int(o, k);
 }
+function optStr(o, k) {
+  if (o[k] === undefined) return undefined;
+  return str(o, k);
+}
 function intArray(o, k) {
   need(Array.isArray(o[k]) && o[k].every(isInt), k, 'an array of integers');
   return o[k];
@@ -236,7 +240,7 @@ const EVENT_FIELDS = {
   due: (m) => { int(m, 'seat'); int(m, 'owed'); },
   turn: (m) => { int(m, 'turn'); int(m, 'seat'); optInt(m, 'deadline_ms'); int(m, 'server_time_ms'); },
   board_end: (m) => { int(m, 'board'); int(m, 'winner'); int(m, 'points'); intArray(m, 'scores'); },
-  game_end: (m) => { int(m, 'winner'); str(m, 'reason'); intArray(m, 'scores'); },
+  game_end: (m) => { int(m, 'winner'); str(m, 'reason'); intArray(m, 'scores'); optStr(m, 'rule'); },
   player_dropped: (m) => { int(m, 'seat'); int(m, 'grace_deadline_ms'); int(m, 'server_time_ms'); },
   player_returned: (m) => { int(m, 'seat'); },
   aim: (m) => { int(m, 'seat'); int(m, 'turn'); num(m, 'x'); },

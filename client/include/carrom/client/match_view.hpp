@@ -31,7 +31,14 @@ struct GameResult {
     std::string reason;
     std::vector<int> scores;        // final, per seat (a seat's is its team's)
     std::vector<std::string> names; // per seat when the game ended (a seat may empty later)
+    // game_end's rule: the rules engine's code of the end ("target_points", "boards_played",
+    // ...); empty when the server sent none.
+    std::string rule{};
 };
+
+// The name of the end that the journal, the Match API and carrom-bot's summary give it: the rule
+// code, or game_end's reason from a server that sends no rule.
+const std::string& game_end_name(const GameResult& result);
 
 struct MatchView {
     bool in_room = false;
