@@ -12,6 +12,7 @@ namespace {
 struct FakeWire {
     LinkState state = LinkState::Connecting;
     std::string detail;
+    int close_code = 0;
     std::vector<proto::ClientMessage> sent;
     std::deque<proto::ServerMessage> inbox;
 };
@@ -25,7 +26,7 @@ public:
         wire_.inbox.clear();
         return out;
     }
-    LinkStatus status() const override { return {wire_.state, wire_.detail}; }
+    LinkStatus status() const override { return {wire_.state, wire_.detail, wire_.close_code}; }
     void close() override {}
 
 private:
@@ -175,6 +176,46 @@ TEST(ClientSession, ADropReconnectsAndResumesWithTheToken) {
     h.wire().inbox.push_back(proto::RoomState{});
     h.session.update(1.9);
     EXPECT_EQ(h.session.phase(), SessionPhase::InRoom);
+}
+
+TEST(ClientSession, ASeatOpenedOnAnotherLinkIsNotTakenBack) {
+    Harness h;
+    h.session.request({RoomRequest::Kind::Create, "", proto::RuleSet::Icf, std::nullopt});
+    h.session.start(0.0);
+    h.wire().state = LinkState::Open;
+    h.session.update(0.1);
+    h.wire().inbox.push_back(proto::Welcome{1, 7, kToken, 1000});
+    h.wire().inbox.push_back(proto::RoomState{});
+    h.session.update(0.2);
+    h.wire().state = LinkState::Closed;
+    h.wire().detail = "The server closed the connection (code 4002: replaced).";
+    h.wire().close_code = 4002;
+    h.session.update(0.3);
+    EXPECT_EQ(h.session.phase(), SessionPhase::Failed);
+    h.session.update(30.0);
+    EXPECT_EQ(h.wires.size(), 1u); // no new link
+}
+
+TEST(ClientSession, ARequestLostBeforeItsAnswerIsAskedAgainByANewPlayer) {
+    Harness h;
+    h.session.request({RoomRequest::Kind::Quick, "", proto::RuleSet::Icf, std::nullopt});
+    h.session.start(0.0);
+    h.wire().state = LinkState::Open;
+    h.session.update(0.1);
+    h.wire().inbox.push_back(proto::Welcome{1, 7, kToken, 1000});
+    h.session.update(0.2);
+    ASSERT_TRUE(has_sent<proto::QuickMatch>(h.wire()));
+    h.wire().state = LinkState::Closed; // still in the queue: no seat to resume
+    h.session.update(20.0);
+    h.session.update(20.5);
+    ASSERT_EQ(h.wires.size(), 2u);
+    h.wire().state = LinkState::Open;
+    h.session.update(20.6);
+    EXPECT_EQ(sent<proto::Hello>(h.wire()).resume_token, std::nullopt);
+    h.wire().inbox.push_back(proto::Welcome{1, 8, std::string(32, 'b'), 2000});
+    h.session.update(20.7);
+    EXPECT_TRUE(has_sent<proto::QuickMatch>(h.wire()));
+    EXPECT_EQ(h.session.phase(), SessionPhase::Joining);
 }
 
 TEST(ClientSession, LostLinkReasonReadsAsOneSentence) {
