@@ -41,9 +41,21 @@ struct Harness {
                           },
                           "Ana"};
     FakeWire& wire() { return *wires.back(); }
+    // Asks to create a room, connects and is in the room (welcomed with kToken) by 0.2 s.
+    void into_room();
 };
 
 const std::string kToken = "0123456789abcdef0123456789abcdef";
+
+void Harness::into_room() {
+    session.request({RoomRequest::Kind::Create, "", proto::RuleSet::Icf, std::nullopt});
+    session.start(0.0);
+    wire().state = LinkState::Open;
+    session.update(0.1);
+    wire().inbox.push_back(proto::Welcome{1, 7, kToken, 1000});
+    wire().inbox.push_back(proto::RoomState{});
+    session.update(0.2);
+}
 
 template <class T> bool has_sent(const FakeWire& w) {
     return std::any_of(w.sent.begin(), w.sent.end(),
@@ -134,6 +146,7 @@ TEST(ClientSession, LobbyWaitsForAChoice) {
 
 TEST(ClientSession, GameInputOnlyInARoom) {
     Harness h;
+    h.session.request({RoomRequest::Kind::Join, "ABC234", proto::RuleSet::Icf, std::nullopt});
     h.session.start(0.0);
     EXPECT_FALSE(h.session.send_game(proto::Shoot{}));
     h.wire().state = LinkState::Open;
@@ -147,13 +160,7 @@ TEST(ClientSession, GameInputOnlyInARoom) {
 
 TEST(ClientSession, ADropReconnectsAndResumesWithTheToken) {
     Harness h;
-    h.session.request({RoomRequest::Kind::Create, "", proto::RuleSet::Icf, std::nullopt});
-    h.session.start(0.0);
-    h.wire().state = LinkState::Open;
-    h.session.update(0.1);
-    h.wire().inbox.push_back(proto::Welcome{1, 7, kToken, 1000});
-    h.wire().inbox.push_back(proto::RoomState{});
-    h.session.update(0.2);
+    h.into_room();
     ASSERT_EQ(h.session.phase(), SessionPhase::InRoom);
     h.wire().state = LinkState::Closed;
     h.wire().detail = "Connection reset by peer";
@@ -180,13 +187,7 @@ TEST(ClientSession, ADropReconnectsAndResumesWithTheToken) {
 
 TEST(ClientSession, ASeatOpenedOnAnotherLinkIsNotTakenBack) {
     Harness h;
-    h.session.request({RoomRequest::Kind::Create, "", proto::RuleSet::Icf, std::nullopt});
-    h.session.start(0.0);
-    h.wire().state = LinkState::Open;
-    h.session.update(0.1);
-    h.wire().inbox.push_back(proto::Welcome{1, 7, kToken, 1000});
-    h.wire().inbox.push_back(proto::RoomState{});
-    h.session.update(0.2);
+    h.into_room();
     h.wire().state = LinkState::Closed;
     h.wire().detail = "The server closed the connection (code 4002: replaced).";
     h.wire().close_code = 4002;
@@ -304,13 +305,7 @@ TEST(ClientSession, JitterDrawsEachDelayInItsUpperHalfAndReportsTheTries) {
 
 TEST(ClientSession, LostSeatGoesBackToTheLobby) {
     Harness h;
-    h.session.request({RoomRequest::Kind::Create, "", proto::RuleSet::Icf, std::nullopt});
-    h.session.start(0.0);
-    h.wire().state = LinkState::Open;
-    h.session.update(0.1);
-    h.wire().inbox.push_back(proto::Welcome{1, 7, kToken, 1000});
-    h.wire().inbox.push_back(proto::RoomState{});
-    h.session.update(0.2);
+    h.into_room();
     h.wire().state = LinkState::Closed;
     h.session.update(0.3);
     h.session.update(1.0);
@@ -325,13 +320,7 @@ TEST(ClientSession, LostSeatGoesBackToTheLobby) {
 
 TEST(ClientSession, LeavingTheRoomGoesBackToTheLobbyOnTheSameLink) {
     Harness h;
-    h.session.request({RoomRequest::Kind::Create, "", proto::RuleSet::Icf, std::nullopt});
-    h.session.start(0.0);
-    h.wire().state = LinkState::Open;
-    h.session.update(0.1);
-    h.wire().inbox.push_back(proto::Welcome{1, 7, kToken, 1000});
-    h.wire().inbox.push_back(proto::RoomState{});
-    h.session.update(0.2);
+    h.into_room();
     ASSERT_EQ(h.session.phase(), SessionPhase::InRoom);
     h.session.leave_room();
     EXPECT_TRUE(has_sent<proto::Leave>(h.wire()));

@@ -49,6 +49,16 @@ std::vector<json> retry(double t) {
     return {at(t, "tick"), at(t, "link_opened")};
 }
 
+// In a room by 0.4 s, the link lost at 1 s and tried again at 1.5 s (the first wait, 0.5 s).
+std::vector<json> in_room_lost_and_retried() {
+    std::vector<json> out = into_room(0.0);
+    out.push_back(closed(1.0));
+    for (json& step : retry(1.5)) {
+        out.push_back(std::move(step));
+    }
+    return out;
+}
+
 struct Case {
     std::string name;
     std::string about;
@@ -129,9 +139,7 @@ std::vector<Case> cases() {
         Case c{"unknown_token_loses_the_seat",
                "bad_token before the welcome: the seat is gone; the welcome that follows is a new "
                "player's, in the lobby with no request",
-               into_room(0.0)};
-        add(c.events, {closed(1.0)});
-        add(c.events, retry(1.5));
+               in_room_lost_and_retried()};
         add(c.events, {error(1.6, "bad_token"), welcome(1.7, kOther), at(1.8, "room_state"),
                        at(2.0, "request")});
         out.push_back(c);
@@ -139,18 +147,15 @@ std::vector<Case> cases() {
     {
         Case c{"closed_room_loses_the_seat_after_the_welcome",
                "the token is known but its room has closed: welcome, then bad_token",
-               into_room(0.0)};
-        add(c.events, {closed(1.0)});
-        add(c.events, retry(1.5));
+               in_room_lost_and_retried()};
         add(c.events, {welcome(1.6, kToken), error(1.7, "bad_token"), closed(1.8)});
         add(c.events, retry(2.3));
         out.push_back(c);
     }
     {
         Case c{"resume_welcomed_with_another_token_loses_the_seat",
-               "a welcome with another token after a resume: a new player", into_room(0.0)};
-        add(c.events, {closed(1.0)});
-        add(c.events, retry(1.5));
+               "a welcome with another token after a resume: a new player",
+               in_room_lost_and_retried()};
         add(c.events, {welcome(1.6, kOther), at(1.7, "room_state")});
         out.push_back(c);
     }
@@ -189,9 +194,7 @@ std::vector<Case> cases() {
     {
         Case c{"seat_only_resumes_a_seat",
                "carrom-bot: a link lost in a room is resumed, a loss during the resume too",
-               into_room(0.0), ReconnectPolicy::SeatOnly};
-        add(c.events, {closed(1.0)});
-        add(c.events, retry(1.5));
+               in_room_lost_and_retried(), ReconnectPolicy::SeatOnly};
         add(c.events, {closed(1.6, 0)});
         add(c.events, retry(2.6));
         add(c.events, {welcome(2.7, kToken), at(2.8, "room_state")});
@@ -243,9 +246,7 @@ std::vector<Case> cases() {
     {
         Case c{"a_loss_lasts_until_the_seat_is_back",
                "a resume welcomed and lost before the room's state goes on with the same loss",
-               into_room(0.0)};
-        add(c.events, {closed(1.0)});
-        add(c.events, retry(1.5));
+               in_room_lost_and_retried()};
         add(c.events, {welcome(1.6, kToken), closed(1.7)});
         add(c.events, retry(2.7));
         add(c.events, {welcome(2.8, kToken), at(2.9, "room_state"), closed(10.0)});
