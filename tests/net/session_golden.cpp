@@ -1,5 +1,6 @@
 #include "session_golden.hpp"
 
+#include <array>
 #include <stdexcept>
 
 namespace carrom::net::golden {
@@ -64,15 +65,8 @@ ReconnectPolicy policy_from_name(const std::string& name) {
 }
 
 std::string policy_name(ReconnectPolicy policy) {
-    switch (policy) {
-    case ReconnectPolicy::Always:
-        return "always";
-    case ReconnectPolicy::SeatOnly:
-        return "seat_only";
-    case ReconnectPolicy::Never:
-        return "never";
-    }
-    return "unknown";
+    static const std::array<std::string, 3> kNames{"always", "seat_only", "never"};
+    return kNames.at(static_cast<std::size_t>(policy)); // in the enumerators' order
 }
 
 SessionCore core_for(const json& golden_case) {

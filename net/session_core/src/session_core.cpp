@@ -3,6 +3,7 @@
 #include "carrom/proto/error.hpp"
 
 #include <algorithm>
+#include <array>
 
 namespace carrom::net {
 namespace {
@@ -188,64 +189,24 @@ void SessionCore::end_loss() {
     tries_ = 0;
 }
 
+// The names in the enumerators' order.
 std::string_view session_phase_name(SessionPhase phase) {
-    switch (phase) {
-    case SessionPhase::Connecting:
-        return "connecting";
-    case SessionPhase::Greeting:
-        return "greeting";
-    case SessionPhase::Lobby:
-        return "lobby";
-    case SessionPhase::Joining:
-        return "joining";
-    case SessionPhase::InRoom:
-        return "in_room";
-    case SessionPhase::Reconnecting:
-        return "reconnecting";
-    case SessionPhase::Failed:
-        return "failed";
-    }
-    return "unknown";
+    static constexpr std::array<std::string_view, 7> kNames{
+        "connecting", "greeting", "lobby", "joining", "in_room", "reconnecting", "failed"};
+    return kNames.at(static_cast<std::size_t>(phase));
 }
 
 std::string_view session_action_name(SessionActionKind kind) {
-    switch (kind) {
-    case SessionActionKind::Connect:
-        return "connect";
-    case SessionActionKind::SendHello:
-        return "send_hello";
-    case SessionActionKind::SendResume:
-        return "send_resume";
-    case SessionActionKind::SendRoomRequest:
-        return "send_room_request";
-    case SessionActionKind::SendLeave:
-        return "send_leave";
-    case SessionActionKind::Wait:
-        return "wait";
-    case SessionActionKind::Resumed:
-        return "resumed";
-    case SessionActionKind::SeatLost:
-        return "seat_lost";
-    case SessionActionKind::Refused:
-        return "refused";
-    case SessionActionKind::GiveUp:
-        return "give_up";
-    }
-    return "unknown";
+    static constexpr std::array<std::string_view, 10> kNames{
+        "connect", "send_hello", "send_resume", "send_room_request", "send_leave",
+        "wait",    "resumed",    "seat_lost",   "refused",           "give_up"};
+    return kNames.at(static_cast<std::size_t>(kind));
 }
 
 std::string_view give_up_reason_name(GiveUpReason reason) {
-    switch (reason) {
-    case GiveUpReason::NoRetry:
-        return "no_retry";
-    case GiveUpReason::TimeUp:
-        return "time_up";
-    case GiveUpReason::VersionMismatch:
-        return "version_mismatch";
-    case GiveUpReason::Replaced:
-        return "replaced";
-    }
-    return "unknown";
+    static constexpr std::array<std::string_view, 4> kNames{"no_retry", "time_up",
+                                                            "version_mismatch", "replaced"};
+    return kNames.at(static_cast<std::size_t>(reason));
 }
 
 } // namespace carrom::net

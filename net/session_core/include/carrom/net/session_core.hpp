@@ -154,7 +154,8 @@ private:
     double retry_at_s_ = 0.0;
 };
 
-// The phase's name in golden files and the web client: "connecting", "in_room", ...
+// The names in golden files and the web client ("connecting", "in_room", "send_resume",
+// "time_up", ...); session_core.cpp lists them in the enumerators' order.
 std::string_view session_phase_name(SessionPhase phase);
 std::string_view session_action_name(SessionActionKind kind);
 std::string_view give_up_reason_name(GiveUpReason reason);
