@@ -274,6 +274,39 @@ std::vector<Case> cases() {
     return out;
 }
 
+// One step per line, in the order time, event, its arguments, actions, state.
+std::string step_line(const json& event, const json& answer) {
+    nlohmann::ordered_json line;
+    line["t"] = event.at("t");
+    line["event"] = event.at("event");
+    for (auto it = event.begin(); it != event.end(); ++it) {
+        if (it.key() != "t" && it.key() != "event") {
+            line[it.key()] = it.value();
+        }
+    }
+    line["actions"] = answer.at("actions");
+    line["state"] = answer.at("state");
+    return line.dump();
+}
+
+std::string case_text(const Case& c) {
+    const json backoff{{"first_s", c.backoff.first_s},
+                       {"cap_s", c.backoff.cap_s},
+                       {"give_up_after_s", c.backoff.give_up_after_s}};
+    const std::string policy = carrom::net::golden::policy_name(c.policy);
+    json head{{"backoff", backoff}, {"policy", policy}};
+    carrom::net::SessionCore core = carrom::net::golden::core_for(head);
+    std::string text = "{\n \"name\": " + json(c.name).dump() +
+                       ",\n \"about\": " + json(c.about).dump() +
+                       ",\n \"policy\": " + json(policy).dump() +
+                       ",\n \"backoff\": " + backoff.dump() + ",\n \"steps\": [\n";
+    for (std::size_t i = 0; i < c.events.size(); ++i) {
+        const json answer = carrom::net::golden::play(core, c.events[i]);
+        text += "  " + step_line(c.events[i], answer) + (i + 1 < c.events.size() ? ",\n" : "\n");
+    }
+    return text + " ]\n}\n";
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
@@ -283,24 +316,9 @@ int main(int argc, char** argv) {
     }
     const std::string dir = argv[1];
     for (const Case& c : cases()) {
-        json golden{{"name", c.name},
-                    {"about", c.about},
-                    {"policy", carrom::net::golden::policy_name(c.policy)},
-                    {"backoff",
-                     {{"first_s", c.backoff.first_s},
-                      {"cap_s", c.backoff.cap_s},
-                      {"give_up_after_s", c.backoff.give_up_after_s}}},
-                    {"steps", json::array()}};
-        carrom::net::SessionCore core = carrom::net::golden::core_for(golden);
-        for (json step : c.events) {
-            const json answer = carrom::net::golden::play(core, step);
-            step["actions"] = answer["actions"];
-            step["state"] = answer["state"];
-            golden["steps"].push_back(step);
-        }
         const std::string path = dir + "/" + c.name + ".json";
         std::ofstream file(path);
-        file << golden.dump(1) << "\n";
+        file << case_text(c);
         if (!file) {
             std::cerr << "cannot write " << path << "\n";
             return 1;
