@@ -1,6 +1,7 @@
 #pragma once
 // A body on the board: a coin (black, white, queen) or the striker. Plain data.
 
+#include "carrom/enum_names.hpp"
 #include "carrom/vec2.hpp"
 
 #include <cstdint>
@@ -9,6 +10,10 @@
 namespace carrom {
 
 enum class BodyKind : std::uint8_t { Black, White, Queen, Striker };
+inline constexpr enum_names::Table<BodyKind, 4> kBodyKindNames{{{BodyKind::Black, "black"},
+                                                                {BodyKind::White, "white"},
+                                                                {BodyKind::Queen, "queen"},
+                                                                {BodyKind::Striker, "striker"}}};
 
 struct Body {
     int id = 0; // caller's id, unique within a scene; events name bodies by it
