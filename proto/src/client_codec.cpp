@@ -209,9 +209,8 @@ std::string_view type_name(const ClientMessage& message) {
 }
 
 json to_json(const ClientMessage& message) {
-    json out = std::visit([](const auto& m) { return encode_body(m); }, message);
-    out["type"] = type_name(message);
-    return out;
+    return detail::encode_message(message, detail::kClientTypeNames,
+                                  [](const auto& m) { return encode_body(m); });
 }
 
 DecodedMessage<ClientMessage> client_from_json(const json& value) {

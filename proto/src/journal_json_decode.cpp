@@ -22,10 +22,7 @@ constexpr std::size_t kMaxServerVersionBytes = 64;
 
 using Json = nlohmann::json;
 using MaybeError = std::optional<Error>;
-using detail::field_path;
-using detail::index_path;
-using detail::JsonReader;
-using detail::Wording;
+using namespace detail; // JsonReader, Wording, Range, field_path, index_path
 
 // A string of at most max_bytes that valid() accepts; otherwise "<path> must be <what>".
 std::string checked_text(JsonReader& r, std::string_view key, std::size_t max_bytes,

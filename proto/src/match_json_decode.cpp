@@ -17,11 +17,7 @@ namespace {
 
 using Json = nlohmann::json;
 using MaybeError = std::optional<Error>;
-using detail::field_path;
-using detail::index_path;
-using detail::JsonReader;
-using detail::Range;
-using detail::Wording;
+using namespace detail; // JsonReader, Wording, Range, field_path, index_path
 using rules::MatchState;
 
 constexpr int kMaxCount = 1000000;

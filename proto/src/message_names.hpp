@@ -65,6 +65,16 @@ std::optional<Variant> make_alternative(std::size_t index, Fill&& fill) {
     }
 }
 
+// A whole message of either direction as JSON: encode_body(alternative) and its "type".
+template <class Message, std::size_t N, class EncodeBody>
+nlohmann::json encode_message(const Message& message, const std::array<std::string_view, N>& names,
+                              EncodeBody encode_body) {
+    static_assert(N == std::variant_size_v<Message>, "one name per message type");
+    nlohmann::json out = std::visit(encode_body, message);
+    out["type"] = names[message.index()];
+    return out;
+}
+
 // A whole message of either direction: the envelope's "type" names the alternative of Message
 // (names lists them in variant order), whose fields decode_body(JsonReader&, Alternative&) reads
 // in the Wire wording.

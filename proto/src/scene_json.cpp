@@ -15,11 +15,7 @@
 namespace carrom::proto {
 
 using Json = nlohmann::json;
-using detail::field_path;
-using detail::index_path;
-using detail::JsonReader;
-using detail::Range;
-using detail::Wording;
+using namespace detail; // JsonReader, Wording, Range, field_path, index_path
 
 namespace {
 
@@ -152,9 +148,12 @@ Vec2 read_vec(JsonReader& r, std::string_view key, double limit) {
     return out;
 }
 
-// An array of at most kMaxSceneBodies bodies.
-std::vector<Body> read_bodies(JsonReader& r, std::string_view key) {
-    std::vector<Body> out;
+// An array at r's key of at most max_items values, each read by decode_item(value, path) (which
+// returns a Decoded<T>); too_many(path, size) words the error for a longer array.
+template <class T, class DecodeItem, class TooMany>
+std::vector<T> read_array(JsonReader& r, std::string_view key, std::size_t max_items,
+                          DecodeItem decode_item, TooMany too_many) {
+    std::vector<T> out;
     const Json* j = r.find(key);
     if (j == nullptr) {
         return out;
@@ -162,17 +161,24 @@ std::vector<Body> read_bodies(JsonReader& r, std::string_view key) {
     const std::string path = r.path_of(key);
     if (!j->is_array()) {
         r.wrong_type(*j, path, "an array");
-    } else if (j->size() > kMaxSceneBodies) {
-        r.merge(document_error(scene_code::kTooMany, path,
-                               path + " has " + std::to_string(j->size()) + " bodies; at most " +
-                                   std::to_string(kMaxSceneBodies) + " are allowed"));
+    } else if (j->size() > max_items) {
+        r.merge(document_error(scene_code::kTooMany, path, too_many(path, j->size())));
     }
     for (std::size_t i = 0; r.ok() && i < j->size(); ++i) {
-        auto body = decode_body((*j)[i], index_path(path, i));
-        r.merge(body.error);
-        out.push_back(body.value);
+        auto item = decode_item((*j)[i], index_path(path, i));
+        r.merge(item.error);
+        out.push_back(std::move(item.value));
     }
     return out;
+}
+
+// An array of at most kMaxSceneBodies bodies.
+std::vector<Body> read_bodies(JsonReader& r, std::string_view key) {
+    return read_array<Body>(r, key, kMaxSceneBodies, &decode_body,
+                            [](const std::string& path, std::size_t size) {
+                                return path + " has " + std::to_string(size) + " bodies; at most " +
+                                       std::to_string(kMaxSceneBodies) + " are allowed";
+                            });
 }
 
 // Where a validate_scene error points in the document: bodies from the "bodies" array by index,
@@ -214,23 +220,9 @@ SimStats read_stats(JsonReader& parent, std::string_view key) {
 }
 
 std::vector<Event> read_events(JsonReader& r, std::string_view key) {
-    std::vector<Event> out;
-    const Json* j = r.find(key);
-    if (j == nullptr) {
-        return out;
-    }
-    const std::string path = r.path_of(key);
-    if (!j->is_array()) {
-        r.wrong_type(*j, path, "an array");
-    } else if (j->size() > kMaxEvents) {
-        r.merge(document_error(scene_code::kTooMany, path, path + " has too many events"));
-    }
-    for (std::size_t i = 0; r.ok() && i < j->size(); ++i) {
-        auto event = decode_event((*j)[i], index_path(path, i));
-        r.merge(event.error);
-        out.push_back(event.value);
-    }
-    return out;
+    return read_array<Event>(
+        r, key, kMaxEvents, &decode_event,
+        [](const std::string& path, std::size_t) { return path + " has too many events"; });
 }
 
 } // namespace

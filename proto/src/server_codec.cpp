@@ -470,9 +470,8 @@ std::string_view event_kind(const Event& event) {
 }
 
 json to_json(const ServerMessage& message) {
-    json out = std::visit([](const auto& m) { return encode_body(m); }, message);
-    out["type"] = type_name(message);
-    return out;
+    return detail::encode_message(message, detail::kServerTypeNames,
+                                  [](const auto& m) { return encode_body(m); });
 }
 
 DecodedMessage<ServerMessage> server_from_json(const json& value) {

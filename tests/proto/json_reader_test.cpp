@@ -345,31 +345,23 @@ TEST(JsonReaderDocument, OnlyKeysRejectsUnknownKeysAndNonObjects) {
 
 TEST(JsonReaderDocument, IntegerArraysNameTheirSizeAndTheBadItemsIndex) {
     const json j = {{"scores", {1, 2, 3}}, {"dues", {0, "1"}}, {"ids", {4, 99}}};
-    {
+    const auto error_of = [&j](std::string_view key, int max, std::size_t items, bool exact) {
         JsonReader r(j, "state", Wording::Document);
-        r.int_array("scores", 0, 9, 2, true);
-        EXPECT_EQ(r.error(), document("wrong_type", "state.scores must be an array of 2 integers",
-                                      "state.scores"));
-    }
-    {
-        JsonReader r(j, "state", Wording::Document);
-        r.int_array("scores", 0, 9, 2);
-        EXPECT_EQ(r.error(),
-                  document("wrong_type", "state.scores must be an array of at most 2 integers",
-                           "state.scores"));
-    }
-    {
-        JsonReader r(j, "state", Wording::Document);
-        r.int_array("dues", 0, 9, 2, true);
-        EXPECT_EQ(r.error(), document("wrong_type", "state.dues[1] must be an integer, not string",
-                                      "state.dues[1]"));
-    }
-    {
-        JsonReader r(j, "", Wording::Document);
-        r.int_array("ids", 0, 18, 19);
-        EXPECT_EQ(r.error(),
-                  document("out_of_range", "ids[1] must be an integer in [0, 18]", "ids[1]"));
-    }
+        r.int_array(key, 0, max, items, exact);
+        return r.error();
+    };
+    EXPECT_EQ(
+        error_of("scores", 9, 2, true),
+        document("wrong_type", "state.scores must be an array of 2 integers", "state.scores"));
+    EXPECT_EQ(error_of("scores", 9, 2, false),
+              document("wrong_type", "state.scores must be an array of at most 2 integers",
+                       "state.scores"));
+    EXPECT_EQ(
+        error_of("dues", 9, 2, true),
+        document("wrong_type", "state.dues[1] must be an integer, not string", "state.dues[1]"));
+    EXPECT_EQ(
+        error_of("ids", 18, 19, false),
+        document("out_of_range", "state.ids[1] must be an integer in [0, 18]", "state.ids[1]"));
     JsonReader r(j, "", Wording::Document);
     EXPECT_EQ(r.int_array("scores", 0, 9, 3, true), (std::vector<int>{1, 2, 3}));
     EXPECT_TRUE(r.ok());
