@@ -28,11 +28,20 @@ sf::Event mouse(sf::Event::EventType type, const ScreenMapping& mapping, Vec2 bo
 AutoPlayer::AutoPlayer(proto::BotLevel level, std::uint64_t seed)
     : strategy_(bots::make_level_strategy(level, seed)) {}
 
-std::optional<sf::Event> AutoPlayer::next_event() {
-    if (!busy()) {
-        return std::nullopt;
+void AutoPlayer::on_frame(UnattendedFrame& frame) {
+    const MatchView& v = frame.model.view();
+    if (!busy() && frame.aim.phase() == AimPhase::Idle && frame.room &&
+        frame.room->turn == v.turn && frame.room->phase == proto::Phase::Aiming &&
+        !frame.shot_sent) {
+        if (aimed_turn_ == v.turn) {
+            strategy_->shot_refused(); // the last gesture of this turn made no shot
+        }
+        aimed_turn_ = v.turn;
+        aim(*frame.room, frame.aim.striker_x(), frame.aim.side(), frame.mapping, frame.physics);
     }
-    return events_[next_++];
+    if (busy()) {
+        frame.input.push_back(events_[next_++]);
+    }
 }
 
 void AutoPlayer::aim(const proto::RoomState& room, double striker_x, rules::Side side,

@@ -7,6 +7,7 @@
 import {
   clipName, isPlayerName, isRoomCode, normaliseRoomCode, RULE_SETS, BOT_LEVELS,
 } from './protocol.js';
+import { PROTOCOL } from './physics_config.js';
 
 // The new-game buttons' labels for singles and doubles.
 const LABELS = {
@@ -115,16 +116,16 @@ export class Lobby {
   submit(action) {
     const name = this.name.value.trim();
     if (!isPlayerName(name)) {
-      this.setError('Enter a name first (1 to 24 bytes, no control characters).');
+      this.setError(`Enter a name first (1 to ${PROTOCOL.maxNameBytes} bytes, no control characters).`);
       this.name.focus();
       return;
     }
     this.storage?.setItem('carrom.name', name);
     const ruleSet = RULE_SETS.includes(this.ruleSet.value) ? this.ruleSet.value : 'icf';
     const options = {
-      target_points: optionalInt(this.targetPoints, 1, 1000),
-      boards: optionalInt(this.boards, 1, 99),
-      shot_clock_s: optionalInt(this.shotClock, 0, 600),
+      target_points: optionalInt(this.targetPoints, 1, PROTOCOL.maxTargetPoints),
+      boards: optionalInt(this.boards, 1, PROTOCOL.maxBoards),
+      shot_clock_s: optionalInt(this.shotClock, 0, PROTOCOL.maxShotClockS),
     };
     let request;
     if (action === 'create' || action === 'bot') {

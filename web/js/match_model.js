@@ -69,6 +69,7 @@ export class MatchModel {
     this.cuesHeard = 0; // audible physics events received (collision, cushion, pocket)
     this.cuesMerged = 0; // cues played as one with another of their kind at the same time
     this.lastProtoSeq = null;
+    this.lastDue = null; // the stroke's last due event: {team, owed}
     this.nextSeq = 1;
     this.lastRender = 0;
     this.shots = 0; // shot results received
@@ -265,11 +266,16 @@ export class MatchModel {
         post(queenSentence(e.queen, this.seatName(e.queen.seat)), 'info');
         break;
       case 'due': {
-        // Dues are the team's: partners owe them together.
+        // Dues are the team's: partners owe them together. The server sends one event per seat
+        // of the team; the partner's event with the same count in the same stroke (since the
+        // stroke's shot_result, which its rule events follow) adds no line.
         const team = this.teamOf(e.seat);
         v.seats.forEach((s, i) => { if (i === e.seat || s.team === team) s.dues = e.owed; });
+        const last = this.lastDue;
+        const repeat = last !== null && last.team === team && last.owed === e.owed;
+        this.lastDue = { team, owed: e.owed };
         const who = this.doubles() ? `${this.teamName(team)} owe` : `${this.seatName(e.seat)} owes`;
-        if (e.owed > 0) post(`${who} ${countWords(e.owed, 'due', 'dues')}`, 'foul');
+        if (e.owed > 0 && !repeat) post(`${who} ${countWords(e.owed, 'due', 'dues')}`, 'foul');
         break;
       }
       case 'turn':
@@ -292,8 +298,9 @@ export class MatchModel {
         v.phase = 'game_over';
         const sentence = gameEndSentence(e.winner, this.ourTeam(e.winner), this.teamName(e.winner),
           e.reason, v.you < 0, this.doubles());
+        // Said by the result panel (hud.js), as the desktop client's game-over panel says it: no
+        // HUD line.
         v.gameEnd = { winner: e.winner, reason: e.reason, sentence };
-        post(sentence, 'good');
         break;
       }
       case 'player_dropped': {
@@ -317,6 +324,7 @@ export class MatchModel {
   onShotResult(m, localS) {
     const v = this.view;
     this.shots += 1;
+    this.lastDue = null; // the stroke's rule events (due among them) follow
     this.lastShot = {
       turn: m.turn, seat: m.seat, x: m.x, angle: m.angle, power: m.power, pocketed: m.pocketed,
     };
