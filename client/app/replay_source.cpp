@@ -59,7 +59,7 @@ std::variant<ReplayModel, std::string> load_replay(const std::string& source) {
         return Result{std::in_place_index<1>, std::get<1>(std::move(text))};
     }
     auto loaded = ReplayModel::load_text(std::get<0>(text));
-    if (auto* error = std::get_if<proto::JsonError>(&loaded)) {
+    if (auto* error = std::get_if<proto::Error>(&loaded)) {
         std::ostringstream line;
         line << (source == "-" ? "standard input" : source) << ": "
              << (error->path.empty() ? "" : error->path + ": ") << error->message << " ("

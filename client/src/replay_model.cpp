@@ -40,10 +40,10 @@ std::vector<Body> board_with_striker(const rules::MatchState& state) {
     return stream_quantised(std::move(bodies));
 }
 
-proto::JsonError bad_entry(std::size_t entry, const rules::RuleError& error) {
-    return proto::JsonError{std::string(proto::replay_code::kBadJournal),
-                            "entries[" + std::to_string(entry) + "]",
-                            "The rules refuse this input: " + error.message};
+proto::Error bad_entry(std::size_t entry, const rules::RuleError& error) {
+    return proto::Error{std::string(proto::replay_code::kBadJournal),
+                        "The rules refuse this input: " + error.message,
+                        "entries[" + std::to_string(entry) + "]"};
 }
 
 proto::Phase phase_of(const rules::MatchState& state) {
@@ -59,7 +59,7 @@ proto::Phase phase_of(const rules::MatchState& state) {
 
 } // namespace
 
-std::variant<ReplayModel, proto::JsonError> ReplayModel::load(const proto::MatchJournal& journal) {
+std::variant<ReplayModel, proto::Error> ReplayModel::load(const proto::MatchJournal& journal) {
     // The head alone: versions and configs, checked as replay() checks them.
     const proto::ReplayResult head = proto::replay(proto::MatchJournal{journal.created, {}});
     if (head.error) {
@@ -118,7 +118,7 @@ std::variant<ReplayModel, proto::JsonError> ReplayModel::load(const proto::Match
     return model;
 }
 
-std::variant<ReplayModel, proto::JsonError> ReplayModel::load_text(std::string_view text) {
+std::variant<ReplayModel, proto::Error> ReplayModel::load_text(std::string_view text) {
     proto::Decoded<proto::MatchJournal> decoded = proto::decode_journal_text(text);
     if (decoded.error) {
         return *decoded.error;

@@ -1,7 +1,7 @@
 // JSON encoding and validating decoding of client -> server messages.
 #include "carrom/proto/json_codec.hpp"
 
-#include "field_reader.hpp"
+#include "json_reader.hpp"
 #include "message_names.hpp"
 
 #include <cstddef>
@@ -10,7 +10,8 @@
 
 namespace carrom::proto {
 
-using detail::FieldReader;
+using detail::JsonReader;
+using detail::Range;
 using nlohmann::json;
 
 namespace {
@@ -78,7 +79,7 @@ json encode_body(const Ping& m) {
 }
 
 // Decoders: each reads its fields from `r`; the caller checks r.ok().
-void decode_body(FieldReader& r, Hello& m) {
+void decode_body(JsonReader& r, Hello& m) {
     m.version = r.small_int("version", 0, 1000000);
     m.name = r.text("name", 1, kMaxNameBytes);
     if (r.ok() && !is_player_name(m.name)) {
@@ -92,7 +93,7 @@ void decode_body(FieldReader& r, Hello& m) {
     }
 }
 
-void decode_options(FieldReader& r, RoomOptions& options) {
+void decode_options(JsonReader& r, RoomOptions& options) {
     if (r.has("target_points")) {
         options.target_points = r.small_int("target_points", 1, kMaxTargetPoints);
     }
@@ -100,12 +101,12 @@ void decode_options(FieldReader& r, RoomOptions& options) {
         options.boards = r.small_int("boards", 1, kMaxBoards);
     }
     if (r.has("shot_clock_s")) {
-        options.shot_clock_s = r.number("shot_clock_s", 0.0, kMaxShotClockS);
+        options.shot_clock_s = r.number("shot_clock_s", {0.0, kMaxShotClockS});
     }
 }
 
 // "seats": 2 or 4 (absent: 2).
-int decode_seat_count(FieldReader& r) {
+int decode_seat_count(JsonReader& r) {
     if (!r.has("seats")) {
         return 2;
     }
@@ -117,7 +118,7 @@ int decode_seat_count(FieldReader& r) {
 }
 
 // "bot.seats": distinct seat indices in 1..seat_count-1, at least one.
-std::vector<int> decode_bot_seats(FieldReader& r, int seat_count) {
+std::vector<int> decode_bot_seats(JsonReader& r, int seat_count) {
     const auto max_items = static_cast<std::size_t>(seat_count - 1);
     std::vector<int> seats = r.int_array("seats", 1, seat_count - 1, max_items);
     if (!r.ok()) {
@@ -138,89 +139,67 @@ std::vector<int> decode_bot_seats(FieldReader& r, int seat_count) {
     return seats;
 }
 
-void decode_body(FieldReader& r, CreateRoom& m) {
+void decode_body(JsonReader& r, CreateRoom& m) {
     m.seats = decode_seat_count(r);
     if (r.has("rule_set")) {
-        m.rule_set = r.enumeration("rule_set", RuleSet::Icf);
+        m.rule_set = r.enumeration("rule_set", kRuleSetNames, RuleSet::Icf);
     }
     if (r.has("options")) {
         if (const json* options = r.object("options")) {
-            FieldReader child(*options, "options.");
+            JsonReader child = r.nested(*options, r.path_of("options"));
             decode_options(child, m.options);
-            r.merge(child);
+            r.merge(child.error());
         }
     }
     if (r.has("bot")) {
         if (const json* bot = r.object("bot")) {
-            FieldReader child(*bot, "bot.");
+            JsonReader child = r.nested(*bot, r.path_of("bot"));
             BotSeat seat;
             if (child.has("level")) {
-                seat.level = child.enumeration("level", BotLevel::Medium);
+                seat.level = child.enumeration("level", kBotLevelNames, BotLevel::Medium);
             }
             if (child.has("seats") && r.ok()) {
                 seat.seats = decode_bot_seats(child, m.seats);
             }
-            r.merge(child);
+            r.merge(child.error());
             m.bot = seat;
         }
     }
 }
 
-void decode_body(FieldReader& r, JoinRoom& m) {
+void decode_body(JsonReader& r, JoinRoom& m) {
     m.code = r.text("code", kRoomCodeLength, kRoomCodeLength);
     if (r.ok() && !is_room_code(m.code)) {
         r.fail("code", "must be 6 characters from " + std::string(kRoomCodeAlphabet));
     }
     if (r.has("as")) {
-        m.as = r.enumeration("as", Role::Player);
+        m.as = r.enumeration("as", kRoleNames, Role::Player);
     }
 }
 
-void decode_body(FieldReader& r, QuickMatch& m) {
+void decode_body(JsonReader& r, QuickMatch& m) {
     if (r.has("rule_set")) {
-        m.rule_set = r.enumeration("rule_set", RuleSet::Icf);
+        m.rule_set = r.enumeration("rule_set", kRuleSetNames, RuleSet::Icf);
     }
     m.seats = decode_seat_count(r);
 }
 
-void decode_body(FieldReader& r, Aim& m) {
+void decode_body(JsonReader& r, Aim& m) {
     m.turn = static_cast<int>(r.integer("turn", 0, kMaxTurn));
-    m.x_px = r.number("x", 0.0, kMaxCoordinatePx);
+    m.x_px = r.number("x", {0.0, kMaxCoordinatePx});
 }
 
-void decode_body(FieldReader& r, Shoot& m) {
+void decode_body(JsonReader& r, Shoot& m) {
     m.turn = static_cast<int>(r.integer("turn", 0, kMaxTurn));
-    m.x_px = r.number("x", 0.0, kMaxCoordinatePx);
-    m.angle_rad = r.number("angle", -kMaxAngleRad, kMaxAngleRad);
-    m.power = r.number("power", 0.0, kMaxPower);
+    m.x_px = r.number("x", {0.0, kMaxCoordinatePx});
+    m.angle_rad = r.number("angle", {-kMaxAngleRad, kMaxAngleRad});
+    m.power = r.number("power", {0.0, kMaxPower});
 }
 
-void decode_body(FieldReader&, Rematch&) {}
-void decode_body(FieldReader&, Leave&) {}
-void decode_body(FieldReader& r, Ping& m) {
+void decode_body(JsonReader&, Rematch&) {}
+void decode_body(JsonReader&, Leave&) {}
+void decode_body(JsonReader& r, Ping& m) {
     m.nonce = r.integer("nonce", 0, kMaxNonce);
-}
-
-template <class M> DecodedMessage<ClientMessage> decode_as(const json& value) {
-    FieldReader reader(value, "");
-    M message;
-    decode_body(reader, message);
-    if (!reader.ok()) {
-        return {std::nullopt, *reader.error()};
-    }
-    return {ClientMessage{std::move(message)}, {}};
-}
-
-template <std::size_t I = 0>
-DecodedMessage<ClientMessage> decode_index(std::size_t index, const json& value) {
-    if constexpr (I < std::variant_size_v<ClientMessage>) {
-        if (index == I) {
-            return decode_as<std::variant_alternative_t<I, ClientMessage>>(value);
-        }
-        return decode_index<I + 1>(index, value);
-    } else {
-        return {std::nullopt, Error{std::string(code::kInternal), "No such message index."}};
-    }
 }
 
 } // namespace
@@ -230,21 +209,13 @@ std::string_view type_name(const ClientMessage& message) {
 }
 
 json to_json(const ClientMessage& message) {
-    json out = std::visit([](const auto& m) { return encode_body(m); }, message);
-    out["type"] = type_name(message);
-    return out;
+    return detail::encode_message(message, detail::kClientTypeNames,
+                                  [](const auto& m) { return encode_body(m); });
 }
 
 DecodedMessage<ClientMessage> client_from_json(const json& value) {
-    const auto type = detail::message_type(value);
-    if (!type.ok()) {
-        return {std::nullopt, type.error};
-    }
-    const auto index = detail::find_type(detail::kClientTypeNames, type.name);
-    if (!index) {
-        return {std::nullopt, detail::unknown_type_error(type.name)};
-    }
-    return decode_index(*index, value);
+    return detail::decode_message<ClientMessage>(
+        value, detail::kClientTypeNames, [](JsonReader& r, auto& body) { decode_body(r, body); });
 }
 
 } // namespace carrom::proto

@@ -16,19 +16,11 @@ bool is_match_id(std::string_view text) {
 }
 
 std::string_view to_string(ForfeitReason reason) {
-    return reason == ForfeitReason::Left ? "left" : "grace_expired";
+    return enum_names::name_or_unknown(kForfeitReasonNames, reason);
 }
 
 bool parse(std::string_view text, ForfeitReason& out) {
-    if (text == "left") {
-        out = ForfeitReason::Left;
-        return true;
-    }
-    if (text == "grace_expired") {
-        out = ForfeitReason::GraceExpired;
-        return true;
-    }
-    return false;
+    return enum_names::parse_into(kForfeitReasonNames, text, out);
 }
 
 std::string_view event_type(const JournalEvent& event) {

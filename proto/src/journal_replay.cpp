@@ -117,10 +117,9 @@ std::optional<Input> input_of(const JournalEvent& event) {
         event);
 }
 
-std::optional<JsonError> check_head(const MatchCreated& c) {
+std::optional<Error> check_head(const MatchCreated& c) {
     const auto bad = [](std::string path, std::string message) {
-        return JsonError{std::string(replay_code::kBadJournal), std::move(path),
-                         std::move(message)};
+        return Error{std::string(replay_code::kBadJournal), std::move(message), std::move(path)};
     };
     if (auto problem = rules::validate_rules_config(c.rules)) {
         return bad("match.rules." + problem->field, problem->message);
@@ -176,16 +175,17 @@ rules::MatchState initial_state(const MatchCreated& created) {
     return state;
 }
 
-std::optional<JsonError> check_versions(const MatchCreated& created) {
+std::optional<Error> check_versions(const MatchCreated& created) {
     const JournalVersions& v = created.versions;
     if (v.physics == kPhysicsVersion && v.rules == rules::kRulesVersion) {
         return std::nullopt;
     }
-    return JsonError{std::string(replay_code::kVersionMismatch), "match.versions",
-                     "the journal was written with physics version " + std::to_string(v.physics) +
-                         " and rules version " + std::to_string(v.rules) +
-                         "; this build has physics version " + std::to_string(kPhysicsVersion) +
-                         " and rules version " + std::to_string(rules::kRulesVersion)};
+    return Error{std::string(replay_code::kVersionMismatch),
+                 "the journal was written with physics version " + std::to_string(v.physics) +
+                     " and rules version " + std::to_string(v.rules) +
+                     "; this build has physics version " + std::to_string(kPhysicsVersion) +
+                     " and rules version " + std::to_string(rules::kRulesVersion),
+                 "match.versions"};
 }
 
 ReplayResult replay(const MatchJournal& journal, const ReplayOptions& options) {

@@ -2,48 +2,10 @@
 
 #include "carrom/proto/match_json.hpp"
 
-#include <array>
-#include <utility>
-
 namespace carrom::proto {
 namespace {
 
 using Json = nlohmann::json;
-
-constexpr std::array<std::pair<rules::Phase, std::string_view>, 3> kPhaseNames{{
-    {rules::Phase::AwaitingShot, "awaiting_shot"},
-    {rules::Phase::BoardOver, "board_over"},
-    {rules::Phase::GameOver, "game_over"},
-}};
-
-constexpr std::array<std::pair<rules::QueenStatus, std::string_view>, 4> kQueenNames{{
-    {rules::QueenStatus::OnBoard, "on_board"},
-    {rules::QueenStatus::PendingCover, "pending_cover"},
-    {rules::QueenStatus::Covered, "covered"},
-    {rules::QueenStatus::OutOfPlay, "out_of_play"},
-}};
-
-template <class E, std::size_t N>
-std::string_view name_in(const std::array<std::pair<E, std::string_view>, N>& names, E value) {
-    for (const auto& [v, name] : names) {
-        if (v == value) {
-            return name;
-        }
-    }
-    return "unknown";
-}
-
-template <class E, std::size_t N>
-bool parse_in(const std::array<std::pair<E, std::string_view>, N>& names, std::string_view text,
-              E& out) {
-    for (const auto& [v, name] : names) {
-        if (name == text) {
-            out = v;
-            return true;
-        }
-    }
-    return false;
-}
 
 Json optional_team(const std::optional<int>& team) {
     return team ? Json(*team) : Json(nullptr);
@@ -90,16 +52,16 @@ Json returned_to_json(const std::vector<rules::ReturnedPiece>& returned) {
 } // namespace
 
 std::string_view to_string(rules::Phase phase) {
-    return name_in(kPhaseNames, phase);
+    return enum_names::name_or_unknown(kMatchPhaseNames, phase);
 }
 bool parse_phase(std::string_view text, rules::Phase& out) {
-    return parse_in(kPhaseNames, text, out);
+    return enum_names::parse_into(kMatchPhaseNames, text, out);
 }
 std::string_view to_string(rules::QueenStatus status) {
-    return name_in(kQueenNames, status);
+    return enum_names::name_or_unknown(kQueenStatusNames, status);
 }
 bool parse_queen_status(std::string_view text, rules::QueenStatus& out) {
-    return parse_in(kQueenNames, text, out);
+    return enum_names::parse_into(kQueenStatusNames, text, out);
 }
 
 Json rules_config_to_json(const rules::RulesConfig& c) {

@@ -1,9 +1,10 @@
-// Decoding of match states and rules configs (see match_json.hpp). Never throws: every value is
-// type- and range-checked before use, and the first problem is returned with its path.
+// Decoding of match states and rules configs (see match_json.hpp), read with JsonReader in the
+// Document wording. Never throws: every value is type- and range-checked before use, and the
+// first problem is returned with its path. Every field but "rule_set" is optional.
 
 #include "carrom/proto/match_json.hpp"
 
-#include "scene_json_read.hpp"
+#include "json_reader.hpp"
 
 #include <algorithm>
 #include <cstdint>
@@ -14,77 +15,26 @@
 namespace carrom::proto {
 namespace {
 
-using namespace scene_json_detail;
+using Json = nlohmann::json;
+using MaybeError = std::optional<Error>;
+using namespace detail; // JsonReader, Wording, Range, field_path, index_path
 using rules::MatchState;
 
 constexpr int kMaxCount = 1000000;
 constexpr int kMaxTurn = std::numeric_limits<int>::max();
 
-// Reads optional fields of one object in sequence; after the first problem it reads nothing.
-class Fields {
-public:
-    Fields(const Json& j, std::string path) : j_(j), path_(std::move(path)) {}
-
-    MaybeError error;
-
-    bool has(std::string_view key) const { return !error && j_.contains(key); }
-    std::string at(std::string_view key) const { return field_path(path_, key); }
-    const Json& operator[](std::string_view key) const { return j_[std::string(key)]; }
-
-    void integer(std::string_view key, int lo, int hi, int& out) {
-        std::int64_t v = 0;
-        if (has(key) && !(error = read_integer((*this)[key], at(key), lo, hi, v))) {
-            out = static_cast<int>(v);
-        }
-    }
-    void number(std::string_view key, Range range, double& out) {
-        if (has(key)) {
-            error = read_number((*this)[key], at(key), range, out);
-        }
-    }
-    void boolean(std::string_view key, bool& out) {
-        if (has(key)) {
-            error = read_bool((*this)[key], at(key), out);
-        }
-    }
-    template <class E>
-    void enumeration(std::string_view key, bool (*parse)(std::string_view, E&), E& out) {
-        std::string text;
-        if (!has(key) || (error = read_string((*this)[key], at(key), 64, text))) {
-            return;
-        }
-        if (!parse(text, out)) {
-            error = make_error(scene_code::kBadValue, at(key),
-                               at(key) + " has no value \"" + text + "\"");
-        }
-    }
-    // An array of exactly `size` integers in [lo, hi].
-    void int_array(std::string_view key, std::size_t size, int lo, int hi, std::vector<int>& out) {
-        if (!has(key)) {
-            return;
-        }
-        const Json& a = (*this)[key];
-        if (!a.is_array() || a.size() != size) {
-            error =
-                make_error(scene_code::kWrongType, at(key),
-                           at(key) + " must be an array of " + std::to_string(size) + " integers");
-            return;
-        }
-        for (std::size_t i = 0; i < size && !error; ++i) {
-            std::int64_t v = 0;
-            error = read_integer(a[i], index_path(at(key), i), lo, hi, v);
-            out[i] = static_cast<int>(v);
-        }
-    }
-
-private:
-    const Json& j_;
-    std::string path_;
-};
-
-JsonError inconsistent(std::string path, std::string message) {
-    return make_error(match_code::kInconsistentState, std::move(path), std::move(message));
+Error inconsistent(std::string path, std::string message) {
+    return Error{std::string(match_code::kInconsistentState), std::move(message), std::move(path)};
 }
+
+// Keeps out when key is absent (or r has an error).
+void read_if_present(JsonReader& r, std::string_view key, int min, int max, int& out) {
+    if (r.has(key)) {
+        out = r.small_int(key, min, max);
+    }
+}
+
+constexpr std::string_view kNotRuleCode = "is not a rule code";
 
 struct IntField {
     std::string_view name;
@@ -104,54 +54,53 @@ MaybeError decode_freestyle(const Json& j, const std::string& path, rules::Frees
                                      {"queen", &rules::FreestylePoints::queen},
                                      {"striker_penalty", &rules::FreestylePoints::striker_penalty},
                                      {"target", &rules::FreestylePoints::target}};
-    if (auto e = check_object(j, path, {"white", "black", "queen", "striker_penalty", "target"})) {
-        return e;
+    JsonReader r(j, path, Wording::Document);
+    if (r.only_keys({"white", "black", "queen", "striker_penalty", "target"})) {
+        for (const FreestyleField& field : fields) {
+            read_if_present(r, field.name, 0, kMaxFileScore, out.*(field.member));
+        }
     }
-    Fields f(j, path);
-    for (const FreestyleField& field : fields) {
-        f.integer(field.name, 0, kMaxFileScore, out.*(field.member));
-    }
-    return f.error;
+    return r.error();
 }
 
-std::optional<int> team_or_null(Fields& f, std::string_view key, int teams) {
-    if (!f.has(key) || f[key].is_null()) {
+std::optional<int> team_or_null(JsonReader& r, std::string_view key, int teams) {
+    if (r.find_optional(key) == nullptr) {
         return std::nullopt;
     }
-    int team = 0;
-    f.integer(key, 0, teams - 1, team);
-    return team;
+    return r.small_int(key, 0, teams - 1);
 }
 
 MaybeError read_board_result(const Json& j, const std::string& path, int teams,
                              rules::BoardResult& out) {
-    if (auto e = check_object(j, path, {"board", "winner_team", "points", "reason"})) {
-        return e;
+    JsonReader r(j, path, Wording::Document);
+    if (r.only_keys({"board", "winner_team", "points", "reason"})) {
+        read_if_present(r, "board", 1, kMaxCount, out.board);
+        out.winner_team = team_or_null(r, "winner_team", teams);
+        read_if_present(r, "points", 0, kMaxFileScore, out.points);
+        if (r.has("reason")) {
+            out.reason = r.enumeration("reason", rules::kRuleCodeNames, out.reason, kNotRuleCode);
+        }
     }
-    Fields f(j, path);
-    f.integer("board", 1, kMaxCount, out.board);
-    out.winner_team = team_or_null(f, "winner_team", teams);
-    f.integer("points", 0, kMaxFileScore, out.points);
-    f.enumeration("reason", &rules::parse_rule_code, out.reason);
-    return f.error;
+    return r.error();
 }
 
 MaybeError read_game_result(const Json& j, const std::string& path, int teams,
                             rules::GameResult& out) {
-    if (auto e = check_object(j, path, {"winner_team", "reason"})) {
-        return e;
+    JsonReader r(j, path, Wording::Document);
+    if (r.only_keys({"winner_team", "reason"})) {
+        out.winner_team = team_or_null(r, "winner_team", teams);
+        if (r.has("reason")) {
+            out.reason = r.enumeration("reason", rules::kRuleCodeNames, out.reason, kNotRuleCode);
+        }
     }
-    Fields f(j, path);
-    out.winner_team = team_or_null(f, "winner_team", teams);
-    f.enumeration("reason", &rules::parse_rule_code, out.reason);
-    return f.error;
+    return r.error();
 }
 
 // 19 bodies with ids 0..18 (any order), the queen 0, nine black and nine white, at rest.
 MaybeError decode_bodies(const Json& j, const std::string& path, MatchState& s) {
     if (!j.is_array() || j.size() != static_cast<std::size_t>(kCoinCount)) {
-        return make_error(scene_code::kWrongType, path,
-                          path + " must be an array of the 19 pieces (ids 0..18)");
+        return Error{std::string(scene_code::kWrongType),
+                     path + " must be an array of the 19 pieces (ids 0..18)", path};
     }
     std::vector<Body> bodies(j.size());
     std::vector<bool> seen(j.size(), false);
@@ -186,10 +135,8 @@ MaybeError decode_bodies(const Json& j, const std::string& path, MatchState& s) 
                                             return b.contains("id") && b["id"] == problem->body_id;
                                         }) -
                            j.begin();
-        return make_error(
-            problem->code,
-            field_path(index_path(path, static_cast<std::size_t>(index)), problem->field),
-            problem->message);
+        return Error{problem->code, problem->message,
+                     field_path(index_path(path, static_cast<std::size_t>(index)), problem->field)};
     }
     s.bodies = std::move(bodies);
     return std::nullopt;
@@ -197,26 +144,21 @@ MaybeError decode_bodies(const Json& j, const std::string& path, MatchState& s) 
 
 MaybeError decode_pocketed(const Json& j, const std::string& path, MatchState& s) {
     if (!j.is_array() || j.size() > static_cast<std::size_t>(kCoinCount)) {
-        return make_error(scene_code::kWrongType, path,
-                          path + " must be an array of at most 19 pieces");
+        return Error{std::string(scene_code::kWrongType),
+                     path + " must be an array of at most 19 pieces", path};
     }
     s.pocketed.clear();
     const int seats = static_cast<int>(s.seats.size());
     for (std::size_t i = 0; i < j.size(); ++i) {
-        const std::string at = index_path(path, i);
-        if (auto e = check_object(j[i], at, {"id", "seat", "turn_number"})) {
-            return e;
-        }
-        if (auto e = require_field(j[i], "id", at)) {
-            return e;
-        }
-        Fields f(j[i], at);
+        JsonReader r(j[i], index_path(path, i), Wording::Document);
         rules::PocketedPiece p;
-        f.integer("id", 0, kCoinCount - 1, p.id);
-        f.integer("seat", 0, seats - 1, p.seat);
-        f.integer("turn_number", 0, kMaxTurn, p.turn_number);
-        if (f.error) {
-            return f.error;
+        if (r.only_keys({"id", "seat", "turn_number"})) {
+            p.id = r.small_int("id", 0, kCoinCount - 1);
+            read_if_present(r, "seat", 0, seats - 1, p.seat);
+            read_if_present(r, "turn_number", 0, kMaxTurn, p.turn_number);
+        }
+        if (!r.ok()) {
+            return r.error();
         }
         p.kind = s.bodies[static_cast<std::size_t>(p.id)].kind;
         s.pocketed.push_back(p);
@@ -236,14 +178,15 @@ void derive_pocketed(MatchState& s) {
 }
 
 MaybeError decode_queen(const Json& j, const std::string& path, MatchState& s) {
-    if (auto e = check_object(j, path, {"status", "seat"})) {
-        return e;
+    JsonReader r(j, path, Wording::Document);
+    if (r.only_keys({"status", "seat"})) {
+        if (r.has("status")) {
+            s.queen.status = r.enumeration("status", kQueenStatusNames, s.queen.status);
+        }
+        s.queen.seat = -1;
+        read_if_present(r, "seat", -1, static_cast<int>(s.seats.size()) - 1, s.queen.seat);
     }
-    Fields f(j, path);
-    f.enumeration("status", &parse_queen_status, s.queen.status);
-    s.queen.seat = -1;
-    f.integer("seat", -1, static_cast<int>(s.seats.size()) - 1, s.queen.seat);
-    return f.error;
+    return r.error();
 }
 
 MaybeError check_pieces(const std::string& path, const MatchState& s) {
@@ -288,45 +231,54 @@ MaybeError check_queen(const std::string& path, const MatchState& s) {
     return std::nullopt;
 }
 
-MaybeError decode_counters(Fields& f, MatchState& s) {
+MaybeError decode_counters(JsonReader& r, MatchState& s) {
     const auto teams = s.scores.size();
     const int seats = static_cast<int>(s.seats.size());
-    f.int_array("scores", teams, -kMaxFileScore, kMaxFileScore, s.scores);
-    f.int_array("dues_owed", teams, 0, kCoinCount, s.dues_owed);
-    f.int_array("missed_turns", s.seats.size(), 0, kMaxCount, s.missed_turns);
-    f.integer("board", 1, kMaxCount, s.board);
-    f.integer("breaker", 0, seats - 1, s.breaker);
-    f.integer("turn_seat", 0, seats - 1, s.turn_seat);
-    f.integer("turn_number", 0, kMaxTurn, s.turn_number);
-    f.integer("strokes_this_board", 0, kMaxTurn, s.strokes_this_board);
-    f.integer("break_tries", 0, s.config.break_tries - 1, s.break_tries);
-    f.boolean("break_done", s.break_done);
-    f.enumeration("phase", &parse_phase, s.phase);
-    return f.error;
+    const auto read_ints = [&r](std::string_view key, std::size_t size, int min, int max,
+                                std::vector<int>& out) {
+        if (r.has(key)) {
+            out = r.int_array(key, min, max, size, true);
+        }
+    };
+    read_ints("scores", teams, -kMaxFileScore, kMaxFileScore, s.scores);
+    read_ints("dues_owed", teams, 0, kCoinCount, s.dues_owed);
+    read_ints("missed_turns", s.seats.size(), 0, kMaxCount, s.missed_turns);
+    read_if_present(r, "board", 1, kMaxCount, s.board);
+    read_if_present(r, "breaker", 0, seats - 1, s.breaker);
+    read_if_present(r, "turn_seat", 0, seats - 1, s.turn_seat);
+    read_if_present(r, "turn_number", 0, kMaxTurn, s.turn_number);
+    read_if_present(r, "strokes_this_board", 0, kMaxTurn, s.strokes_this_board);
+    read_if_present(r, "break_tries", 0, s.config.break_tries - 1, s.break_tries);
+    if (r.has("break_done")) {
+        s.break_done = r.boolean("break_done");
+    }
+    if (r.has("phase")) {
+        s.phase = r.enumeration("phase", kMatchPhaseNames, s.phase);
+    }
+    return r.error();
 }
 
-MaybeError decode_results(Fields& f, MatchState& s, const std::string& path) {
+MaybeError decode_results(JsonReader& r, MatchState& s, const std::string& path) {
     const int teams = static_cast<int>(s.scores.size());
-    if (f.has("boards")) {
-        const Json& a = f["boards"];
+    if (r.has("boards")) {
+        const Json& a = *r.find("boards");
+        const std::string at = r.path_of("boards");
         if (!a.is_array() || a.size() > static_cast<std::size_t>(kMaxCount)) {
-            return make_error(scene_code::kWrongType, f.at("boards"),
-                              f.at("boards") + " must be an array");
+            return Error{std::string(scene_code::kWrongType), at + " must be an array", at};
         }
         s.boards.assign(a.size(), {});
         for (std::size_t i = 0; i < a.size(); ++i) {
-            if (auto e =
-                    read_board_result(a[i], index_path(f.at("boards"), i), teams, s.boards[i])) {
+            if (auto e = read_board_result(a[i], index_path(at, i), teams, s.boards[i])) {
                 return e;
             }
         }
     }
-    if (f.has("result") && !f["result"].is_null()) {
-        rules::GameResult result;
-        if (auto e = read_game_result(f["result"], f.at("result"), teams, result)) {
+    if (const Json* result = r.find_optional("result")) {
+        rules::GameResult decoded;
+        if (auto e = read_game_result(*result, r.path_of("result"), teams, decoded)) {
             return e;
         }
-        s.result = result;
+        s.result = decoded;
     }
     if (s.result.has_value() != (s.phase == rules::Phase::GameOver)) {
         return inconsistent(field_path(path, "result"),
@@ -335,17 +287,17 @@ MaybeError decode_results(Fields& f, MatchState& s, const std::string& path) {
     return std::nullopt;
 }
 
-MaybeError check_state_keys(const Json& j, const std::string& path) {
-    return check_object(j, path, {"rule_set",     "rules",
-                                  "physics",      "seats",
-                                  "bodies",       "pocketed",
-                                  "scores",       "dues_owed",
-                                  "missed_turns", "board",
-                                  "breaker",      "turn_seat",
-                                  "turn_number",  "strokes_this_board",
-                                  "break_tries",  "break_done",
-                                  "queen",        "phase",
-                                  "boards",       "result"});
+bool check_state_keys(JsonReader& r) {
+    return r.only_keys({"rule_set",     "rules",
+                        "physics",      "seats",
+                        "bodies",       "pocketed",
+                        "scores",       "dues_owed",
+                        "missed_turns", "board",
+                        "breaker",      "turn_seat",
+                        "turn_number",  "strokes_this_board",
+                        "break_tries",  "break_done",
+                        "queen",        "phase",
+                        "boards",       "result"});
 }
 
 } // namespace
@@ -378,121 +330,106 @@ Decoded<rules::RulesConfig> decode_rules_config(const nlohmann::json& j,
         {"board_points_cap", &rules::RulesConfig::board_points_cap, 1, kMaxFileScore},
         {"break_tries", &rules::RulesConfig::break_tries, 1, 100},
     };
-    Decoded<rules::RulesConfig> out;
-    out.value = base;
-    if (auto e =
-            check_object(j, path,
-                         {"seat_count", "first_breaker", "shot_clock_s", "shot_clock_grace_s",
-                          "missed_turns_to_lose", "target_points", "max_boards", "queen_points",
-                          "queen_points_limit", "board_points_cap", "break_tries", "freestyle"})) {
-        out.error = e;
-        return out;
-    }
-    Fields f(j, path);
-    for (const IntField& field : ints) {
-        f.integer(field.name, field.lo, field.hi, out.value.*(field.member));
-    }
-    f.number("shot_clock_s", Range{0.0, 3600.0}, out.value.shot_clock_s);
-    f.number("shot_clock_grace_s", Range{0.0, 3600.0}, out.value.shot_clock_grace_s);
-    if (f.has("freestyle")) {
-        f.error = decode_freestyle(f["freestyle"], f.at("freestyle"), out.value.freestyle);
-    }
-    out.error = f.error;
-    if (!out.error) {
-        if (auto problem = rules::validate_rules_config(out.value)) {
-            out.error = make_error(scene_code::kInvalidConfig, field_path(path, problem->field),
-                                   problem->message);
+    rules::RulesConfig out = base;
+    JsonReader r(j, path, Wording::Document);
+    if (r.only_keys({"seat_count", "first_breaker", "shot_clock_s", "shot_clock_grace_s",
+                     "missed_turns_to_lose", "target_points", "max_boards", "queen_points",
+                     "queen_points_limit", "board_points_cap", "break_tries", "freestyle"})) {
+        for (const IntField& field : ints) {
+            read_if_present(r, field.name, field.lo, field.hi, out.*(field.member));
+        }
+        for (const auto& [key, member] :
+             {std::pair{"shot_clock_s", &rules::RulesConfig::shot_clock_s},
+              std::pair{"shot_clock_grace_s", &rules::RulesConfig::shot_clock_grace_s}}) {
+            if (r.has(key)) {
+                out.*member = r.number(key, Range{0.0, 3600.0});
+            }
+        }
+        if (const Json* freestyle = r.has("freestyle") ? r.find("freestyle") : nullptr) {
+            r.merge(decode_freestyle(*freestyle, r.path_of("freestyle"), out.freestyle));
         }
     }
-    return out;
+    if (r.ok()) {
+        if (auto problem = rules::validate_rules_config(out)) {
+            r.merge(Error{std::string(scene_code::kInvalidConfig), problem->message,
+                          field_path(path, problem->field)});
+        }
+    }
+    return {out, r.error()};
 }
 
 Decoded<rules::MatchState> decode_match_state(const nlohmann::json& j, const std::string& path) {
     Decoded<MatchState> out;
-    const auto fail = [&out](JsonError e) {
-        out.error = std::move(e);
+    const auto fail = [&out](const std::optional<Error>& e) {
+        out.error = e;
         return out;
     };
-    if (auto e = check_state_keys(j, path)) {
-        return fail(*e);
-    }
-    Fields f(j, path);
+    JsonReader r(j, path, Wording::Document);
     rules::RuleSet rule_set = rules::RuleSet::Icf;
-    f.enumeration("rule_set", &rules::parse_rule_set, rule_set);
-    if (f.error) {
-        return fail(*f.error);
+    if (check_state_keys(r) && r.has("rule_set")) {
+        rule_set = r.enumeration("rule_set", rules::kRuleSetNames, rule_set);
     }
     rules::RulesConfig config;
-    if (f.has("rules")) {
-        auto decoded = decode_rules_config(f["rules"], {}, f.at("rules"));
-        if (!decoded.ok()) {
-            return fail(*decoded.error);
-        }
+    if (const Json* rules = r.has("rules") ? r.find("rules") : nullptr) {
+        auto decoded = decode_rules_config(*rules, {}, r.path_of("rules"));
+        r.merge(decoded.error);
         config = decoded.value;
     }
     PhysicsConfig physics;
-    if (f.has("physics")) {
-        auto decoded = decode_config(f["physics"], {}, f.at("physics"));
-        if (!decoded.ok()) {
-            return fail(*decoded.error);
-        }
+    if (const Json* physics_json = r.has("physics") ? r.find("physics") : nullptr) {
+        auto decoded = decode_config(*physics_json, {}, r.path_of("physics"));
+        r.merge(decoded.error);
         physics = decoded.value;
     }
+    if (!r.ok()) {
+        return fail(r.error());
+    }
     MatchState s = rules::new_match(rule_set, config, physics);
-    if (f.has("bodies")) {
-        if (auto e = decode_bodies(f["bodies"], f.at("bodies"), s)) {
-            return fail(*e);
+    if (r.has("bodies")) {
+        if (auto e = decode_bodies(*r.find("bodies"), r.path_of("bodies"), s)) {
+            return fail(e);
         }
         derive_pocketed(s);
         if (!s.bodies[kQueenId].pocketed && rule_set != rules::RuleSet::DiscPool) {
             s.queen = {};
         }
     }
-    if (f.has("pocketed")) {
-        if (auto e = decode_pocketed(f["pocketed"], f.at("pocketed"), s)) {
-            return fail(*e);
+    if (r.has("pocketed")) {
+        if (auto e = decode_pocketed(*r.find("pocketed"), r.path_of("pocketed"), s)) {
+            return fail(e);
         }
     }
-    if (f.has("queen")) {
-        if (auto e = decode_queen(f["queen"], f.at("queen"), s)) {
-            return fail(*e);
+    if (r.has("queen")) {
+        if (auto e = decode_queen(*r.find("queen"), r.path_of("queen"), s)) {
+            return fail(e);
         }
     }
-    if (auto e = decode_counters(f, s)) {
-        return fail(*e);
+    if (auto e = decode_counters(r, s)) {
+        return fail(e);
     }
-    if (auto e = decode_results(f, s, path)) {
-        return fail(*e);
+    if (auto e = decode_results(r, s, path)) {
+        return fail(e);
     }
     if (auto e = check_pieces(path, s)) {
-        return fail(*e);
+        return fail(e);
     }
     if (auto e = check_queen(path, s)) {
-        return fail(*e);
+        return fail(e);
     }
     out.value = std::move(s);
     return out;
 }
 
 Decoded<Shot> decode_rules_shot(const nlohmann::json& j, const std::string& path) {
-    Decoded<Shot> out;
-    if (auto e = check_object(j, path, {"x", "angle", "power"})) {
-        out.error = e;
-        return out;
+    Shot out;
+    JsonReader r(j, path, Wording::Document);
+    if (r.only_keys({"x", "angle", "power"}) && r.require({"x", "angle", "power"})) {
+        const double big = std::numeric_limits<double>::max();
+        out.x_px = r.number("x", Range{-big, big});
+        out.angle_rad = r.number("angle", Range{-big, big});
+        out.power = r.number("power", Range{-big, big});
     }
-    for (std::string_view key : {"x", "angle", "power"}) {
-        if (auto e = require_field(j, key, path)) {
-            out.error = e;
-            return out;
-        }
-    }
-    const double big = std::numeric_limits<double>::max();
-    Fields f(j, path);
-    f.number("x", Range{-big, big}, out.value.x_px);
-    f.number("angle", Range{-big, big}, out.value.angle_rad);
-    f.number("power", Range{-big, big}, out.value.power);
-    out.error = f.error;
-    return out;
+    return {out, r.error()};
 }
 
 } // namespace carrom::proto

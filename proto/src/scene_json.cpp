@@ -1,11 +1,11 @@
-// Decoders for scene JSON (docs/carrom-sim.md). Every check names the JSON path of the value it
-// rejects; the first problem found is returned, in a fixed order (document order of the known
-// fields as listed here, not of the text).
+// Decoders for scene JSON (docs/carrom-sim.md), read with JsonReader in the Document wording.
+// Every check names the JSON path of the value it rejects; the first problem found is returned, in
+// a fixed order (the order of the known fields as listed here, not of the text).
 
 #include "carrom/proto/scene_json.hpp"
 
 #include "carrom/proto/limits.hpp"
-#include "scene_json_read.hpp"
+#include "json_reader.hpp"
 
 #include <array>
 #include <string>
@@ -14,7 +14,8 @@
 
 namespace carrom::proto {
 
-using namespace scene_json_detail;
+using Json = nlohmann::json;
+using namespace detail; // JsonReader, Wording, Range, field_path, index_path
 
 namespace {
 
@@ -52,22 +53,25 @@ const std::array<ConfigField, 16>& config_fields() {
 // accepted scene to about a second of work (docs/carrom-sim.md).
 constexpr std::int64_t kMaxEventsLimit = 500000;
 
-MaybeError check_config_keys(const Json& j, const std::string& path) {
-    if (!j.is_object()) {
-        return check_object(j, path, {});
-    }
-    for (const auto& item : j.items()) {
-        const std::string& key = item.key();
-        bool known = key == "max_events";
-        for (const ConfigField& field : config_fields()) {
-            known = known || key == field.name;
+// The names config objects may hold: every ConfigField and "max_events".
+const std::array<std::string_view, 17>& config_keys() {
+    static const std::array<std::string_view, 17> keys = [] {
+        std::array<std::string_view, 17> out{};
+        for (std::size_t i = 0; i < config_fields().size(); ++i) {
+            out[i] = config_fields()[i].name;
         }
-        if (!known) {
-            return make_error(scene_code::kUnknownField, field_path(path, key),
-                              "unknown field '" + key + "' in " + path);
-        }
-    }
-    return std::nullopt;
+        out.back() = "max_events";
+        return out;
+    }();
+    return keys;
+}
+
+Error document_error(std::string_view code, std::string path, std::string message) {
+    return Error{std::string(code), std::move(message), std::move(path)};
+}
+
+template <class T> Decoded<T> decoded(T value, const JsonReader& r) {
+    return Decoded<T>{std::move(value), r.error()};
 }
 
 // Parser callback state: one set of keys per open object, to reject duplicate keys.
@@ -113,67 +117,74 @@ std::string printable_ascii(std::string_view text) {
     return out;
 }
 
-MaybeError decode_kind(const Json& j, const std::string& path, BodyKind& out) {
-    std::string text;
-    if (auto e = read_string(j, path, 16, text)) {
-        return e;
+// [x, y] or {"x": x, "y": y} at r's key, each component in [-limit, limit]; component paths end
+// in ".x" / ".y".
+Vec2 read_vec(JsonReader& r, std::string_view key, double limit) {
+    Vec2 out;
+    const Json* j = r.find(key);
+    if (j == nullptr) {
+        return out;
     }
-    if (!parse_body_kind(text, out)) {
-        return make_error(scene_code::kBadValue, path,
-                          path + " must be \"black\", \"white\", \"queen\" or \"striker\"");
-    }
-    return std::nullopt;
-}
-
-MaybeError decode_baseline(const Json& j, const std::string& path, carrom::Baseline& out) {
-    std::string text;
-    if (auto e = read_string(j, path, 16, text)) {
-        return e;
-    }
-    if (text != "bottom" && text != "top") {
-        return make_error(scene_code::kBadValue, path, path + " must be \"bottom\" or \"top\"");
-    }
-    out = text == "bottom" ? carrom::Baseline::Bottom : carrom::Baseline::Top;
-    return std::nullopt;
-}
-
-MaybeError decode_bodies(const Json& j, const std::string& path, std::vector<Body>& out) {
-    if (!j.is_array()) {
-        return wrong_type(path, j, "an array");
-    }
-    if (j.size() > kMaxSceneBodies) {
-        return make_error(scene_code::kTooMany, path,
-                          path + " has " + std::to_string(j.size()) + " bodies; at most " +
-                              std::to_string(kMaxSceneBodies) + " are allowed");
-    }
-    out.reserve(j.size());
-    for (std::size_t i = 0; i < j.size(); ++i) {
-        auto body = decode_body(j[i], index_path(path, i));
-        if (!body.ok()) {
-            return body.error;
+    const std::string path = r.path_of(key);
+    const Range range{-limit, limit};
+    if (j->is_array()) {
+        if (j->size() != 2) {
+            r.fail_at(path, "must be [x, y], not an array of " + std::to_string(j->size()),
+                      scene_code::kWrongType);
+            return out;
         }
-        out.push_back(body.value);
+        out.x = r.number_at((*j)[0], field_path(path, "x"), range);
+        out.y = r.number_at((*j)[1], field_path(path, "y"), range);
+    } else if (j->is_object()) {
+        JsonReader v = r.nested(*j, path);
+        if (v.only_keys({"x", "y"}) && v.require({"x", "y"})) {
+            out.x = v.number("x", range);
+            out.y = v.number("y", range);
+        }
+        r.merge(v.error());
+    } else {
+        r.wrong_type(*j, path, "[x, y]");
     }
-    return std::nullopt;
+    return out;
 }
 
-MaybeError decode_layout(const Json& j, std::vector<Body>& out, const PhysicsConfig& config) {
-    std::string name;
-    if (auto e = read_string(j, "layout", 32, name)) {
-        return e;
+// An array at r's key of at most max_items values, each read by decode_item(value, path) (which
+// returns a Decoded<T>); too_many(path, size) words the error for a longer array.
+template <class T, class DecodeItem, class TooMany>
+std::vector<T> read_array(JsonReader& r, std::string_view key, std::size_t max_items,
+                          DecodeItem decode_item, TooMany too_many) {
+    std::vector<T> out;
+    const Json* j = r.find(key);
+    if (j == nullptr) {
+        return out;
     }
-    if (name != "standard") {
-        return make_error(scene_code::kBadValue, "layout", "layout must be \"standard\"");
+    const std::string path = r.path_of(key);
+    if (!j->is_array()) {
+        r.wrong_type(*j, path, "an array");
+    } else if (j->size() > max_items) {
+        r.merge(document_error(scene_code::kTooMany, path, too_many(path, j->size())));
     }
-    out = standard_layout(config);
-    return std::nullopt;
+    for (std::size_t i = 0; r.ok() && i < j->size(); ++i) {
+        auto item = decode_item((*j)[i], index_path(path, i));
+        r.merge(item.error);
+        out.push_back(std::move(item.value));
+    }
+    return out;
+}
+
+// An array of at most kMaxSceneBodies bodies.
+std::vector<Body> read_bodies(JsonReader& r, std::string_view key) {
+    return read_array<Body>(r, key, kMaxSceneBodies, &decode_body,
+                            [](const std::string& path, std::size_t size) {
+                                return path + " has " + std::to_string(size) + " bodies; at most " +
+                                       std::to_string(kMaxSceneBodies) + " are allowed";
+                            });
 }
 
 // Where a validate_scene error points in the document: bodies from the "bodies" array by index,
 // the shot's striker at "shot", layout bodies at "layout". A duplicate id points at the second
 // body with that id.
-JsonError scene_error_to_json(const SceneError& error, const Json& doc,
-                              std::span<const Body> bodies) {
+Error scene_error_to_json(const SceneError& error, const Json& doc, std::span<const Body> bodies) {
     std::string path;
     int skip = error.code == "duplicate_id" ? 1 : 0;
     for (std::size_t i = 0; i < bodies.size() && path.empty(); ++i) {
@@ -188,47 +199,30 @@ JsonError scene_error_to_json(const SceneError& error, const Json& doc,
             path = "layout";
         }
     }
-    return JsonError{error.code, path, error.message};
+    return document_error(error.code, path, error.message);
 }
 
-MaybeError decode_stats(const Json& j, const std::string& path, SimStats& out) {
-    if (auto e =
-            check_object(j, path, {"events", "contact_rounds", "collapse_solves", "pair_tests"})) {
-        return e;
+SimStats read_stats(JsonReader& parent, std::string_view key) {
+    SimStats out;
+    const Json* j = parent.find(key);
+    if (j == nullptr) {
+        return out;
     }
-    const std::pair<std::string_view, int*> fields[] = {{"events", &out.events},
-                                                        {"contact_rounds", &out.contact_rounds},
-                                                        {"collapse_solves", &out.collapse_solves},
-                                                        {"pair_tests", &out.pair_tests}};
-    for (const auto& [name, member] : fields) {
-        if (auto e = require_field(j, name, path)) {
-            return e;
-        }
-        std::int64_t v = 0;
-        if (auto e = read_integer(j[name], field_path(path, name), 0, 2147483647, v)) {
-            return e;
-        }
-        *member = static_cast<int>(v);
+    JsonReader r = parent.nested(*j, parent.path_of(key));
+    if (r.only_keys({"events", "contact_rounds", "collapse_solves", "pair_tests"})) {
+        out.events = r.small_int("events", 0, 2147483647);
+        out.contact_rounds = r.small_int("contact_rounds", 0, 2147483647);
+        out.collapse_solves = r.small_int("collapse_solves", 0, 2147483647);
+        out.pair_tests = r.small_int("pair_tests", 0, 2147483647);
     }
-    return std::nullopt;
+    parent.merge(r.error());
+    return out;
 }
 
-MaybeError decode_events(const Json& j, const std::string& path, std::vector<Event>& out) {
-    if (!j.is_array()) {
-        return wrong_type(path, j, "an array");
-    }
-    if (j.size() > kMaxEvents) {
-        return make_error(scene_code::kTooMany, path, path + " has too many events");
-    }
-    out.reserve(j.size());
-    for (std::size_t i = 0; i < j.size(); ++i) {
-        auto event = decode_event(j[i], index_path(path, i));
-        if (!event.ok()) {
-            return event.error;
-        }
-        out.push_back(event.value);
-    }
-    return std::nullopt;
+std::vector<Event> read_events(JsonReader& r, std::string_view key) {
+    return read_array<Event>(
+        r, key, kMaxEvents, &decode_event,
+        [](const std::string& path, std::size_t) { return path + " has too many events"; });
 }
 
 } // namespace
@@ -236,23 +230,24 @@ MaybeError decode_events(const Json& j, const std::string& path, std::vector<Eve
 Decoded<nlohmann::json> parse_json_text(std::string_view text, std::size_t max_bytes) {
     Decoded<Json> out;
     if (text.size() > max_bytes) {
-        out.error = make_error(scene_code::kTooLarge, "",
-                               "the text is " + std::to_string(text.size()) + " bytes; at most " +
-                                   std::to_string(max_bytes) + " are allowed");
+        out.error =
+            document_error(scene_code::kTooLarge, "",
+                           "the text is " + std::to_string(text.size()) + " bytes; at most " +
+                               std::to_string(max_bytes) + " are allowed");
         return out;
     }
     if (nesting_depth(text) > kMaxJsonDepth) {
-        out.error = make_error(scene_code::kTooDeep, "",
-                               "arrays and objects are nested more than " +
-                                   std::to_string(kMaxJsonDepth) + " deep");
+        out.error = document_error(scene_code::kTooDeep, "",
+                                   "arrays and objects are nested more than " +
+                                       std::to_string(kMaxJsonDepth) + " deep");
         return out;
     }
     // The JSON library ends the input at a NUL byte and would ignore what follows; JSON never
     // holds a raw NUL (not even inside a string), so any NUL makes the text malformed.
     if (const auto nul = text.find('\0'); nul != std::string_view::npos) {
-        out.error =
-            make_error(scene_code::kMalformedJson, "",
-                       "the text is not valid JSON: a NUL byte at offset " + std::to_string(nul));
+        out.error = document_error(scene_code::kMalformedJson, "",
+                                   "the text is not valid JSON: a NUL byte at offset " +
+                                       std::to_string(nul));
         return out;
     }
     KeyTracker keys;
@@ -271,180 +266,118 @@ Decoded<nlohmann::json> parse_json_text(std::string_view text, std::size_t max_b
     try {
         out.value = Json::parse(text.begin(), text.end(), track);
     } catch (const Json::exception& e) {
-        out.error = make_error(scene_code::kMalformedJson, "",
-                               "the text is not valid JSON: " + printable_ascii(e.what()));
+        out.error = document_error(scene_code::kMalformedJson, "",
+                                   "the text is not valid JSON: " + printable_ascii(e.what()));
         return out;
     } catch (const std::exception& e) {
-        out.error = make_error(scene_code::kMalformedJson, "",
-                               "the text could not be parsed: " + printable_ascii(e.what()));
+        out.error = document_error(scene_code::kMalformedJson, "",
+                                   "the text could not be parsed: " + printable_ascii(e.what()));
         return out;
     }
     if (!keys.duplicate.empty()) {
         out.value = Json();
-        out.error = make_error(scene_code::kDuplicateKey, "",
-                               "the key '" + keys.duplicate + "' appears twice in one object");
+        out.error = document_error(scene_code::kDuplicateKey, "",
+                                   "the key '" + keys.duplicate + "' appears twice in one object");
     }
     return out;
 }
 
 Decoded<PhysicsConfig> decode_config(const nlohmann::json& j, const PhysicsConfig& base,
                                      const std::string& path) {
-    Decoded<PhysicsConfig> out;
-    out.value = base;
-    if (auto e = check_config_keys(j, path)) {
-        out.error = e;
-        return out;
+    PhysicsConfig out = base;
+    JsonReader r(j, path, Wording::Document);
+    if (!r.only_keys(config_keys())) {
+        return decoded(out, r);
     }
     for (const ConfigField& field : config_fields()) {
-        if (!j.contains(field.name)) {
-            continue;
-        }
-        auto e = read_number(j[field.name], field_path(path, field.name), field.range,
-                             out.value.*(field.member));
-        if (e) {
-            out.error = e;
-            return out;
+        if (r.has(field.name)) {
+            out.*(field.member) = r.number(field.name, field.range);
         }
     }
-    if (j.contains("max_events")) {
-        std::int64_t v = 0;
-        if (auto e = read_integer(j["max_events"], field_path(path, "max_events"), 1,
-                                  kMaxEventsLimit, v)) {
-            out.error = e;
-            return out;
+    if (r.has("max_events")) {
+        out.max_events = static_cast<int>(r.integer("max_events", 1, kMaxEventsLimit));
+    }
+    if (r.ok()) {
+        if (auto problem = validate_config(out)) {
+            r.merge(document_error(scene_code::kInvalidConfig, field_path(path, problem->field),
+                                   problem->message));
         }
-        out.value.max_events = static_cast<int>(v);
     }
-    if (auto problem = validate_config(out.value)) {
-        out.error = make_error(scene_code::kInvalidConfig, field_path(path, problem->field),
-                               problem->message);
-    }
-    return out;
+    return decoded(out, r);
 }
 
 Decoded<Body> decode_body(const nlohmann::json& j, const std::string& path) {
-    Decoded<Body> out;
-    auto fail = [&out](JsonError e) {
-        out.error = std::move(e);
-        return out;
-    };
-    if (auto e = check_object(j, path, {"id", "kind", "pos", "vel", "pocketed"})) {
-        return fail(*e);
-    }
-    for (std::string_view key : {"id", "kind", "pos"}) {
-        if (auto e = require_field(j, key, path)) {
-            return fail(*e);
+    Body out;
+    JsonReader r(j, path, Wording::Document);
+    if (r.only_keys({"id", "kind", "pos", "vel", "pocketed"}) && r.require({"id", "kind", "pos"})) {
+        out.id = static_cast<int>(r.integer("id", 0, kMaxBodyId));
+        out.kind = r.enumeration("kind", kBodyKindNames, BodyKind::Black);
+        out.pos_px = read_vec(r, "pos", kMaxCoordinatePx);
+        if (r.has("vel")) {
+            out.vel_px_s = read_vec(r, "vel", kMaxSpeedPxS);
+        }
+        if (r.has("pocketed")) {
+            out.pocketed = r.boolean("pocketed");
         }
     }
-    std::int64_t id = 0;
-    if (auto e = read_integer(j["id"], field_path(path, "id"), 0, kMaxBodyId, id)) {
-        return fail(*e);
-    }
-    out.value.id = static_cast<int>(id);
-    if (auto e = decode_kind(j["kind"], field_path(path, "kind"), out.value.kind)) {
-        return fail(*e);
-    }
-    if (auto e = read_vec(j["pos"], field_path(path, "pos"), kMaxCoordinatePx, out.value.pos_px)) {
-        return fail(*e);
-    }
-    if (j.contains("vel")) {
-        if (auto e =
-                read_vec(j["vel"], field_path(path, "vel"), kMaxSpeedPxS, out.value.vel_px_s)) {
-            return fail(*e);
-        }
-    }
-    if (j.contains("pocketed")) {
-        if (auto e = read_bool(j["pocketed"], field_path(path, "pocketed"), out.value.pocketed)) {
-            return fail(*e);
-        }
-    }
-    return out;
+    return decoded(out, r);
 }
 
 Decoded<ShotSpec> decode_shot(const nlohmann::json& j, const PhysicsConfig& config,
                               const std::string& path) {
-    Decoded<ShotSpec> out;
-    auto fail = [&out](JsonError e) {
-        out.error = std::move(e);
-        return out;
-    };
-    if (auto e = check_object(j, path, {"baseline", "x", "angle", "power"})) {
-        return fail(*e);
-    }
-    for (std::string_view key : {"x", "angle", "power"}) {
-        if (auto e = require_field(j, key, path)) {
-            return fail(*e);
+    ShotSpec out;
+    JsonReader r(j, path, Wording::Document);
+    if (r.only_keys({"baseline", "x", "angle", "power"}) && r.require({"x", "angle", "power"})) {
+        if (r.has("baseline")) {
+            out.baseline = r.enumeration("baseline", kBaselineNames, carrom::Baseline::Bottom);
         }
+        out.shot.x_px = r.number("x", {baseline_x_min(config), baseline_x_max(config)});
+        out.shot.angle_rad = r.number("angle", {-kMaxAngleRad, kMaxAngleRad});
+        out.shot.power = r.number("power", {0.0, config.max_power});
     }
-    if (j.contains("baseline")) {
-        if (auto e =
-                decode_baseline(j["baseline"], field_path(path, "baseline"), out.value.baseline)) {
-            return fail(*e);
-        }
-    }
-    Shot& shot = out.value.shot;
-    const Range x_range{baseline_x_min(config), baseline_x_max(config)};
-    if (auto e = read_number(j["x"], field_path(path, "x"), x_range, shot.x_px)) {
-        return fail(*e);
-    }
-    if (auto e = read_number(j["angle"], field_path(path, "angle"), {-kMaxAngleRad, kMaxAngleRad},
-                             shot.angle_rad)) {
-        return fail(*e);
-    }
-    if (auto e = read_number(j["power"], field_path(path, "power"), {0.0, config.max_power},
-                             shot.power)) {
-        return fail(*e);
-    }
-    return out;
+    return decoded(out, r);
 }
 
 Decoded<SceneSpec> decode_scene(const nlohmann::json& j) {
-    Decoded<SceneSpec> out;
-    auto fail = [&out](JsonError e) {
-        out.error = std::move(e);
-        return out;
-    };
-    if (auto e = check_object(j, "", {"description", "config", "bodies", "layout", "shot"})) {
-        return fail(*e);
+    SceneSpec out;
+    JsonReader r(j, "", Wording::Document);
+    if (!r.only_keys({"description", "config", "bodies", "layout", "shot"})) {
+        return decoded(std::move(out), r);
     }
-    if (j.contains("description")) {
-        std::string text;
-        if (auto e = read_string(j["description"], "description", kMaxDescriptionBytes, text)) {
-            return fail(*e);
-        }
+    if (r.has("description")) {
+        r.text("description", 0, kMaxDescriptionBytes);
     }
-    if (j.contains("config")) {
-        auto config = decode_config(j["config"]);
-        if (!config.ok()) {
-            return fail(*config.error);
-        }
-        out.value.config = config.value;
+    if (const Json* config = r.has("config") ? r.find("config") : nullptr) {
+        auto decoded_config = decode_config(*config);
+        r.merge(decoded_config.error);
+        out.config = decoded_config.value;
     }
-    const PhysicsConfig& config = out.value.config;
-    if (j.contains("bodies") && j.contains("layout")) {
-        return fail(make_error(scene_code::kConflict, "layout",
+    if (r.has("bodies") && r.has("layout")) {
+        r.merge(document_error(scene_code::kConflict, "layout",
                                "give either \"bodies\" or \"layout\", not both"));
-    }
-    if (!j.contains("bodies") && !j.contains("layout")) {
-        return fail(make_error(scene_code::kMissingField, "bodies",
+    } else if (r.ok() && !r.has("bodies") && !r.has("layout")) {
+        r.merge(document_error(scene_code::kMissingField, "bodies",
                                "the scene needs \"bodies\" or \"layout\""));
     }
-    auto e = j.contains("bodies") ? decode_bodies(j["bodies"], "bodies", out.value.bodies)
-                                  : decode_layout(j["layout"], out.value.bodies, config);
-    if (e) {
-        return fail(*e);
+    if (r.has("bodies")) {
+        out.bodies = read_bodies(r, "bodies");
+    } else if (r.has("layout") && r.text("layout", 0, 32) != "standard" && r.ok()) {
+        r.fail("layout", "must be \"standard\"");
+    } else if (r.ok()) {
+        out.bodies = standard_layout(out.config);
     }
-    if (j.contains("shot")) {
-        auto shot = decode_shot(j["shot"], config);
-        if (!shot.ok()) {
-            return fail(*shot.error);
+    if (const Json* shot = r.has("shot") ? r.find("shot") : nullptr) {
+        auto decoded_shot = decode_shot(*shot, out.config);
+        r.merge(decoded_shot.error);
+        out.bodies.push_back(
+            make_striker(out.config, decoded_shot.value.baseline, decoded_shot.value.shot));
+    }
+    if (r.ok()) {
+        if (auto problem = validate_scene(out.config, out.bodies)) {
+            r.merge(scene_error_to_json(*problem, j, out.bodies));
         }
-        out.value.bodies.push_back(make_striker(config, shot.value.baseline, shot.value.shot));
     }
-    if (auto problem = validate_scene(config, out.value.bodies)) {
-        return fail(scene_error_to_json(*problem, j, out.value.bodies));
-    }
-    return out;
+    return decoded(std::move(out), r);
 }
 
 Decoded<SceneSpec> decode_scene_text(std::string_view text) {
@@ -456,97 +389,36 @@ Decoded<SceneSpec> decode_scene_text(std::string_view text) {
 }
 
 Decoded<Event> decode_event(const nlohmann::json& j, const std::string& path) {
-    Decoded<Event> out;
-    auto fail = [&out](JsonError e) {
-        out.error = std::move(e);
-        return out;
-    };
-    if (auto e = check_object(j, path, {"t_s", "kind", "a", "b", "impulse", "pos"})) {
-        return fail(*e);
+    Event out;
+    JsonReader r(j, path, Wording::Document);
+    if (r.only_keys({"t_s", "kind", "a", "b", "impulse", "pos"}) &&
+        r.require({"t_s", "kind", "a", "b", "impulse", "pos"})) {
+        out.t_s = r.number("t_s", {0.0, kMaxMatchTimeS});
+        out.kind = r.enumeration("kind", kEventKindNames, EventKind::Collision);
+        out.a = static_cast<int>(r.integer("a", 0, kMaxBodyId));
+        out.b = static_cast<int>(r.integer("b", -1, kMaxBodyId));
+        out.impulse = r.number("impulse", {0.0, kMaxImpulse});
+        out.pos_px = read_vec(r, "pos", kMaxCoordinatePx);
     }
-    for (std::string_view key : {"t_s", "kind", "a", "b", "impulse", "pos"}) {
-        if (auto e = require_field(j, key, path)) {
-            return fail(*e);
-        }
-    }
-    Event& event = out.value;
-    if (auto e = read_number(j["t_s"], field_path(path, "t_s"), {0.0, kMaxMatchTimeS}, event.t_s)) {
-        return fail(*e);
-    }
-    std::string kind;
-    if (auto e = read_string(j["kind"], field_path(path, "kind"), 16, kind)) {
-        return fail(*e);
-    }
-    bool known = false;
-    for (EventKind k :
-         {EventKind::Collision, EventKind::Cushion, EventKind::Pocket, EventKind::Stop}) {
-        if (kind == to_string(k)) {
-            event.kind = k;
-            known = true;
-        }
-    }
-    if (!known) {
-        return fail(make_error(scene_code::kBadValue, field_path(path, "kind"),
-                               field_path(path, "kind") +
-                                   " must be \"collision\", \"cushion\", \"pocket\" or \"stop\""));
-    }
-    std::int64_t a = 0;
-    std::int64_t b = 0;
-    if (auto e = read_integer(j["a"], field_path(path, "a"), 0, kMaxBodyId, a)) {
-        return fail(*e);
-    }
-    if (auto e = read_integer(j["b"], field_path(path, "b"), -1, kMaxBodyId, b)) {
-        return fail(*e);
-    }
-    event.a = static_cast<int>(a);
-    event.b = static_cast<int>(b);
-    if (auto e = read_number(j["impulse"], field_path(path, "impulse"), {0.0, kMaxImpulse},
-                             event.impulse)) {
-        return fail(*e);
-    }
-    if (auto e = read_vec(j["pos"], field_path(path, "pos"), kMaxCoordinatePx, event.pos_px)) {
-        return fail(*e);
-    }
-    return out;
+    return decoded(out, r);
 }
 
 Decoded<SimResult> decode_sim_result(const nlohmann::json& j) {
-    Decoded<SimResult> out;
-    auto fail = [&out](JsonError e) {
-        out.error = std::move(e);
-        return out;
-    };
-    if (auto e = check_object(
-            j, "", {"end_time_s", "truncated", "events", "bodies", "pocketed", "stats"})) {
-        return fail(*e);
+    SimResult out;
+    JsonReader r(j, "", Wording::Document);
+    if (r.only_keys({"end_time_s", "truncated", "events", "bodies", "pocketed", "stats"}) &&
+        r.require({"end_time_s", "truncated", "events", "bodies", "stats"})) {
+        out.end_time_s = r.number("end_time_s", {0.0, kMaxMatchTimeS});
+        out.truncated = r.boolean("truncated");
+        out.events = read_events(r, "events");
+        out.bodies = read_bodies(r, "bodies");
+        out.stats = read_stats(r, "stats");
     }
-    for (std::string_view key : {"end_time_s", "truncated", "events", "bodies", "stats"}) {
-        if (auto e = require_field(j, key, "")) {
-            return fail(*e);
-        }
-    }
-    SimResult& result = out.value;
-    if (auto e =
-            read_number(j["end_time_s"], "end_time_s", {0.0, kMaxMatchTimeS}, result.end_time_s)) {
-        return fail(*e);
-    }
-    if (auto e = read_bool(j["truncated"], "truncated", result.truncated)) {
-        return fail(*e);
-    }
-    if (auto e = decode_events(j["events"], "events", result.events)) {
-        return fail(*e);
-    }
-    if (auto e = decode_bodies(j["bodies"], "bodies", result.bodies)) {
-        return fail(*e);
-    }
-    if (auto e = decode_stats(j["stats"], "stats", result.stats)) {
-        return fail(*e);
-    }
-    if (j.contains("pocketed") && j["pocketed"] != pocketed_ids_to_json(result.bodies)) {
-        return fail(make_error(scene_code::kBadValue, "pocketed",
+    if (r.has("pocketed") && j["pocketed"] != pocketed_ids_to_json(out.bodies)) {
+        r.merge(document_error(scene_code::kBadValue, "pocketed",
                                "pocketed must list the ids of the pocketed bodies in order"));
     }
-    return out;
+    return decoded(std::move(out), r);
 }
 
 } // namespace carrom::proto

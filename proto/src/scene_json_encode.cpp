@@ -68,7 +68,7 @@ Json bodies_to_json(std::span<const Body> bodies) {
 }
 
 Json shot_to_json(const ShotSpec& spec) {
-    return Json{{"baseline", spec.baseline == carrom::Baseline::Bottom ? "bottom" : "top"},
+    return Json{{"baseline", enum_names::name_or_unknown(kBaselineNames, spec.baseline)},
                 {"x", spec.shot.x_px},
                 {"angle", spec.shot.angle_rad},
                 {"power", spec.shot.power}};
@@ -126,7 +126,7 @@ Json sim_result_to_json(const SimResult& result) {
                 {"stats", stats_to_json(result.stats)}};
 }
 
-Json error_to_json(const JsonError& error) {
+Json error_to_json(const Error& error) {
     return Json{
         {"error", {{"code", error.code}, {"path", error.path}, {"message", error.message}}}};
 }

@@ -2,12 +2,13 @@
 // same care as the server: a broken or hostile server must not crash them.
 #include "carrom/proto/json_codec.hpp"
 
-#include "field_reader.hpp"
+#include "json_reader.hpp"
 #include "message_names.hpp"
 
 namespace carrom::proto {
 
-using detail::FieldReader;
+using detail::JsonReader;
+using detail::Range;
 using nlohmann::json;
 
 namespace {
@@ -20,18 +21,18 @@ json encode_queen(const QueenInfo& q) {
     return json{{"state", to_string(q.state)}, {"seat", q.seat}};
 }
 
-void decode_queen(FieldReader& parent, std::string_view key, QueenInfo& q) {
+void decode_queen(JsonReader& parent, std::string_view key, QueenInfo& q) {
     const json* value = parent.object(key);
     if (value == nullptr) {
         return;
     }
-    FieldReader r(*value, parent.field_name(key) + ".");
-    q.state = r.enumeration("state", QueenState::OnBoard);
+    JsonReader r = parent.nested(*value, parent.path_of(key));
+    q.state = r.enumeration("state", kQueenStateNames, QueenState::OnBoard);
     q.seat = r.small_int("seat", -1, kMaxSeatIndex);
-    parent.merge(r);
+    parent.merge(r.error());
 }
 
-void decode_optional_time(FieldReader& r, std::string_view key, std::optional<std::int64_t>& out) {
+void decode_optional_time(JsonReader& r, std::string_view key, std::optional<std::int64_t>& out) {
     if (r.has(key)) {
         out = r.integer(key, 0, kMaxTimeMs);
     }
@@ -44,7 +45,7 @@ json encode_body(const Welcome& m) {
                 {"resume_token", m.resume_token},
                 {"server_time_ms", m.server_time_ms}};
 }
-void decode_body(FieldReader& r, Welcome& m) {
+void decode_body(JsonReader& r, Welcome& m) {
     m.version = r.small_int("version", 0, 1000000);
     m.player_id = r.integer("player_id", 0, kMaxNonce);
     m.resume_token = r.text("resume_token", kResumeTokenLength, kResumeTokenLength);
@@ -64,13 +65,13 @@ json encode_seat(const SeatInfo& s) {
                 {"baseline", baseline_name(s.baseline)},
                 {"team", s.team}};
 }
-void decode_seat(FieldReader& r, SeatInfo& s) {
+void decode_seat(JsonReader& r, SeatInfo& s) {
     s.occupied = r.boolean("occupied");
     s.name = r.text("name", 0, kMaxNameBytes);
     s.connected = r.boolean("connected");
     s.bot = r.boolean("bot");
-    s.colour = r.enumeration("colour", Colour::None);
-    s.baseline = r.enumeration("baseline", Baseline::Bottom);
+    s.colour = r.enumeration("colour", kColourNames, Colour::None);
+    s.baseline = r.enumeration("baseline", rules::kSideNames, Baseline::Bottom);
     // Absent (a server before doubles): -1 here, the seat's index once the array is read.
     s.team = r.has("team") ? r.small_int("team", 0, kMaxSeatIndex) : -1;
 }
@@ -84,19 +85,19 @@ json encode_board_body(const BoardBody& b) {
                 {"vy", b.vel_px_s.y},
                 {"pocketed", b.pocketed}};
 }
-void decode_board_body(FieldReader& r, BoardBody& b) {
+void decode_board_body(JsonReader& r, BoardBody& b) {
     b.id = r.small_int("id", 0, kMaxId);
-    b.kind = r.enumeration("kind", BodyKind::Black);
-    b.pos_px.x = r.number("x", -kMaxCoordinatePx, kMaxCoordinatePx);
-    b.pos_px.y = r.number("y", -kMaxCoordinatePx, kMaxCoordinatePx);
-    b.vel_px_s.x = r.number("vx", -kMaxSpeedPxS, kMaxSpeedPxS);
-    b.vel_px_s.y = r.number("vy", -kMaxSpeedPxS, kMaxSpeedPxS);
+    b.kind = r.enumeration("kind", kBodyKindNames, BodyKind::Black);
+    b.pos_px.x = r.number("x", {-kMaxCoordinatePx, kMaxCoordinatePx});
+    b.pos_px.y = r.number("y", {-kMaxCoordinatePx, kMaxCoordinatePx});
+    b.vel_px_s.x = r.number("vx", {-kMaxSpeedPxS, kMaxSpeedPxS});
+    b.vel_px_s.y = r.number("vy", {-kMaxSpeedPxS, kMaxSpeedPxS});
     b.pocketed = r.boolean("pocketed");
 }
 
 // Reads an array of objects with `decode_item` into `out`.
 template <class T, class F>
-void decode_object_array(FieldReader& r, std::string_view key, std::size_t max_items,
+void decode_object_array(JsonReader& r, std::string_view key, std::size_t max_items,
                          std::vector<T>& out, F decode_item) {
     const json* items = r.array(key, max_items);
     if (items == nullptr) {
@@ -104,15 +105,15 @@ void decode_object_array(FieldReader& r, std::string_view key, std::size_t max_i
     }
     for (std::size_t i = 0; i < items->size() && r.ok(); ++i) {
         const json& item = (*items)[i];
-        const std::string path = r.field_name(key) + "[" + std::to_string(i) + "]";
+        const std::string path = detail::index_path(r.path_of(key), i);
         if (!item.is_object()) {
-            r.fail(std::string(key) + "[" + std::to_string(i) + "]", "must be an object");
+            r.fail_at(path, "must be an object");
             return;
         }
-        FieldReader child(item, path + ".");
+        JsonReader child = r.nested(item, path);
         T value;
         decode_item(child, value);
-        r.merge(child);
+        r.merge(child.error());
         out.push_back(std::move(value));
     }
 }
@@ -153,19 +154,19 @@ json encode_body(const RoomState& m) {
     }
     return out;
 }
-void decode_body(FieldReader& r, RoomState& m) {
+void decode_body(JsonReader& r, RoomState& m) {
     m.code = r.text("code", kRoomCodeLength, kRoomCodeLength);
     if (r.ok() && !is_room_code(m.code)) {
         r.fail("code", "must be a room code");
     }
     m.you = r.small_int("you", -1, kMaxSeatIndex);
-    m.rule_set = r.enumeration("rule_set", RuleSet::Icf);
+    m.rule_set = r.enumeration("rule_set", kRuleSetNames, RuleSet::Icf);
     if (const json* options = r.object("options")) {
-        FieldReader o(*options, "options.");
+        JsonReader o = r.nested(*options, r.path_of("options"));
         m.options.target_points = o.small_int("target_points", 1, kMaxTargetPoints);
         m.options.boards = o.small_int("boards", 1, kMaxBoards);
-        m.options.shot_clock_s = o.number("shot_clock_s", 0.0, kMaxShotClockS);
-        r.merge(o);
+        m.options.shot_clock_s = o.number("shot_clock_s", {0.0, kMaxShotClockS});
+        r.merge(o.error());
     }
     decode_object_array(r, "seats", kMaxSeats, m.seats, decode_seat);
     if (r.ok() && m.seats.size() != 2 && m.seats.size() != 4) {
@@ -187,16 +188,16 @@ void decode_body(FieldReader& r, RoomState& m) {
     m.to_play = r.small_int("to_play", 0, kMaxSeatIndex);
     decode_optional_time(r, "shot_clock_deadline_ms", m.shot_clock_deadline_ms);
     m.server_time_ms = r.integer("server_time_ms", 0, kMaxTimeMs);
-    m.phase = r.enumeration("phase", Phase::Waiting);
+    m.phase = r.enumeration("phase", kPhaseNames, Phase::Waiting);
     decode_queen(r, "queen", m.queen);
     m.winner = r.small_int("winner", -1, kMaxSeatIndex);
     decode_object_array(r, "bodies", kMaxBodies, m.bodies, decode_board_body);
     if (r.has("motion")) {
         if (const json* motion = r.object("motion")) {
-            FieldReader o(*motion, "motion.");
-            m.motion.damping_per_s = o.number("damping_per_s", 0.0, 100.0);
+            JsonReader o = r.nested(*motion, r.path_of("motion"));
+            m.motion.damping_per_s = o.number("damping_per_s", {0.0, 100.0});
             m.motion.contact_snapshots = o.boolean("contact_snapshots");
-            r.merge(o);
+            r.merge(o.error());
         }
     }
 }
@@ -230,10 +231,10 @@ bool decode_snapshot_body(const json& item, SnapshotBody& b) {
            detail::read_number(item[4], -kMaxSpeedPxS, kMaxSpeedPxS, b.vel_px_s.y) &&
            (b.id = static_cast<int>(id), true);
 }
-void decode_body(FieldReader& r, Snapshot& m) {
+void decode_body(JsonReader& r, Snapshot& m) {
     m.seq = r.integer("seq", 0, kMaxNonce);
     m.turn = static_cast<int>(r.integer("turn", 0, kMaxTurn));
-    m.t_s = r.number("t", 0.0, kMaxMatchTimeS);
+    m.t_s = r.number("t", {0.0, kMaxMatchTimeS});
     m.keyframe = r.boolean("keyframe");
     if (const json* bodies = r.array("bodies", kMaxBodies)) {
         for (const json& item : *bodies) {
@@ -302,61 +303,61 @@ json encode_event(const AimEvent& e) {
     return json{{"seat", e.seat}, {"turn", e.turn}, {"x", e.x_px}};
 }
 
-int read_turn(FieldReader& r) {
+int read_turn(JsonReader& r) {
     return static_cast<int>(r.integer("turn", 0, kMaxTurn));
 }
-double read_time(FieldReader& r) {
-    return r.number("t", 0.0, kMaxMatchTimeS);
+double read_time(JsonReader& r) {
+    return r.number("t", {0.0, kMaxMatchTimeS});
 }
-int read_seat(FieldReader& r, std::string_view key) {
+int read_seat(JsonReader& r, std::string_view key) {
     return r.small_int(key, 0, kMaxSeatIndex);
 }
 
-void decode_event(FieldReader& r, CollisionEvent& e) {
+void decode_event(JsonReader& r, CollisionEvent& e) {
     e.turn = read_turn(r);
     e.t_s = read_time(r);
     e.a = r.small_int("a", 0, kMaxId);
     e.b = r.small_int("b", 0, kMaxId);
-    e.impulse = r.number("impulse", 0.0, kMaxImpulse);
+    e.impulse = r.number("impulse", {0.0, kMaxImpulse});
 }
-void decode_event(FieldReader& r, CushionEvent& e) {
+void decode_event(JsonReader& r, CushionEvent& e) {
     e.turn = read_turn(r);
     e.t_s = read_time(r);
     e.body = r.small_int("body", 0, kMaxId);
     e.cushion = r.small_int("cushion", 0, 3);
-    e.impulse = r.number("impulse", 0.0, kMaxImpulse);
+    e.impulse = r.number("impulse", {0.0, kMaxImpulse});
 }
-void decode_event(FieldReader& r, PocketEvent& e) {
+void decode_event(JsonReader& r, PocketEvent& e) {
     e.turn = read_turn(r);
     e.t_s = read_time(r);
     e.body = r.small_int("body", 0, kMaxId);
     e.pocket = r.small_int("pocket", 0, 3);
 }
-void decode_event(FieldReader& r, FoulEvent& e) {
+void decode_event(JsonReader& r, FoulEvent& e) {
     e.seat = read_seat(r, "seat");
     e.rule = r.text("rule", 1, kMaxTextBytes);
     e.message = r.text("message", 0, kMaxTextBytes);
 }
-void decode_event(FieldReader& r, QueenEvent& e) {
+void decode_event(JsonReader& r, QueenEvent& e) {
     decode_queen(r, "queen", e.queen);
 }
-void decode_event(FieldReader& r, DueEvent& e) {
+void decode_event(JsonReader& r, DueEvent& e) {
     e.seat = read_seat(r, "seat");
     e.owed = r.small_int("owed", 0, kMaxMessageScore);
 }
-void decode_event(FieldReader& r, TurnEvent& e) {
+void decode_event(JsonReader& r, TurnEvent& e) {
     e.turn = read_turn(r);
     e.seat = read_seat(r, "seat");
     decode_optional_time(r, "deadline_ms", e.deadline_ms);
     e.server_time_ms = r.integer("server_time_ms", 0, kMaxTimeMs);
 }
-void decode_event(FieldReader& r, BoardEndEvent& e) {
+void decode_event(JsonReader& r, BoardEndEvent& e) {
     e.board = r.small_int("board", 1, 1000);
     e.winner = r.small_int("winner", -1, kMaxSeatIndex);
     e.points = r.small_int("points", -kMaxMessageScore, kMaxMessageScore);
     e.scores = r.int_array("scores", -kMaxMessageScore, kMaxMessageScore, kMaxSeats);
 }
-void decode_event(FieldReader& r, GameEndEvent& e) {
+void decode_event(JsonReader& r, GameEndEvent& e) {
     e.winner = r.small_int("winner", -1, kMaxSeatIndex);
     e.reason = r.text("reason", 1, 32);
     e.scores = r.int_array("scores", -kMaxMessageScore, kMaxMessageScore, kMaxSeats);
@@ -364,33 +365,18 @@ void decode_event(FieldReader& r, GameEndEvent& e) {
         e.rule = r.text("rule", 1, 32);
     }
 }
-void decode_event(FieldReader& r, PlayerDroppedEvent& e) {
+void decode_event(JsonReader& r, PlayerDroppedEvent& e) {
     e.seat = read_seat(r, "seat");
     e.grace_deadline_ms = r.integer("grace_deadline_ms", 0, kMaxTimeMs);
     e.server_time_ms = r.integer("server_time_ms", 0, kMaxTimeMs);
 }
-void decode_event(FieldReader& r, PlayerReturnedEvent& e) {
+void decode_event(JsonReader& r, PlayerReturnedEvent& e) {
     e.seat = read_seat(r, "seat");
 }
-void decode_event(FieldReader& r, AimEvent& e) {
+void decode_event(JsonReader& r, AimEvent& e) {
     e.seat = read_seat(r, "seat");
     e.turn = read_turn(r);
-    e.x_px = r.number("x", 0.0, kMaxCoordinatePx);
-}
-
-template <std::size_t I = 0>
-bool decode_event_index(std::size_t index, FieldReader& r, Event& out) {
-    if constexpr (I < std::variant_size_v<Event>) {
-        if (index == I) {
-            std::variant_alternative_t<I, Event> e;
-            decode_event(r, e);
-            out = std::move(e);
-            return true;
-        }
-        return decode_event_index<I + 1>(index, r, out);
-    } else {
-        return false;
-    }
+    e.x_px = r.number("x", {0.0, kMaxCoordinatePx});
 }
 
 json encode_body(const Event& m) {
@@ -398,7 +384,7 @@ json encode_body(const Event& m) {
     out["kind"] = event_kind(m);
     return out;
 }
-void decode_body(FieldReader& r, Event& m) {
+void decode_body(JsonReader& r, Event& m) {
     const std::string kind = r.text("kind", 1, 32);
     if (!r.ok()) {
         return;
@@ -408,7 +394,10 @@ void decode_body(FieldReader& r, Event& m) {
         r.fail("kind", "must name a known event kind");
         return;
     }
-    decode_event_index(*index, r, m);
+    if (auto event =
+            detail::make_alternative<Event>(*index, [&r](auto& e) { decode_event(r, e); })) {
+        m = std::move(*event);
+    }
 }
 
 // --- shot_result ---
@@ -436,16 +425,16 @@ json encode_body(const ShotResult& m) {
                 {"game_over", m.game_over},
                 {"winner", m.winner}};
 }
-void decode_foul(FieldReader& r, Foul& f) {
+void decode_foul(JsonReader& r, Foul& f) {
     f.rule = r.text("rule", 1, kMaxTextBytes);
     f.message = r.text("message", 0, kMaxTextBytes);
 }
-void decode_body(FieldReader& r, ShotResult& m) {
+void decode_body(JsonReader& r, ShotResult& m) {
     m.turn = read_turn(r);
     m.seat = read_seat(r, "seat");
-    m.x_px = r.number("x", 0.0, kMaxCoordinatePx);
-    m.angle_rad = r.number("angle", -kMaxAngleRad, kMaxAngleRad);
-    m.power = r.number("power", 0.0, kMaxPower);
+    m.x_px = r.number("x", {0.0, kMaxCoordinatePx});
+    m.angle_rad = r.number("angle", {-kMaxAngleRad, kMaxAngleRad});
+    m.power = r.number("power", {0.0, kMaxPower});
     m.pocketed = r.int_array("pocketed", 0, kMaxId, kMaxBodies);
     m.returned = r.int_array("returned", 0, kMaxId, kMaxBodies);
     decode_object_array(r, "fouls", 16, m.fouls, decode_foul);
@@ -465,38 +454,16 @@ void decode_body(FieldReader& r, ShotResult& m) {
 json encode_body(const Error& m) {
     return json{{"code", m.code}, {"message", m.message}};
 }
-void decode_body(FieldReader& r, Error& m) {
+void decode_body(JsonReader& r, Error& m) {
     m.code = r.text("code", 1, 64);
     m.message = r.text("message", 0, kMaxTextBytes);
 }
 json encode_body(const Pong& m) {
     return json{{"nonce", m.nonce}, {"server_time_ms", m.server_time_ms}};
 }
-void decode_body(FieldReader& r, Pong& m) {
+void decode_body(JsonReader& r, Pong& m) {
     m.nonce = r.integer("nonce", 0, kMaxNonce);
     m.server_time_ms = r.integer("server_time_ms", 0, kMaxTimeMs);
-}
-
-template <class M> DecodedMessage<ServerMessage> decode_as(const json& value) {
-    FieldReader reader(value, "");
-    M message;
-    decode_body(reader, message);
-    if (!reader.ok()) {
-        return {std::nullopt, *reader.error()};
-    }
-    return {ServerMessage{std::move(message)}, {}};
-}
-
-template <std::size_t I = 0>
-DecodedMessage<ServerMessage> decode_index(std::size_t index, const json& value) {
-    if constexpr (I < std::variant_size_v<ServerMessage>) {
-        if (index == I) {
-            return decode_as<std::variant_alternative_t<I, ServerMessage>>(value);
-        }
-        return decode_index<I + 1>(index, value);
-    } else {
-        return {std::nullopt, Error{std::string(code::kInternal), "No such message index."}};
-    }
 }
 
 } // namespace
@@ -510,21 +477,13 @@ std::string_view event_kind(const Event& event) {
 }
 
 json to_json(const ServerMessage& message) {
-    json out = std::visit([](const auto& m) { return encode_body(m); }, message);
-    out["type"] = type_name(message);
-    return out;
+    return detail::encode_message(message, detail::kServerTypeNames,
+                                  [](const auto& m) { return encode_body(m); });
 }
 
 DecodedMessage<ServerMessage> server_from_json(const json& value) {
-    const auto type = detail::message_type(value);
-    if (!type.ok()) {
-        return {std::nullopt, type.error};
-    }
-    const auto index = detail::find_type(detail::kServerTypeNames, type.name);
-    if (!index) {
-        return {std::nullopt, detail::unknown_type_error(type.name)};
-    }
-    return decode_index(*index, value);
+    return detail::decode_message<ServerMessage>(
+        value, detail::kServerTypeNames, [](JsonReader& r, auto& body) { decode_body(r, body); });
 }
 
 } // namespace carrom::proto

@@ -2,111 +2,61 @@
 
 #include "carrom/proto/limits.hpp"
 
-#include <array>
 #include <cstring>
-#include <utility>
 
 namespace carrom::proto {
 
-namespace {
-
-template <class E, std::size_t N> using NameTable = std::array<std::pair<E, std::string_view>, N>;
-
-template <class E, std::size_t N> std::string_view name_of(const NameTable<E, N>& table, E value) {
-    for (const auto& [e, name] : table) {
-        if (e == value) {
-            return name;
-        }
-    }
-    return "unknown";
-}
-
-template <class E, std::size_t N>
-bool parse_name(const NameTable<E, N>& table, std::string_view text, E& out) {
-    for (const auto& [e, name] : table) {
-        if (name == text) {
-            out = e;
-            return true;
-        }
-    }
-    return false;
-}
-
-constexpr NameTable<RuleSet, 4> kRuleSets{{{RuleSet::Icf, "icf"},
-                                           {RuleSet::Seed, "seed"},
-                                           {RuleSet::Freestyle, "freestyle"},
-                                           {RuleSet::DiscPool, "discpool"}}};
-constexpr NameTable<Role, 2> kRoles{{{Role::Player, "player"}, {Role::Spectator, "spectator"}}};
-constexpr NameTable<Colour, 3> kColours{
-    {{Colour::None, "none"}, {Colour::Black, "black"}, {Colour::White, "white"}}};
-constexpr NameTable<Phase, 5> kPhases{{{Phase::Waiting, "waiting"},
-                                       {Phase::Aiming, "aiming"},
-                                       {Phase::Moving, "moving"},
-                                       {Phase::BoardOver, "board_over"},
-                                       {Phase::GameOver, "game_over"}}};
-constexpr NameTable<QueenState, 4> kQueenStates{{{QueenState::OnBoard, "on_board"},
-                                                 {QueenState::Pending, "pending"},
-                                                 {QueenState::Covered, "covered"},
-                                                 {QueenState::None, "none"}}};
-constexpr NameTable<BotLevel, 4> kBotLevels{{{BotLevel::Random, "random"},
-                                             {BotLevel::Easy, "easy"},
-                                             {BotLevel::Medium, "medium"},
-                                             {BotLevel::Hard, "hard"}}};
-constexpr NameTable<Baseline, 4> kBaselines{{{Baseline::Bottom, "bottom"},
-                                             {Baseline::Right, "right"},
-                                             {Baseline::Top, "top"},
-                                             {Baseline::Left, "left"}}};
-
-} // namespace
+using enum_names::name_or_unknown;
+using enum_names::parse_into;
 
 std::string_view to_string(RuleSet value) {
-    return name_of(kRuleSets, value);
+    return name_or_unknown(kRuleSetNames, value);
 }
 std::string_view to_string(Role value) {
-    return name_of(kRoles, value);
+    return name_or_unknown(kRoleNames, value);
 }
 std::string_view to_string(Colour value) {
-    return name_of(kColours, value);
+    return name_or_unknown(kColourNames, value);
 }
 std::string_view to_string(Phase value) {
-    return name_of(kPhases, value);
+    return name_or_unknown(kPhaseNames, value);
 }
 std::string_view to_string(QueenState value) {
-    return name_of(kQueenStates, value);
+    return name_or_unknown(kQueenStateNames, value);
 }
 std::string_view to_string(BotLevel value) {
-    return name_of(kBotLevels, value);
+    return name_or_unknown(kBotLevelNames, value);
 }
 std::string_view baseline_name(Baseline value) {
-    return name_of(kBaselines, value);
+    return name_or_unknown(rules::kSideNames, value);
 }
 std::string_view body_kind_name(BodyKind value) {
-    return carrom::to_string(value); // the names live with BodyKind in common/
+    return name_or_unknown(kBodyKindNames, value);
 }
 
 bool parse(std::string_view text, RuleSet& out) {
-    return parse_name(kRuleSets, text, out);
+    return parse_into(kRuleSetNames, text, out);
 }
 bool parse(std::string_view text, Role& out) {
-    return parse_name(kRoles, text, out);
+    return parse_into(kRoleNames, text, out);
 }
 bool parse(std::string_view text, Colour& out) {
-    return parse_name(kColours, text, out);
+    return parse_into(kColourNames, text, out);
 }
 bool parse(std::string_view text, Phase& out) {
-    return parse_name(kPhases, text, out);
+    return parse_into(kPhaseNames, text, out);
 }
 bool parse(std::string_view text, QueenState& out) {
-    return parse_name(kQueenStates, text, out);
+    return parse_into(kQueenStateNames, text, out);
 }
 bool parse(std::string_view text, BotLevel& out) {
-    return parse_name(kBotLevels, text, out);
+    return parse_into(kBotLevelNames, text, out);
 }
 bool parse(std::string_view text, Baseline& out) {
-    return parse_name(kBaselines, text, out);
+    return parse_into(rules::kSideNames, text, out);
 }
 bool parse(std::string_view text, BodyKind& out) {
-    return parse_body_kind(text, out);
+    return parse_into(kBodyKindNames, text, out);
 }
 
 bool is_room_code(std::string_view text) {

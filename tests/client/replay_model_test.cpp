@@ -26,7 +26,7 @@ namespace {
 
 ReplayModel load_ok(const proto::MatchJournal& journal) {
     auto loaded = ReplayModel::load(journal);
-    if (auto* error = std::get_if<proto::JsonError>(&loaded)) {
+    if (auto* error = std::get_if<proto::Error>(&loaded)) {
         ADD_FAILURE() << error->code << " " << error->path << ": " << error->message;
         std::abort();
     }
@@ -256,22 +256,22 @@ TEST(ReplayModel, AJournalOfAnotherPhysicsVersionIsRefusedWithCheckVersionsSente
     proto::MatchJournal journal = game_journal();
     journal.created.versions.physics += 1;
     const auto loaded = ReplayModel::load(journal);
-    ASSERT_TRUE(std::holds_alternative<proto::JsonError>(loaded));
-    const auto& error = std::get<proto::JsonError>(loaded);
+    ASSERT_TRUE(std::holds_alternative<proto::Error>(loaded));
+    const auto& error = std::get<proto::Error>(loaded);
     EXPECT_EQ(error.code, proto::replay_code::kVersionMismatch);
     EXPECT_EQ(error, *proto::check_versions(journal.created));
 }
 
 TEST(ReplayModel, TextThatIsNotAJournalIsRefusedWithItsPath) {
     auto loaded = ReplayModel::load_text("{\"format\": 1");
-    ASSERT_TRUE(std::holds_alternative<proto::JsonError>(loaded));
-    EXPECT_EQ(std::get<proto::JsonError>(loaded).code, proto::scene_code::kMalformedJson);
+    ASSERT_TRUE(std::holds_alternative<proto::Error>(loaded));
+    EXPECT_EQ(std::get<proto::Error>(loaded).code, proto::scene_code::kMalformedJson);
     nlohmann::json j = proto::journal_to_json(game_journal());
     j["entries"][3]["shot"]["x"] = "left";
     loaded = ReplayModel::load_text(j.dump());
-    ASSERT_TRUE(std::holds_alternative<proto::JsonError>(loaded));
-    EXPECT_EQ(std::get<proto::JsonError>(loaded).path.rfind("entries[", 0), 0U)
-        << std::get<proto::JsonError>(loaded).path;
+    ASSERT_TRUE(std::holds_alternative<proto::Error>(loaded));
+    EXPECT_EQ(std::get<proto::Error>(loaded).path.rfind("entries[", 0), 0U)
+        << std::get<proto::Error>(loaded).path;
     loaded = ReplayModel::load_text(proto::journal_to_json(game_journal()).dump());
     EXPECT_TRUE(std::holds_alternative<ReplayModel>(loaded));
 }
@@ -285,8 +285,8 @@ TEST(ReplayModel, AStrokeTheRulesRefuseIsABadJournalNamingItsEntry) {
         }
     }
     const auto loaded = ReplayModel::load(journal);
-    ASSERT_TRUE(std::holds_alternative<proto::JsonError>(loaded));
-    EXPECT_EQ(std::get<proto::JsonError>(loaded).code, proto::replay_code::kBadJournal);
+    ASSERT_TRUE(std::holds_alternative<proto::Error>(loaded));
+    EXPECT_EQ(std::get<proto::Error>(loaded).code, proto::replay_code::kBadJournal);
 }
 
 } // namespace

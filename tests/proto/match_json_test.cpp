@@ -33,10 +33,10 @@ rules::StrokeResult stroke(const MatchState& m, std::vector<int> ids, bool strik
                                pocketing(m, std::move(ids), striker));
 }
 
-JsonError decode_error(const Json& j) {
+Error decode_error(const Json& j) {
     const auto decoded = decode_match_state(j);
     EXPECT_FALSE(decoded.ok()) << j.dump();
-    return decoded.error.value_or(JsonError{});
+    return decoded.error.value_or(Error{});
 }
 
 void expect_round_trip(const MatchState& s) {
@@ -114,7 +114,7 @@ TEST(MatchJson, BadFieldsAreNamed) {
         j[key] = std::move(value);
         return j;
     };
-    JsonError e = decode_error(with("colour", 1));
+    Error e = decode_error(with("colour", 1));
     EXPECT_EQ(e.code, "unknown_field");
     EXPECT_EQ(e.path, "state.colour");
     e = decode_error(with("rule_set", "snooker"));
@@ -163,7 +163,7 @@ TEST(MatchJson, BodiesAreCheckedPieceByPiece) {
     EXPECT_EQ(decode_error(j).path, "state.bodies[5].vel");
     j = base;
     j["bodies"][7]["pos"] = {300.0, 300.0}; // on the queen
-    const JsonError overlap = decode_error(j);
+    const Error overlap = decode_error(j);
     EXPECT_EQ(overlap.code, "overlap");
     j = base;
     j["bodies"][7]["pos"] = {10.0, 300.0};

@@ -14,13 +14,13 @@ namespace {
 using Json = nlohmann::json;
 
 // Decodes text and returns the error ({"", "", ""} when it decoded).
-JsonError error_of(std::string_view text) {
+Error error_of(std::string_view text) {
     auto decoded = decode_scene_text(text);
-    return decoded.ok() ? JsonError{} : *decoded.error;
+    return decoded.ok() ? Error{} : *decoded.error;
 }
 
 void expect_error(std::string_view text, std::string_view code, std::string_view path) {
-    const JsonError e = error_of(text);
+    const Error e = error_of(text);
     EXPECT_EQ(e.code, code) << text << "\n" << e.message;
     EXPECT_EQ(e.path, path) << text << "\n" << e.message;
     EXPECT_FALSE(e.message.empty()) << text;
@@ -56,13 +56,13 @@ TEST(SceneJsonText, NulByteIsMalformed) {
     expect_error("{\"layout\": \"standard\"}\0 garbage"s, "malformed_json", "");
     expect_error("{\"layout\": \"standard\"}\0"s, "malformed_json", "");
     expect_error("{\"layout\": \"stan\0dard\"}"s, "malformed_json", "");
-    const JsonError e = error_of("{\"layout\": \"standard\"}\0 x"s);
+    const Error e = error_of("{\"layout\": \"standard\"}\0 x"s);
     EXPECT_NE(e.message.find("offset 22"), std::string::npos) << e.message;
 }
 
 TEST(SceneJsonText, InvalidUtf8IsMalformedAndTheMessageStaysPrintable) {
     for (std::string_view text : {"\xff", "{\"a\xff\": 1}", "{\"layout\": \"\xc3\"}"}) {
-        const JsonError e = error_of(text);
+        const Error e = error_of(text);
         EXPECT_EQ(e.code, "malformed_json");
         for (char c : e.message) {
             EXPECT_TRUE(c >= 0x20 && c <= 0x7e) << e.message;
@@ -542,7 +542,7 @@ TEST(SceneJsonRoundTrip, SimResultPocketedListMustMatchTheBodies) {
 }
 
 TEST(SceneJsonRoundTrip, ErrorEncodesCodePathAndMessage) {
-    const Json j = error_to_json(JsonError{"overlap", "bodies[1].pos", "body 1 overlaps body 0"});
+    const Json j = error_to_json(Error{"overlap", "body 1 overlaps body 0", "bodies[1].pos"});
     EXPECT_EQ(j, Json::parse(R"({"error": {"code": "overlap", "path": "bodies[1].pos",
                                            "message": "body 1 overlaps body 0"}})"));
 }

@@ -62,7 +62,7 @@ struct Failure {
 };
 
 int fail(std::ostream& err, const std::string& code, const std::string& message) {
-    sim_cli::print_json(err, proto::error_to_json({code, "", message}), false);
+    sim_cli::print_json(err, proto::error_to_json({code, message}), false);
     return kExitBadInput;
 }
 

@@ -19,7 +19,7 @@
 
 namespace {
 
-using carrom::proto::JsonError;
+using carrom::proto::Error;
 using Json = nlohmann::json;
 
 using carrom::sim_cli::kExitBadInput;
@@ -30,20 +30,20 @@ std::string dump(const Json& j, int indent = -1) {
     return j.dump(indent, ' ', false, Json::error_handler_t::replace);
 }
 
-int fail(const JsonError& error) {
+int fail(const Error& error) {
     std::cerr << dump(carrom::proto::error_to_json(error)) << '\n';
     return kExitBadInput;
 }
 
 // Reads a little over kMaxSceneBytes at most, so that oversized input is rejected by the
 // decoder without reading all of it.
-bool read_input(const std::string& path, std::string& text, JsonError& error) {
+bool read_input(const std::string& path, std::string& text, Error& error) {
     std::ifstream file;
     std::istream* in = &std::cin;
     if (!path.empty() && path != "-") {
         file.open(path, std::ios::binary);
         if (!file) {
-            error = {"io_error", "", "cannot open the scene file '" + path + "'"};
+            error = {"io_error", "cannot open the scene file '" + path + "'"};
             return false;
         }
         in = &file;
@@ -58,7 +58,7 @@ bool read_input(const std::string& path, std::string& text, JsonError& error) {
         text.append(chunk.data(), static_cast<std::size_t>(got));
     }
     if (in->bad()) {
-        error = {"io_error", "", "reading the scene failed"};
+        error = {"io_error", "reading the scene failed"};
         return false;
     }
     return true;
@@ -70,7 +70,7 @@ int run_rules(const std::string& path) {
     }
     std::ifstream file(path, std::ios::binary);
     if (!file) {
-        return fail({"io_error", "", "cannot open the rules file '" + path + "'"});
+        return fail({"io_error", "cannot open the rules file '" + path + "'"});
     }
     return carrom::run_rules_mode(file, std::cout, std::cerr);
 }
@@ -81,7 +81,7 @@ int run_replay(const std::string& path, bool pretty) {
     }
     std::ifstream file(path, std::ios::binary);
     if (!file) {
-        return fail({"io_error", "", "cannot open the journal file '" + path + "'"});
+        return fail({"io_error", "cannot open the journal file '" + path + "'"});
     }
     return carrom::run_replay_mode(file, std::cout, std::cerr, pretty);
 }
@@ -140,7 +140,7 @@ int simulate(CliArgs& args) {
         args.options.at_s = args.at_s;
     }
     std::string text;
-    JsonError error;
+    Error error;
     if (!read_input(args.path, text, error)) {
         return fail(error);
     }
@@ -166,10 +166,10 @@ int run(int argc, char** argv) {
     } catch (const CLI::CallForHelp& e) {
         return app.exit(e);
     } catch (const CLI::ParseError& e) {
-        return fail({"bad_argument", "", e.what()});
+        return fail({"bad_argument", e.what()});
     }
     if (!std::isfinite(args.options.frame_dt_s) || !std::isfinite(args.at_s)) {
-        return fail({"bad_argument", "", "--dt and --at must be finite numbers"});
+        return fail({"bad_argument", "--dt and --at must be finite numbers"});
     }
     args.at_given = app.count("--at") > 0;
     if (args.replay) {
@@ -188,7 +188,7 @@ int main(int argc, char** argv) {
     try {
         return run(argc, argv);
     } catch (const std::exception& e) {
-        std::cerr << dump(carrom::proto::error_to_json({"internal", "", e.what()})) << '\n';
+        std::cerr << dump(carrom::proto::error_to_json({"internal", e.what()})) << '\n';
         return kExitInternal;
     }
 }

@@ -57,8 +57,8 @@ int run_replay_mode(std::istream& in, std::ostream& out, std::ostream& err, bool
         text.append(buffer, static_cast<std::size_t>(in.gcount()));
     }
     if (in.bad()) {
-        sim_cli::print_json(
-            err, proto::error_to_json({"io_error", "", "reading the journal failed"}), false);
+        sim_cli::print_json(err, proto::error_to_json({"io_error", "reading the journal failed"}),
+                            false);
         return kExitBadInput;
     }
     const auto journal = proto::decode_journal_text(text);

@@ -25,11 +25,11 @@ struct Request {
     bool include_physics = false;
 };
 
-proto::JsonError bad(std::string_view code, std::string path, std::string message) {
-    return proto::JsonError{std::string(code), std::move(path), std::move(message)};
+proto::Error bad(std::string_view code, std::string path, std::string message) {
+    return proto::Error{std::string(code), std::move(message), std::move(path)};
 }
 
-std::optional<proto::JsonError> read_options(const Json& j, Request& r) {
+std::optional<proto::Error> read_options(const Json& j, Request& r) {
     if (j.contains("action")) {
         const Json& a = j["action"];
         if (!a.is_string() ||
@@ -60,7 +60,7 @@ std::optional<proto::JsonError> read_options(const Json& j, Request& r) {
     return std::nullopt;
 }
 
-std::optional<proto::JsonError> read_request(std::string_view text, Request& r) {
+std::optional<proto::Error> read_request(std::string_view text, Request& r) {
     auto parsed = proto::parse_json_text(text);
     if (!parsed.ok()) {
         return parsed.error;

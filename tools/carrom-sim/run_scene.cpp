@@ -50,7 +50,7 @@ RunOutput run_exact(const proto::SceneSpec& scene, const RunOptions& options) {
         times_us.push_back(elapsed_us(start));
         if (outcome.error) {
             const SceneError& e = *outcome.error;
-            return {{}, proto::JsonError{e.code, e.field, e.message}};
+            return {{}, proto::Error{e.code, e.message, e.field}};
         }
     }
     Json out = proto::sim_result_to_json(*outcome.result);

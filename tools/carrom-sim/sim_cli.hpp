@@ -34,7 +34,7 @@ struct RunOptions {
 // Runs the scene and returns the output document, or an error (exit code 2).
 struct RunOutput {
     nlohmann::json document;
-    std::optional<proto::JsonError> error;
+    std::optional<proto::Error> error;
 };
 RunOutput run_scene(const proto::SceneSpec& scene, const RunOptions& options);
 

@@ -1,6 +1,7 @@
 #pragma once
 // A body on the board: a coin (black, white, queen) or the striker. Plain data.
 
+#include "carrom/enum_names.hpp"
 #include "carrom/vec2.hpp"
 
 #include <cstdint>
@@ -9,6 +10,10 @@
 namespace carrom {
 
 enum class BodyKind : std::uint8_t { Black, White, Queen, Striker };
+inline constexpr enum_names::Table<BodyKind, 4> kBodyKindNames{{{BodyKind::Black, "black"},
+                                                                {BodyKind::White, "white"},
+                                                                {BodyKind::Queen, "queen"},
+                                                                {BodyKind::Striker, "striker"}}};
 
 // The engine's body: what the simulation moves and the rules read, full double precision in
 // board px and px/s. proto::BoardBody (a body of room_state, the wire's form, compared field by

@@ -1,6 +1,7 @@
 #pragma once
 // What happens during a simulation, as data.
 
+#include "carrom/enum_names.hpp"
 #include "carrom/vec2.hpp"
 
 #include <cstdint>
@@ -14,6 +15,11 @@ enum class EventKind : std::uint8_t {
     Pocket,    // body a entered pocket b (0 top-left, 1 top-right, 2 bottom-left, 3 bottom-right)
     Stop,      // body a fell to the stop speed and came to rest
 };
+inline constexpr enum_names::Table<EventKind, 4> kEventKindNames{
+    {{EventKind::Collision, "collision"},
+     {EventKind::Cushion, "cushion"},
+     {EventKind::Pocket, "pocket"},
+     {EventKind::Stop, "stop"}}};
 
 enum Cushion : int { kCushionLeft = 0, kCushionRight = 1, kCushionTop = 2, kCushionBottom = 3 };
 

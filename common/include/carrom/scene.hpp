@@ -4,6 +4,7 @@
 
 #include "carrom/body.hpp"
 #include "carrom/config.hpp"
+#include "carrom/enum_names.hpp"
 
 #include <cstdint>
 #include <optional>
@@ -35,6 +36,8 @@ struct Shot {
 
 // Which baseline a shot is taken from.
 enum class Baseline { Bottom, Top };
+inline constexpr enum_names::Table<Baseline, 2> kBaselineNames{
+    {{Baseline::Bottom, "bottom"}, {Baseline::Top, "top"}}};
 
 // y of a baseline: board_size - baseline_offset for the bottom one, baseline_offset for the top.
 double baseline_y(const PhysicsConfig& config, Baseline baseline);

@@ -1,37 +1,15 @@
 #include "carrom/rules/seat.hpp"
 
 #include <array>
-#include <utility>
 
 namespace carrom::rules {
-namespace {
-
-constexpr std::array<std::pair<Side, std::string_view>, 4> kSideNames{{
-    {Side::Bottom, "bottom"},
-    {Side::Right, "right"},
-    {Side::Top, "top"},
-    {Side::Left, "left"},
-}};
-
-} // namespace
 
 std::string_view to_string(Side side) {
-    for (const auto& [value, name] : kSideNames) {
-        if (value == side) {
-            return name;
-        }
-    }
-    return "unknown";
+    return enum_names::name_or_unknown(kSideNames, side);
 }
 
 bool parse_side(std::string_view text, Side& out) {
-    for (const auto& [value, name] : kSideNames) {
-        if (name == text) {
-            out = value;
-            return true;
-        }
-    }
-    return false;
+    return enum_names::parse_into(kSideNames, text, out);
 }
 
 int team_of_seat(int seat, int seat_count) {

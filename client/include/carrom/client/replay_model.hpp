@@ -52,9 +52,9 @@ public:
 
     // A journal this build can replay, or why not: check_versions' version_mismatch, the head's
     // bad_journal, or an input the rules refuse (bad_journal, path "entries[N]").
-    static std::variant<ReplayModel, proto::JsonError> load(const proto::MatchJournal& journal);
+    static std::variant<ReplayModel, proto::Error> load(const proto::MatchJournal& journal);
     // decode_journal_text, then load.
-    static std::variant<ReplayModel, proto::JsonError> load_text(std::string_view text);
+    static std::variant<ReplayModel, proto::Error> load_text(std::string_view text);
 
     const proto::MatchCreated& created() const { return created_; }
     const std::vector<ReplayTurn>& turns() const { return turns_; }

@@ -1,6 +1,8 @@
 #pragma once
 // Stable codes naming the rule behind a foul, a returned piece, or the end of a board or game.
 
+#include "carrom/enum_names.hpp"
+
 #include <cstdint>
 #include <string_view>
 
@@ -24,6 +26,24 @@ enum class RuleCode : std::uint8_t {
     TargetPoints,           // a side reached the target score
     BoardsPlayed,           // icf: the board count was reached with a leader
 };
+inline constexpr enum_names::Table<RuleCode, 16> kRuleCodeNames{{
+    {RuleCode::StrikerPocketed, "striker_pocketed"},
+    {RuleCode::QueenBeforeOwnCoin, "queen_before_own_coin"},
+    {RuleCode::QueenNotCovered, "queen_not_covered"},
+    {RuleCode::QueenCovered, "queen_covered"},
+    {RuleCode::DuePaid, "due_paid"},
+    {RuleCode::OwnLastCoinBeforeQueen, "own_last_coin_before_queen"},
+    {RuleCode::OpponentLastCoin, "opponent_last_coin"},
+    {RuleCode::BreakMissed, "break_missed"},
+    {RuleCode::ShotClockExpired, "shot_clock_expired"},
+    {RuleCode::MissedTurns, "missed_turns"},
+    {RuleCode::Forfeit, "forfeit"},
+    {RuleCode::BoardCleared, "board_cleared"},
+    {RuleCode::ColourCleared, "colour_cleared"},
+    {RuleCode::CoinsExhausted, "coins_exhausted"},
+    {RuleCode::TargetPoints, "target_points"},
+    {RuleCode::BoardsPlayed, "boards_played"},
+}};
 
 // snake_case names: "striker_pocketed", "queen_before_own_coin", ...
 std::string_view to_string(RuleCode code);

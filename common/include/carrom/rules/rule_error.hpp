@@ -2,6 +2,8 @@
 // Why the rules refused something (a stroke, a placement, a config, an action). Plain data: a
 // code to act on, the offending field and one plain sentence for people.
 
+#include "carrom/enum_names.hpp"
+
 #include <cstdint>
 #include <string>
 #include <string_view>
@@ -24,6 +26,22 @@ enum class RuleErrorCode : std::uint8_t {
     InvalidConfig,   // a RulesConfig value out of range
     WrongPhase,      // an action the current phase does not allow
 };
+inline constexpr enum_names::Table<RuleErrorCode, 14> kRuleErrorCodeNames{{
+    {RuleErrorCode::InvalidSeat, "invalid_seat"},
+    {RuleErrorCode::GameOver, "game_over"},
+    {RuleErrorCode::BoardOver, "board_over"},
+    {RuleErrorCode::NotYourTurn, "not_your_turn"},
+    {RuleErrorCode::StaleTurn, "stale_turn"},
+    {RuleErrorCode::XNotFinite, "x_not_finite"},
+    {RuleErrorCode::XOutOfRange, "x_out_of_range"},
+    {RuleErrorCode::StrikerOverlaps, "striker_overlaps"},
+    {RuleErrorCode::AngleNotFinite, "angle_not_finite"},
+    {RuleErrorCode::PowerNotFinite, "power_not_finite"},
+    {RuleErrorCode::PowerOutOfRange, "power_out_of_range"},
+    {RuleErrorCode::PhysicsError, "physics_error"},
+    {RuleErrorCode::InvalidConfig, "invalid_config"},
+    {RuleErrorCode::WrongPhase, "wrong_phase"},
+}};
 
 // snake_case names, stable (printed by carrom-sim --rules): "invalid_seat", "game_over", ...
 std::string_view to_string(RuleErrorCode code);

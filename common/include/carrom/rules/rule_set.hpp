@@ -1,6 +1,8 @@
 #pragma once
 // Which game a match plays. Chosen per match; see docs/rules.md.
 
+#include "carrom/enum_names.hpp"
+
 #include <cstdint>
 #include <string_view>
 
@@ -12,6 +14,12 @@ enum class RuleSet : std::uint8_t {
     Freestyle, // any coin for points
     DiscPool,  // each side clears its own nine coins; no queen
 };
+inline constexpr enum_names::Table<RuleSet, 4> kRuleSetNames{{
+    {RuleSet::Icf, "icf"},
+    {RuleSet::Seed, "seed"},
+    {RuleSet::Freestyle, "freestyle"},
+    {RuleSet::DiscPool, "discpool"},
+}};
 
 // "icf", "seed", "freestyle", "discpool".
 std::string_view to_string(RuleSet rule_set);

@@ -3,6 +3,8 @@
 // opposite each other and the turn passes anticlockwise (as seen on screen: bottom, right, top,
 // left). Seat indices follow that order, so the next seat is always (seat + 1) % seat_count.
 
+#include "carrom/enum_names.hpp"
+
 #include <cstdint>
 #include <string_view>
 #include <vector>
@@ -10,6 +12,12 @@
 namespace carrom::rules {
 
 enum class Side : std::uint8_t { Bottom, Right, Top, Left };
+inline constexpr enum_names::Table<Side, 4> kSideNames{{
+    {Side::Bottom, "bottom"},
+    {Side::Right, "right"},
+    {Side::Top, "top"},
+    {Side::Left, "left"},
+}};
 
 std::string_view to_string(Side side);
 bool parse_side(std::string_view text, Side& out);

@@ -20,7 +20,7 @@
 namespace carrom::proto {
 
 // A decoded wire message or the protocol error that refused it. (Documents and scenes decode
-// to scene_json.hpp's Decoded, which carries a JsonError instead.)
+// to scene_json.hpp's Decoded, which carries an optional Error with its path.)
 template <class T> struct DecodedMessage {
     std::optional<T> message; // set on success
     Error error;              // set on failure (code non-empty)

@@ -1,6 +1,9 @@
 #pragma once
-// Errors on the wire: a stable machine-readable code plus one plain sentence, and the WebSocket
-// close codes the server uses. docs/protocol.md lists every code and when it is sent.
+// The one error type of proto/: a stable machine-readable code, one plain sentence and, for a
+// problem inside a JSON document, the path of the offending value. Wire messages carry it as the
+// "error" message (code and message; docs/protocol.md lists every code and when it is sent);
+// documents (scenes, results, match states, journals) report it with its path (error_to_json;
+// docs/carrom-sim.md lists their codes). Also the WebSocket close codes the server uses.
 
 #include <string>
 #include <string_view>
@@ -8,8 +11,13 @@
 namespace carrom::proto {
 
 struct Error {
-    std::string code;    // one of the constants in namespace code (stable; clients switch on it)
+    std::string code; // a constant of namespace code or scene_code, or another documented
+                      // code ("overlap", "inconsistent_state", ...); stable: callers switch on it
     std::string message; // one plain sentence for people; may change between versions
+    // Where in a decoded JSON document: "config.disc_restitution", "bodies[3].vel.x"; "" for the
+    // document as a whole and for errors that are not about a value. Not sent on the wire (the
+    // "error" message's sentence names the field instead).
+    std::string path = {};
     friend bool operator==(const Error&, const Error&) = default;
 };
 
@@ -53,6 +61,25 @@ inline constexpr std::string_view kIllegalShot = "illegal_shot";
 inline constexpr std::string_view kUnsupported = "unsupported"; // e.g. bot seats without bots
 inline constexpr std::string_view kInternal = "internal";
 } // namespace code
+
+// Codes of documents: scenes, results, match states and journals (docs/carrom-sim.md).
+namespace scene_code {
+inline constexpr std::string_view kMalformedJson = "malformed_json"; // not JSON, number overflow
+inline constexpr std::string_view kTooLarge = "too_large";           // text over its size limit
+inline constexpr std::string_view kTooDeep = "too_deep";             // nesting over kMaxJsonDepth
+inline constexpr std::string_view kDuplicateKey = "duplicate_key";   // a key twice in one object
+inline constexpr std::string_view kWrongType = "wrong_type";         // e.g. a string for a number
+inline constexpr std::string_view kMissingField = "missing_field";
+inline constexpr std::string_view kUnknownField = "unknown_field";
+inline constexpr std::string_view kNotFinite = "not_finite";
+inline constexpr std::string_view kOutOfRange = "out_of_range";
+inline constexpr std::string_view kBadValue = "bad_value";           // e.g. an unknown body kind
+inline constexpr std::string_view kTooMany = "too_many";             // more than kMaxSceneBodies
+inline constexpr std::string_view kConflict = "conflicting_fields";  // "bodies" and "layout"
+inline constexpr std::string_view kInvalidConfig = "invalid_config"; // validate_config failed
+// validate_scene failures keep their own codes: "duplicate_id", "not_finite",
+// "outside_cushions", "overlap".
+} // namespace scene_code
 
 // WebSocket close codes (RFC 6455 section 7.4 plus the application range 4000-4999).
 inline constexpr int kCloseNormal = 1000;          // leave, or server-side normal end

@@ -10,6 +10,7 @@
 // the JSON form is in journal_json.hpp and docs/protocol.md, "Match journals".
 
 #include "carrom/config.hpp"
+#include "carrom/enum_names.hpp"
 #include "carrom/physics_version.hpp"
 #include "carrom/rules/match_state.hpp"
 #include "carrom/rules/rule_code.hpp"
@@ -103,6 +104,8 @@ enum class ForfeitReason : std::uint8_t {
     Left,         // "left": the player left the room during the game
     GraceExpired, // "grace_expired": the player's connection dropped and did not come back
 };
+inline constexpr enum_names::Table<ForfeitReason, 2> kForfeitReasonNames{
+    {{ForfeitReason::Left, "left"}, {ForfeitReason::GraceExpired, "grace_expired"}}};
 std::string_view to_string(ForfeitReason reason);
 bool parse(std::string_view text, ForfeitReason& out);
 

@@ -4,7 +4,7 @@
 // Doubles are written in their shortest round-trip form, so shots and configs decode to the same
 // bits and a decoded journal replays exactly. 64-bit hashes are 16 lowercase hex digits (JSON
 // numbers are not exact beyond 2^53 in every reader). Decoding untrusted text never throws: it
-// returns a value or a JsonError naming the offending value's path ("entries[4].shot.x"),
+// returns a value or an Error naming the offending value's path ("entries[4].shot.x"),
 // a stable code and one sentence.
 
 #include "carrom/proto/journal.hpp"

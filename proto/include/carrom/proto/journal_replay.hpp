@@ -46,7 +46,7 @@ rules::MatchState initial_state(const MatchCreated& created);
 
 // An error (code version_mismatch, one sentence naming both versions) when this build's physics
 // or rules version differs from the journal's: its strokes would not replay to what it recorded.
-std::optional<JsonError> check_versions(const MatchCreated& created);
+std::optional<Error> check_versions(const MatchCreated& created);
 
 // One replayed stroke, clock expiry or forfeit.
 struct ReplayStep {
@@ -66,7 +66,7 @@ struct ReplayOptions {
 
 struct ReplayResult {
     // The journal could not be replayed at all (version_mismatch, bad_journal): no steps.
-    std::optional<JsonError> error;
+    std::optional<Error> error;
     std::vector<ReplayStep> steps;
     rules::MatchState state; // after the last replayed entry, as the server would hold it
     int mismatches = 0;      // steps with differences (a refused input counts)

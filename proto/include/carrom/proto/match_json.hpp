@@ -1,9 +1,10 @@
 #pragma once
 // JSON for the rules engine: match state (both ways), rules config (both ways) and shot outcome
 // (encode). Used by `carrom-sim --rules` (docs/rules.md) and available to the server. Decoding
-// never throws: every decoder returns a value or a JsonError naming the offending value's path
+// never throws: every decoder returns a value or an Error naming the offending value's path
 // ("state.queen.seat", "state.bodies[3].pos.x"), a stable code and one sentence.
 
+#include "carrom/enum_names.hpp"
 #include "carrom/proto/scene_json.hpp"
 #include "carrom/rules/match.hpp"
 
@@ -19,6 +20,9 @@ namespace match_code {
 // that is not in the pocketed list, a queen status that does not match the queen body, ...).
 inline constexpr std::string_view kInconsistentState = "inconsistent_state";
 } // namespace match_code
+
+// The largest |score| (and points, dues, target) a match or journal file may hold.
+inline constexpr int kMaxFileScore = 1000000;
 
 // Every field of the config.
 nlohmann::json rules_config_to_json(const rules::RulesConfig& config);
@@ -55,7 +59,18 @@ Decoded<Shot> decode_rules_shot(const nlohmann::json& j, const std::string& path
 // The outcome; "physics" (sim_result_to_json) only when include_physics.
 nlohmann::json shot_outcome_to_json(const rules::ShotOutcome& outcome, bool include_physics);
 
-// snake_case names of the state's enums.
+// snake_case names of the state's enums (the rules engine's Phase, not the wire's proto::Phase).
+inline constexpr enum_names::Table<rules::Phase, 3> kMatchPhaseNames{{
+    {rules::Phase::AwaitingShot, "awaiting_shot"},
+    {rules::Phase::BoardOver, "board_over"},
+    {rules::Phase::GameOver, "game_over"},
+}};
+inline constexpr enum_names::Table<rules::QueenStatus, 4> kQueenStatusNames{{
+    {rules::QueenStatus::OnBoard, "on_board"},
+    {rules::QueenStatus::PendingCover, "pending_cover"},
+    {rules::QueenStatus::Covered, "covered"},
+    {rules::QueenStatus::OutOfPlay, "out_of_play"},
+}};
 std::string_view to_string(rules::Phase phase);
 bool parse_phase(std::string_view text, rules::Phase& out);
 std::string_view to_string(rules::QueenStatus status);

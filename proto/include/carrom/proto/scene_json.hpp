@@ -1,13 +1,14 @@
 #pragma once
 // JSON codec for physics data: config overrides, bodies, shots, scenes, events and simulation
 // results (docs/carrom-sim.md describes the format). Decoding untrusted text never throws: every
-// decoder returns either a value or an error naming the offending value by its JSON path
-// (e.g. "bodies[3].vel.x") with a stable code and one sentence.
+// decoder returns either a value or an Error (error.hpp) naming the offending value by its JSON
+// path (e.g. "bodies[3].vel.x") with a stable code (scene_code::*) and one sentence.
 
 #include "carrom/body.hpp"
 #include "carrom/config.hpp"
 #include "carrom/event.hpp"
 #include "carrom/exact_engine.hpp"
+#include "carrom/proto/error.hpp"
 #include "carrom/scene.hpp"
 
 #include <nlohmann/json.hpp>
@@ -21,32 +22,6 @@
 
 namespace carrom::proto {
 
-// A decoding problem. path is "" for the document as a whole.
-struct JsonError {
-    std::string code;    // one of scene_code::* or a SceneError code ("overlap", ...)
-    std::string path;    // where: "config.disc_restitution", "bodies[3].vel.x", "shot.power"
-    std::string message; // one plain sentence
-    friend bool operator==(const JsonError&, const JsonError&) = default;
-};
-
-namespace scene_code {
-inline constexpr std::string_view kMalformedJson = "malformed_json"; // not JSON, number overflow
-inline constexpr std::string_view kTooLarge = "too_large";           // text over kMaxSceneBytes
-inline constexpr std::string_view kTooDeep = "too_deep";             // nesting over kMaxJsonDepth
-inline constexpr std::string_view kDuplicateKey = "duplicate_key";   // a key twice in one object
-inline constexpr std::string_view kWrongType = "wrong_type";         // e.g. a string for a number
-inline constexpr std::string_view kMissingField = "missing_field";
-inline constexpr std::string_view kUnknownField = "unknown_field";
-inline constexpr std::string_view kNotFinite = "not_finite";
-inline constexpr std::string_view kOutOfRange = "out_of_range";
-inline constexpr std::string_view kBadValue = "bad_value";           // e.g. an unknown body kind
-inline constexpr std::string_view kTooMany = "too_many";             // more than kMaxSceneBodies
-inline constexpr std::string_view kConflict = "conflicting_fields";  // "bodies" and "layout"
-inline constexpr std::string_view kInvalidConfig = "invalid_config"; // validate_config failed
-// validate_scene failures keep their own codes: "duplicate_id", "not_finite",
-// "outside_cushions", "overlap".
-} // namespace scene_code
-
 inline constexpr std::size_t kMaxSceneBytes = 1 << 20; // 1 MiB of scene text
 inline constexpr std::size_t kMaxJsonDepth = 16;       // nested arrays and objects
 inline constexpr std::size_t kMaxSceneBodies = 64;
@@ -57,7 +32,7 @@ inline constexpr std::size_t kMaxDescriptionBytes = 2000;
 // A value or the first problem found; value is meaningful only when ok().
 template <class T> struct Decoded {
     T value{};
-    std::optional<JsonError> error;
+    std::optional<Error> error;
     bool ok() const { return !error.has_value(); }
 };
 
@@ -112,6 +87,6 @@ nlohmann::json stats_to_json(const SimStats& stats);
 nlohmann::json pocketed_ids_to_json(std::span<const Body> bodies);
 // {"end_time_s", "truncated", "events", "bodies", "pocketed", "stats"}.
 nlohmann::json sim_result_to_json(const SimResult& result);
-nlohmann::json error_to_json(const JsonError& error); // {"error": {"code", "path", "message"}}
+nlohmann::json error_to_json(const Error& error); // {"error": {"code", "path", "message"}}
 
 } // namespace carrom::proto

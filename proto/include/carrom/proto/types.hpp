@@ -3,6 +3,7 @@
 // string on the wire; parse_* return false for any other string.
 
 #include "carrom/body.hpp"
+#include "carrom/enum_names.hpp"
 #include "carrom/rules/rule_set.hpp"
 #include "carrom/rules/seat.hpp"
 #include "carrom/scene.hpp"
@@ -32,6 +33,30 @@ enum class BotLevel : std::uint8_t { Random, Easy, Medium, Hard }; // "random" "
 // seat sides, in seat order: singles uses bottom and top). Not carrom::Baseline, which names
 // the two baselines of a scene file.
 using Baseline = rules::Side;
+
+// Wire names (enum_names.hpp); Baseline's are rules::kSideNames, BodyKind's kBodyKindNames.
+inline constexpr enum_names::Table<RuleSet, 4> kRuleSetNames{{{RuleSet::Icf, "icf"},
+                                                              {RuleSet::Seed, "seed"},
+                                                              {RuleSet::Freestyle, "freestyle"},
+                                                              {RuleSet::DiscPool, "discpool"}}};
+inline constexpr enum_names::Table<Role, 2> kRoleNames{
+    {{Role::Player, "player"}, {Role::Spectator, "spectator"}}};
+inline constexpr enum_names::Table<Colour, 3> kColourNames{
+    {{Colour::None, "none"}, {Colour::Black, "black"}, {Colour::White, "white"}}};
+inline constexpr enum_names::Table<Phase, 5> kPhaseNames{{{Phase::Waiting, "waiting"},
+                                                          {Phase::Aiming, "aiming"},
+                                                          {Phase::Moving, "moving"},
+                                                          {Phase::BoardOver, "board_over"},
+                                                          {Phase::GameOver, "game_over"}}};
+inline constexpr enum_names::Table<QueenState, 4> kQueenStateNames{
+    {{QueenState::OnBoard, "on_board"},
+     {QueenState::Pending, "pending"},
+     {QueenState::Covered, "covered"},
+     {QueenState::None, "none"}}};
+inline constexpr enum_names::Table<BotLevel, 4> kBotLevelNames{{{BotLevel::Random, "random"},
+                                                                {BotLevel::Easy, "easy"},
+                                                                {BotLevel::Medium, "medium"},
+                                                                {BotLevel::Hard, "hard"}}};
 
 std::string_view to_string(RuleSet value);
 // The rules engine's rule set for a wire rule set (the two enums list the same rule sets).
