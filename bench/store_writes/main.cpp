@@ -1,6 +1,6 @@
 // carrom-store-writes: appends stroke entries to a SQLite match store at a steady rate (or as
 // fast as it takes them) and reports how long each append waited for its on_written(true): the
-// time a room would hold a stroke's first broadcast back (docs/server.md, "Match store").
+// time a room would hold a stroke's first broadcast back (docs/store.md).
 //   carrom-store-writes --matches 1000 --rate 300 --seconds 10 [--path FILE]
 // prints one line: the time open() took (its checks include PRAGMA quick_check, which reads
 // every page), entries, entries/s achieved, and the wait's p50, p99, p99.9 and max in ms.

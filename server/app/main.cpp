@@ -145,7 +145,7 @@ int main(int argc, char** argv) {
     std::shared_ptr<carrom::store::MatchStore> store;
     if (data != "none") {
         carrom::store::SqliteStoreOptions options;
-        // Test seam (docs/server.md, "Write errors"): writes fail while this file exists.
+        // Test seam (docs/store.md, "Write errors"): writes fail while this file exists.
         if (const char* fail_file = std::getenv("CARROM_TEST_STORE_FAIL_FILE");
             fail_file != nullptr && *fail_file != '\0') {
             options.fail_writes = [path = std::string(fail_file)] {

@@ -35,7 +35,7 @@ void WsSession::handle_hello(const proto::Hello& hello) {
     if (hello.resume_token) {
         record = core_.registry.find_player(*hello.resume_token);
         if (!record) {
-            // A seat of a match recovered after a restart (docs/server.md, "Recovery after a
+            // A seat of a match recovered after a restart (docs/store.md, "Recovery after a
             // restart"): the store kept the token's hash.
             record = core_.claim_restored_seat(*hello.resume_token);
         }

@@ -32,7 +32,7 @@ public:
     std::uint16_t listen();
     // Runs the I/O threads in the background (settings.threads of them).
     void start();
-    // Graceful stop: stop accepting, send "shutting_down" and close every connection (1001);
+    // Graceful stop: stop accepting, send "shutting_down" and close every connection (1012 "restarting");
     // returns once all connections closed or shutdown_grace_s passed, and the threads ended.
     void shutdown();
     // Blocks until SIGINT or SIGTERM, then shutdown().

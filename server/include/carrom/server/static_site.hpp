@@ -54,7 +54,7 @@ struct StaticResponse {
 };
 
 // Limits for a directory given with --web-root (the embedded files are whatever the build put
-// in; web/ is about 100 KB).
+// in; web/ is about 170 KB).
 struct SiteLimits {
     std::size_t max_files = 1000;
     std::size_t max_file_bytes = std::size_t{8} << 20;
