@@ -8,6 +8,7 @@
 
 #include <boost/asio/io_context.hpp>
 #include <boost/asio/ip/tcp.hpp>
+#include <boost/asio/ssl/context.hpp>
 
 #include <chrono>
 #include <cstdint>
@@ -25,9 +26,10 @@ struct LoadStats {
     std::int64_t messages = 0; // received, every kind
     std::int64_t bytes = 0;    // received payload bytes
     std::int64_t snapshots = 0;
-    std::int64_t shots = 0;                             // shot_result received by the shooter
-    std::int64_t errors = 0;                            // error messages received
-    std::int64_t failures = 0;                          // connections that broke or never opened
+    std::int64_t shots = 0;    // shot_result received by the shooter
+    std::int64_t errors = 0;   // error messages received
+    std::int64_t failures = 0; // connections that broke or never opened
+    std::string tls_refusal;   // the first refused TLS handshake's sentence (client_tls.hpp)
     std::map<std::string, std::int64_t> errors_by_code; // error messages received, by code
     std::int64_t matches_started = 0;                   // pairs whose creator began to connect
     std::int64_t matches_finished = 0; // games that ended (game_end), counted once per match
@@ -44,6 +46,9 @@ struct LoadStats {
 
 struct LoadOptions {
     boost::asio::ip::tcp::endpoint server;
+    // wss: TLS with this client context, the certificate checked for the server's IP address;
+    // null: plain ws.
+    std::shared_ptr<boost::asio::ssl::context> tls;
     proto::RuleSet rule_set = proto::RuleSet::Freestyle;
     std::chrono::milliseconds think{0}; // delay before each shot
     // Each delay is drawn uniformly from [think - think_spread, think + think_spread] (players

@@ -6,6 +6,7 @@
 #include "load_process.hpp"
 
 #include "carrom/proto/limits.hpp"
+#include "carrom/tls/client_tls.hpp"
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
@@ -163,6 +164,8 @@ int main(int argc, char** argv) {
     bool no_samples = false;
     std::string progress_out;
     double progress_s = 60.0;
+    bool tls = false;
+    std::string ca_file;
 
     CLI::App app{"carrom-load: N concurrent bot matches against a carrom-server on 127.0.0.1"};
     app.option_defaults()->always_capture_default();
@@ -204,6 +207,11 @@ int main(int argc, char** argv) {
                    "Append a JSON line of running totals here every --progress-s seconds");
     app.add_option("--progress-s", progress_s, "Seconds between progress lines")
         ->check(CLI::Range(1.0, 3600.0));
+    auto* tls_flag = app.add_flag("--tls", tls,
+                                  "Connect with wss (TLS; the server's certificate must be for "
+                                  "127.0.0.1 and trusted)");
+    app.add_option("--ca-file", ca_file, "--tls: trust the certificate authorities in this file")
+        ->needs(tls_flag);
     CLI11_PARSE(app, argc, argv);
     if (think_spread_ms > think_ms) {
         std::cerr << "--think-spread-ms must not exceed --think-ms.\n";
@@ -231,6 +239,14 @@ int main(int argc, char** argv) {
 
     load::LoadOptions options;
     options.server = {asio::ip::make_address("127.0.0.1"), server_port};
+    if (tls) {
+        auto context = tls::client_tls_context(ca_file);
+        if (auto* error = std::get_if<std::string>(&context)) {
+            std::cerr << *error << "\n";
+            return 2;
+        }
+        options.tls = std::get<0>(std::move(context));
+    }
     proto::parse(rule_set_name, options.rule_set);
     options.think = std::chrono::milliseconds(think_ms);
     options.think_spread = std::chrono::milliseconds(think_spread_ms);
@@ -336,6 +352,9 @@ int main(int argc, char** argv) {
         measured.shots += stats.shots;
         measured.errors += stats.errors;
         measured.failures += stats.failures;
+        if (measured.tls_refusal.empty()) {
+            measured.tls_refusal = stats.tls_refusal;
+        }
         measured.matches_started += stats.matches_started;
         measured.matches_finished += stats.matches_finished;
         for (const auto& [code, count] : stats.errors_by_code) {
@@ -392,6 +411,8 @@ int main(int argc, char** argv) {
         {"held_at_start", held_before},
         {"held_at_end", held},
         {"client_failures", measured.failures},
+        {"tls", tls},
+        {"tls_refusal", measured.tls_refusal},
         {"errors_received", measured.errors},
         {"shots", measured.shots},
         {"shots_per_s", static_cast<double>(measured.shots) / elapsed},

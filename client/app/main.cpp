@@ -28,7 +28,10 @@ int main(int argc, char** argv) {
     bool quick = false;
     bool bot = false;
     std::string rule_set = "icf";
-    cli.add_option("--url", options.url, "Server address, ws://HOST:PORT")->capture_default_str();
+    cli.add_option("--url", options.url, "Server address, ws://HOST:PORT or wss://HOST:PORT")
+        ->capture_default_str();
+    cli.add_option("--ca-file", options.ca_file,
+                   "wss://: trust the certificate authorities in this PEM file too");
     cli.add_option("--name", options.name, "Your name (1 to 24 bytes)")->capture_default_str();
     auto* create_flag = cli.add_flag("--create", create, "Create a private room");
     auto* join_opt =
