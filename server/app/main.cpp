@@ -137,6 +137,10 @@ int main(int argc, char** argv) {
         ->check(CLI::IsMember({"trace", "debug", "info", "warn", "error", "off"}));
     CLI11_PARSE(app, argc, argv);
     (void)carrom::proto::parse(quick_bot_level, s.quick_match_bot_level);
+    if (const std::string problem = carrom::server::tls_files_problem(s); !problem.empty()) {
+        std::fprintf(stderr, "carrom-server: bad_tls_files: %s\n", problem.c_str());
+        return 2;
+    }
 
     // Logs go to stderr: stdout carries only the "listening on" line that scripts read.
     spdlog::set_default_logger(std::make_shared<spdlog::logger>(

@@ -140,6 +140,15 @@ void Server::shutdown() {
     }
 }
 
+std::string tls_files_problem(const ServerSettings& settings) {
+    if (settings.tls_cert.empty() && settings.tls_key.empty()) {
+        return {};
+    }
+    auto loaded = TlsContext::load(settings.tls_cert, settings.tls_key);
+    auto* error = std::get_if<std::string>(&loaded);
+    return error != nullptr ? *error : std::string();
+}
+
 bool Server::reload_tls(std::string& result) {
     if (!impl_->core.tls) {
         result = "no TLS certificate to reload (no --tls-cert)";

@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <memory>
 #include <stdexcept>
+#include <string>
 
 namespace carrom::server {
 
@@ -19,6 +20,11 @@ namespace carrom::server {
 struct TlsFileError : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
+
+// Why settings.tls_cert and tls_key cannot be used (Server::listen would throw TlsFileError with
+// it); empty when they can, or when no TLS is asked for. For a check at start, before anything
+// else is logged.
+std::string tls_files_problem(const ServerSettings& settings);
 
 class Server {
 public:
