@@ -125,7 +125,7 @@ std::variant<TlsContext::Loaded, std::string> load_files(const std::string& cert
                          ssl::context::no_tlsv1_1 | SSL_OP_NO_RENEGOTIATION |
                          SSL_OP_NO_COMPRESSION);
     SSL_CTX_set_min_proto_version(native, TLS1_2_VERSION);
-    SSL_CTX_set_dh_auto(native, 1); // the RFC 7919 group for the DHE suites
+    SSL_CTX_set_dh_auto(native, 1); // OpenSSL's built-in group for the DHE suites
     boost::system::error_code ec;
     if (SSL_CTX_set_cipher_list(native, kTls12Ciphers) != 1) {
         ec.assign(static_cast<int>(ERR_get_error()), boost::asio::error::get_ssl_category());
