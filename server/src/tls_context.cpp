@@ -126,6 +126,9 @@ std::variant<TlsContext::Loaded, std::string> load_files(const std::string& cert
                          SSL_OP_NO_COMPRESSION);
     SSL_CTX_set_min_proto_version(native, TLS1_2_VERSION);
     SSL_CTX_set_dh_auto(native, 1); // OpenSSL's built-in group for the DHE suites
+    // A connection between messages holds no TLS read or write buffer (OpenSSL frees them and
+    // allocates them again for the next record): at a human pace most connections are idle.
+    SSL_CTX_set_mode(native, SSL_MODE_RELEASE_BUFFERS);
     boost::system::error_code ec;
     if (SSL_CTX_set_cipher_list(native, kTls12Ciphers) != 1) {
         ec.assign(static_cast<int>(ERR_get_error()), boost::asio::error::get_ssl_category());
