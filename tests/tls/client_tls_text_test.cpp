@@ -23,9 +23,14 @@ tls::VerifyFailure failure(long error, int depth) {
     return f;
 }
 
-const boost::system::error_code
-    kVerifyFailed(static_cast<int>(ERR_PACK(ERR_LIB_SSL, 0, SSL_R_CERTIFICATE_VERIFY_FAILED)),
-                  boost::asio::error::get_ssl_category());
+// An error of OpenSSL's SSL library as Asio reports it (ERR_PACK, without its C casts).
+boost::system::error_code ssl_error(int reason) {
+    const unsigned long packed = static_cast<unsigned long>(ERR_LIB_SSL) << ERR_LIB_OFFSET |
+                                 static_cast<unsigned long>(reason);
+    return {static_cast<int>(packed), boost::asio::error::get_ssl_category()};
+}
+
+const boost::system::error_code kVerifyFailed = ssl_error(SSL_R_CERTIFICATE_VERIFY_FAILED);
 
 TEST(ClientTlsText, NotYetValid) {
     EXPECT_EQ(tls::tls_handshake_error_text("h:1", kVerifyFailed,
