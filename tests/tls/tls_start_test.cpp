@@ -23,40 +23,44 @@ protected:
     Pki pki_;
 };
 
-TEST_F(TlsStart, KeyOfAnotherCertificateExits2) {
-    const auto run = start_with(pki_.file("server.pem"), pki_.file("localhost.key"));
-    EXPECT_EQ(run.exit, 2);
-    EXPECT_EQ(run.out, "carrom-server: bad_tls_files: the TLS certificate in '" +
-                           pki_.file("server.pem") + "' does not match the key in '" +
-                           pki_.file("localhost.key") + "'.\n");
+// "CERT" and "KEY" in text replaced by the two paths.
+std::string with_paths(std::string text, const std::string& cert, const std::string& key) {
+    for (const auto& [token, path] : {std::pair{std::string("CERT"), cert}, {"KEY", key}}) {
+        if (const auto at = text.find(token); at != std::string::npos) {
+            text.replace(at, token.size(), path);
+        }
+    }
+    return text;
 }
 
-TEST_F(TlsStart, MissingCertificateFileExits2) {
-    const auto run = start_with(pki_.file("none.pem"), pki_.file("server.key"));
-    EXPECT_EQ(run.exit, 2);
-    EXPECT_EQ(run.out, "carrom-server: bad_tls_files: cannot read the TLS certificate file '" +
-                           pki_.file("none.pem") + "' (No such file or directory).\n");
-}
-
-TEST_F(TlsStart, ExpiredCertificateExits2) {
-    const auto run = start_with(pki_.file("expired.pem"), pki_.file("expired.key"));
-    EXPECT_EQ(run.exit, 2);
-    EXPECT_EQ(run.out, "carrom-server: bad_tls_files: the TLS certificate in '" +
-                           pki_.file("expired.pem") + "' expired on 2020-12-31T00:00:00Z.\n");
-}
-
-TEST_F(TlsStart, KeyGivenAsCertificateExits2) {
-    const auto run = start_with(pki_.file("server.key"), pki_.file("server.key"));
-    EXPECT_EQ(run.exit, 2);
-    EXPECT_EQ(run.out, "carrom-server: bad_tls_files: the TLS certificate file '" +
-                           pki_.file("server.key") + "' holds no PEM certificate.\n");
-}
-
-TEST_F(TlsStart, CertificateGivenAsKeyExits2) {
-    const auto run = start_with(pki_.file("server.pem"), pki_.file("server.pem"));
-    EXPECT_EQ(run.exit, 2);
-    EXPECT_EQ(run.out, "carrom-server: bad_tls_files: the TLS key file '" +
-                           pki_.file("server.pem") + "' holds no unencrypted PEM private key.\n");
+TEST_F(TlsStart, EveryUnusableFileExits2WithItsLine) {
+    struct BadFiles {
+        const char* cert;
+        const char* key;
+        const char* sentence; // after "carrom-server: bad_tls_files: "
+    };
+    const BadFiles cases[] = {
+        {"server.pem", "localhost.key",
+         "the TLS certificate in 'CERT' does not match the key in 'KEY'."},
+        {"none.pem", "server.key",
+         "cannot read the TLS certificate file 'CERT' (No such file or directory)."},
+        {"server.pem", "none.key",
+         "cannot read the TLS key file 'KEY' (No such file or directory)."},
+        {"expired.pem", "expired.key",
+         "the TLS certificate in 'CERT' expired on 2020-12-31T00:00:00Z."},
+        {"server.key", "server.key", "the TLS certificate file 'CERT' holds no PEM certificate."},
+        {"server.pem", "server.pem",
+         "the TLS key file 'KEY' holds no unencrypted PEM private key."},
+    };
+    for (const BadFiles& files : cases) {
+        SCOPED_TRACE(std::string(files.cert) + " " + files.key);
+        const std::string cert = pki_.file(files.cert);
+        const std::string key = pki_.file(files.key);
+        const auto run = start_with(cert, key);
+        EXPECT_EQ(run.exit, 2);
+        EXPECT_EQ(run.out,
+                  "carrom-server: bad_tls_files: " + with_paths(files.sentence, cert, key) + "\n");
+    }
 }
 
 } // namespace
