@@ -43,7 +43,7 @@ protected:
         const std::string port = std::to_string(server.port());
         std::vector<std::string> common{
             "--ca-file", pki_.file("ca.pem"), "--games", "1", "--strategy",
-            "random",    "--think-ms",        "100"};
+            "random",    "--think-ms",        "200"};
         common.insert(common.end(), extra.begin(), extra.end());
         auto creator_args = common;
         creator_args.insert(creator_args.end(), {"--create", "--rule-set", "freestyle",
