@@ -5,7 +5,7 @@
                             (buildah inspect output); print the server's health check command
   http URL [EXPECT...]      GET URL; fail unless 200 and every EXPECT is in the body
   watch HOST PORT SECONDS   open a WebSocket, then print as JSON what the server sends until it
-                            closes (text frames, close code), within SECONDS
+                            closes (text frames, close code and reason), within SECONDS
   summary FILE FIELD        print one top-level field of a bot's JSON summary, compact
 
 Each prints its failure on stderr and exits 1.
@@ -148,7 +148,7 @@ def watch(host, port, seconds):
         out, buffer = buffer[:n], buffer[n:]
         return out
 
-    texts, close_code = [], None
+    texts, close_code, close_reason = [], None, ""
     try:
         while close_code is None:
             b0, b1 = take(2)
@@ -163,9 +163,10 @@ def watch(host, port, seconds):
                 texts.append(payload.decode("utf-8", "replace"))
             elif opcode == 0x8:
                 close_code = struct.unpack("!H", payload[:2])[0] if len(payload) >= 2 else 1005
+                close_reason = payload[2:].decode("utf-8", "replace")
     except (EOFError, socket.timeout, OSError):
         pass
-    print(json.dumps({"texts": texts, "close_code": close_code}))
+    print(json.dumps({"texts": texts, "close_code": close_code, "close_reason": close_reason}))
 
 
 def summary(path, field):

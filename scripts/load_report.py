@@ -81,7 +81,7 @@ def plot(rows, path):
     ax[0].plot(n, [r["snapshot_lag_ms_p99"] for r in rows], "s-", label="p99")
     ax[0].axhline(5.0, color="grey", linestyle="--", label="target p99 5 ms")
     ax[0].set_xlabel("concurrent matches")
-    ax[0].set_ylabel("snapshot lag behind the 60 Hz schedule, ms")
+    ax[0].set_ylabel("snapshot lag behind the room's schedule, ms")
     ax[0].set_yscale("log")
     ax[0].legend()
     ax[1].plot(n, [r["server_cpu_percent"] for r in rows], "o-", label="server CPU %")

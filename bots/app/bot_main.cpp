@@ -3,6 +3,7 @@
 // it played its games to the end, 1 otherwise (the summary's "failure" says why).
 #include "carrom/bots/bot_runner.hpp"
 #include "carrom/bots/scripted_strategy.hpp"
+#include "carrom/cli/room_request_flags.hpp"
 #include "carrom/proto/types.hpp"
 #include "trace_writer.hpp"
 
@@ -76,16 +77,11 @@ std::optional<std::string> read_file(const std::string& path, std::string& out) 
 int main(int argc, char** argv) {
     bots::BotConfig config;
     bots::StrategyOptions strategy_options;
-    bool create = false;
-    bool quick = false;
-    std::string join_code;
-    std::string spectate_code;
-    std::string rule_set_name = "icf";
+    cli::RoomRequestFlags room_flags;
     std::string script_path;
     std::string log_level = "warn";
     int target_points = 0;
     int boards = 0;
-    int seats = 2;
     double shot_clock_s = -1.0;
     double timeout_s = 3600.0;
     double resume_for_s = 130.0;
@@ -97,19 +93,7 @@ int main(int argc, char** argv) {
     app.add_option("--ca-file", config.connection.ca_file,
                    "wss://: trust the certificate authorities in this PEM file too");
     app.add_option("--name", config.name, "Player name (1-24 bytes)");
-    auto* create_flag = app.add_flag("--create", create, "Create a private room (seat 0)");
-    auto* join_option = app.add_option("--join", join_code, "Join the room with this code");
-    auto* spectate_option =
-        app.add_option("--spectate", spectate_code, "Watch the room with this code");
-    auto* quick_flag = app.add_flag("--quick", quick, "Ask for a quick match");
-    create_flag->excludes(join_option)->excludes(spectate_option)->excludes(quick_flag);
-    join_option->excludes(spectate_option)->excludes(quick_flag);
-    spectate_option->excludes(quick_flag);
-    app.add_option("--rule-set", rule_set_name, "Rule set for --create and --quick")
-        ->check(CLI::IsMember({"icf", "seed", "freestyle", "discpool"}));
-    app.add_option("--seats", seats,
-                   "--create and --quick: 2 (singles) or 4 (doubles: partners opposite)")
-        ->check(CLI::IsMember({2, 4}));
+    cli::add_room_request_flags(app, room_flags);
     app.add_option("--target-points", target_points, "--create: points to win (0 = default)")
         ->check(CLI::Range(0, 1000));
     app.add_option("--boards", boards, "--create: most boards (0 = default)")
@@ -146,23 +130,31 @@ int main(int argc, char** argv) {
         "", std::make_shared<spdlog::sinks::stderr_color_sink_mt>()));
     spdlog::set_level(spdlog::level::from_str(log_level));
 
-    proto::RuleSet rule_set = proto::RuleSet::Icf;
-    proto::parse(rule_set_name, rule_set);
-    if (!join_code.empty()) {
-        config.mode = bots::JoinMode::Join;
-        config.code = join_code;
-    } else if (!spectate_code.empty()) {
-        config.mode = bots::JoinMode::Spectate;
-        config.code = spectate_code;
-    } else if (create) {
-        config.mode = bots::JoinMode::Create;
-    } else {
-        config.mode = bots::JoinMode::Quick;
+    if (const std::string problem = cli::room_request_problem(room_flags); !problem.empty()) {
+        std::cerr << "carrom-bot: " << problem << "\n";
+        return 2;
     }
-    config.create.rule_set = rule_set;
-    config.quick_rule_set = rule_set;
-    config.create.seats = seats;
-    config.quick_seats = seats;
+    using Kind = cli::RoomRequestFlags::Kind;
+    switch (room_flags.kind) {
+    case Kind::Join:
+        config.mode = bots::JoinMode::Join;
+        break;
+    case Kind::Spectate:
+        config.mode = bots::JoinMode::Spectate;
+        break;
+    case Kind::Create:
+        config.mode = bots::JoinMode::Create;
+        break;
+    case Kind::None: // no room flag: a quick match
+    case Kind::Quick:
+        config.mode = bots::JoinMode::Quick;
+        break;
+    }
+    config.code = room_flags.code;
+    config.create.rule_set = room_flags.rule_set;
+    config.quick_rule_set = room_flags.rule_set;
+    config.create.seats = room_flags.seats;
+    config.quick_seats = room_flags.seats;
     if (target_points > 0) {
         config.create.options.target_points = target_points;
     }

@@ -1,5 +1,7 @@
 #include "load_client.hpp"
 
+#include "message_head.hpp"
+
 #include "carrom/bots/match_view.hpp"
 #include "carrom/proto/codec.hpp"
 #include "carrom/tls/client_tls.hpp"
@@ -11,7 +13,6 @@
 #include <boost/beast/websocket/stream.hpp>
 
 #include <algorithm>
-#include <charconv>
 #include <deque>
 #include <random>
 
@@ -24,37 +25,13 @@ using tcp = asio::ip::tcp;
 
 namespace {
 
-// "t" of a snapshot's text, without decoding the rest (0 when absent).
-double snapshot_time_s(std::string_view text) {
-    const auto at = text.find("\"t\":");
-    if (at == std::string_view::npos) {
-        return 0.0;
+// The messages a player acts on, decoded whole; the others (pong, the events of a shot's
+// physics and the rules' cues) are only counted.
+bool acts_on(const MessageHead& head) {
+    if (head.type == "event") {
+        return head.kind == "turn" || head.kind == "game_end";
     }
-    double t = 0.0;
-    const char* begin = text.data() + at + 4;
-    std::from_chars(begin, text.data() + text.size(), t);
-    return t;
-}
-
-// "due_ms" of a snapshot's text (the server's steady clock, ms, when its schedule wanted it
-// sent), or -1 when absent.
-std::int64_t snapshot_due_ms(std::string_view text) {
-    const auto at = text.find("\"due_ms\":");
-    if (at == std::string_view::npos) {
-        return -1;
-    }
-    std::int64_t due = -1;
-    const char* begin = text.data() + at + 9;
-    std::from_chars(begin, text.data() + text.size(), due);
-    return due;
-}
-
-bool is_snapshot(std::string_view text) {
-    return text.find("\"type\":\"snapshot\"") != std::string_view::npos;
-}
-
-bool is_keyframe(std::string_view text) {
-    return text.find("\"keyframe\":true") != std::string_view::npos;
+    return head.type != "pong";
 }
 
 } // namespace
@@ -178,44 +155,53 @@ private:
         if (moving_) {
             moving_bytes_ += static_cast<double>(text.size());
         }
-        if (is_snapshot(text)) {
-            return on_snapshot(text, now);
+        const auto head = read_message_head(text);
+        if (!head.ok()) {
+            ++stats_.malformed;
+            return;
+        }
+        if (head.message->type == "snapshot") {
+            return on_snapshot(head.message->snapshot, text.size(), now);
+        }
+        if (!acts_on(*head.message)) {
+            return;
         }
         auto decoded = proto::decode_server(text);
         if (!decoded.ok()) {
+            ++stats_.malformed;
             return;
         }
         std::visit([&](const auto& m) { on_message(m, now); }, *decoded.message);
     }
 
-    void on_snapshot(std::string_view text, Clock::time_point now) {
+    void on_snapshot(const SnapshotFields& snapshot, std::size_t bytes, Clock::time_point now) {
         ++stats_.snapshots;
-        if (is_keyframe(text) || pair_.shot_turn < 0) {
+        if (snapshot.keyframe || pair_.shot_turn < 0) {
             return;
         }
         if (!moving_) {
             moving_ = true;
             moving_since_ = now;
-            moving_bytes_ = static_cast<double>(text.size());
+            moving_bytes_ = static_cast<double>(bytes);
         }
-        // Lateness against the room's schedule: receive time minus the time the server's 60 Hz
-        // schedule wanted this snapshot sent (due_ms, the server's steady clock; steady_clock
-        // is CLOCK_MONOTONIC, shared by every process on this host).
+        // Lateness against the room's schedule: receive time minus the time the room's schedule
+        // (every change of motion plus the regular rate) wanted this delta sent (due_ms, the
+        // server's steady clock; steady_clock is CLOCK_MONOTONIC, shared by every process on
+        // this host).
         if (!options_.keep_samples) {
             return;
         }
-        const std::int64_t due_ms = snapshot_due_ms(text);
-        if (due_ms >= 0 && stats_.measuring) {
+        if (snapshot.due_ms && stats_.measuring) {
             const double now_ms =
                 std::chrono::duration<double, std::milli>(now.time_since_epoch()).count();
-            stats_.lag_ms.push_back(now_ms - static_cast<double>(due_ms));
-            stats_.lag_due_ms.push_back(due_ms);
+            stats_.lag_ms.push_back(now_ms - static_cast<double>(*snapshot.due_ms));
+            stats_.lag_due_ms.push_back(*snapshot.due_ms);
         }
-        // The old relative figure: receive time minus the snapshot's match time, minus the
-        // shot's smallest such value (end_moving()).
+        // The relative figure: receive time minus the snapshot's match time, minus the shot's
+        // smallest such value (end_moving()).
         const double since_shot_ms =
             std::chrono::duration<double, std::milli>(now - pair_.shot_sent_at).count();
-        shot_offsets_ms_.push_back(since_shot_ms - snapshot_time_s(text) * 1000.0);
+        shot_offsets_ms_.push_back(since_shot_ms - snapshot.t_s * 1000.0);
     }
 
     void end_moving(Clock::time_point now) {
@@ -405,6 +391,36 @@ private:
     double moving_bytes_ = 0.0;
     std::vector<double> shot_offsets_ms_; // this shot's (receive - match time), ms
 };
+
+LoadCounts& LoadCounts::operator+=(const LoadCounts& other) {
+    messages += other.messages;
+    bytes += other.bytes;
+    snapshots += other.snapshots;
+    malformed += other.malformed;
+    shots += other.shots;
+    errors += other.errors;
+    failures += other.failures;
+    matches_started += other.matches_started;
+    matches_finished += other.matches_finished;
+    return *this;
+}
+
+LoadStats& LoadStats::operator+=(const LoadStats& other) {
+    LoadCounts::operator+=(other);
+    if (tls_refusal.empty()) {
+        tls_refusal = other.tls_refusal;
+    }
+    for (const auto& [code, count] : other.errors_by_code) {
+        errors_by_code[code] += count;
+    }
+    lag_ms.insert(lag_ms.end(), other.lag_ms.begin(), other.lag_ms.end());
+    lag_due_ms.insert(lag_due_ms.end(), other.lag_due_ms.begin(), other.lag_due_ms.end());
+    relative_lag_ms.insert(relative_lag_ms.end(), other.relative_lag_ms.begin(),
+                           other.relative_lag_ms.end());
+    moving_bytes += other.moving_bytes;
+    moving_seconds += other.moving_seconds;
+    return *this;
+}
 
 MatchPair::MatchPair(asio::io_context& ioc, const LoadOptions& options, LoadStats& stats,
                      std::uint64_t seed)

@@ -1,7 +1,8 @@
 #pragma once
 // carrom-load's clients: many light WebSocket players on one io_context (one thread), so that
-// thousands of them cost the machine little next to the server being measured. Snapshots are
-// not decoded (only their "t" is read); everything else goes through proto::decode_server.
+// thousands of them cost the machine little next to the server being measured. Every message's
+// head is read first (message_head.hpp): of a snapshot only the fields the lag figures need;
+// the messages a player acts on are then decoded whole with proto::decode_server.
 
 #include "carrom/bots/random_strategy.hpp"
 #include "carrom/proto/client_messages.hpp"
@@ -21,18 +22,26 @@ namespace carrom::load {
 
 using Clock = std::chrono::steady_clock;
 
-// What all clients measure, summed (one thread: no locking).
-struct LoadStats {
+// What clients count, summed over them (one thread: no locking).
+struct LoadCounts {
     std::int64_t messages = 0; // received, every kind
     std::int64_t bytes = 0;    // received payload bytes
     std::int64_t snapshots = 0;
-    std::int64_t shots = 0;    // shot_result received by the shooter
-    std::int64_t errors = 0;   // error messages received
-    std::int64_t failures = 0; // connections that broke or never opened
-    std::string tls_refusal;   // the first refused TLS handshake's sentence (client_tls.hpp)
-    std::map<std::string, std::int64_t> errors_by_code; // error messages received, by code
-    std::int64_t matches_started = 0;                   // pairs whose creator began to connect
+    // Received messages whose head (message_head.hpp) or, for those a player acts on, whole
+    // text did not decode.
+    std::int64_t malformed = 0;
+    std::int64_t shots = 0;            // shot_result received by the shooter
+    std::int64_t errors = 0;           // error messages received
+    std::int64_t failures = 0;         // connections that broke or never opened
+    std::int64_t matches_started = 0;  // pairs whose creator began to connect
     std::int64_t matches_finished = 0; // games that ended (game_end), counted once per match
+    LoadCounts& operator+=(const LoadCounts& other);
+};
+
+// What clients measure, summed over them (one thread: no locking).
+struct LoadStats : LoadCounts {
+    std::map<std::string, std::int64_t> errors_by_code; // error messages received, by code
+    std::string tls_refusal; // the first refused TLS handshake's sentence (client_tls.hpp)
     // Per delta snapshot: receive time - the time the room's schedule had it due (due_ms), ms.
     std::vector<double> lag_ms;
     std::vector<std::int64_t> lag_due_ms; // due_ms of each lag_ms sample, for the timeline
@@ -42,6 +51,8 @@ struct LoadStats {
     double moving_bytes = 0.0;   // bytes received while the client's board moved
     double moving_seconds = 0.0; // summed over clients
     bool measuring = false;      // lags and bytes counted only inside the window
+    // Adds the other's counts and samples (measuring stays as it is).
+    LoadStats& operator+=(const LoadStats& other);
 };
 
 struct LoadOptions {

@@ -116,20 +116,10 @@ double load_average() {
 // The running totals of one shard, for the progress lines.
 struct Totals {
     std::int64_t held = 0;
-    std::int64_t matches_started = 0;
-    std::int64_t matches_finished = 0;
-    std::int64_t errors = 0;
-    std::int64_t failures = 0;
-    std::int64_t shots = 0;
-    std::int64_t messages = 0;
-    Totals& operator+=(const Totals& o) {
-        held += o.held;
-        matches_started += o.matches_started;
-        matches_finished += o.matches_finished;
-        errors += o.errors;
-        failures += o.failures;
-        shots += o.shots;
-        messages += o.messages;
+    load::LoadCounts counts;
+    Totals& operator+=(const Totals& other) {
+        held += other.held;
+        counts += other.counts;
         return *this;
     }
 };
@@ -314,25 +304,19 @@ int main(int argc, char** argv) {
             Totals totals;
             for (auto& shard : shards) {
                 totals += on_io(shard->ioc, [&] {
-                    const auto& st = shard->stats;
                     return Totals{static_cast<std::int64_t>(held_in(*shard)),
-                                  st.matches_started,
-                                  st.matches_finished,
-                                  st.errors,
-                                  st.failures,
-                                  st.shots,
-                                  st.messages};
+                                  static_cast<const load::LoadCounts&>(shard->stats)};
                 });
             }
             const nlohmann::json line = {
                 {"t_s", std::chrono::duration<double>(load::Clock::now() - start).count()},
                 {"held", totals.held},
-                {"matches_started", totals.matches_started},
-                {"matches_finished", totals.matches_finished},
-                {"errors_received", totals.errors},
-                {"client_failures", totals.failures},
-                {"shots", totals.shots},
-                {"messages", totals.messages}};
+                {"matches_started", totals.counts.matches_started},
+                {"matches_finished", totals.counts.matches_finished},
+                {"errors_received", totals.counts.errors},
+                {"client_failures", totals.counts.failures},
+                {"shots", totals.counts.shots},
+                {"messages", totals.counts.messages}};
             progress << line.dump() << std::endl;
         }
     }
@@ -346,27 +330,7 @@ int main(int argc, char** argv) {
             return std::make_pair(static_cast<std::int64_t>(held_in(*shard)), shard->stats);
         });
         held += h;
-        measured.messages += stats.messages;
-        measured.bytes += stats.bytes;
-        measured.snapshots += stats.snapshots;
-        measured.shots += stats.shots;
-        measured.errors += stats.errors;
-        measured.failures += stats.failures;
-        if (measured.tls_refusal.empty()) {
-            measured.tls_refusal = stats.tls_refusal;
-        }
-        measured.matches_started += stats.matches_started;
-        measured.matches_finished += stats.matches_finished;
-        for (const auto& [code, count] : stats.errors_by_code) {
-            measured.errors_by_code[code] += count;
-        }
-        measured.lag_ms.insert(measured.lag_ms.end(), stats.lag_ms.begin(), stats.lag_ms.end());
-        measured.lag_due_ms.insert(measured.lag_due_ms.end(), stats.lag_due_ms.begin(),
-                                   stats.lag_due_ms.end());
-        measured.relative_lag_ms.insert(measured.relative_lag_ms.end(),
-                                        stats.relative_lag_ms.begin(), stats.relative_lag_ms.end());
-        measured.moving_bytes += stats.moving_bytes;
-        measured.moving_seconds += stats.moving_seconds;
+        measured += stats;
     }
     const double elapsed = std::chrono::duration<double>(load::Clock::now() - start).count();
     const double cpu_after = pid > 0 ? cpu_seconds(pid) : 0.0;
@@ -414,6 +378,7 @@ int main(int argc, char** argv) {
         {"tls", tls},
         {"tls_refusal", measured.tls_refusal},
         {"errors_received", measured.errors},
+        {"messages_malformed", measured.malformed},
         {"shots", measured.shots},
         {"shots_per_s", static_cast<double>(measured.shots) / elapsed},
         {"client_messages_per_s", static_cast<double>(measured.messages) / elapsed},

@@ -4,11 +4,13 @@
 #include "carrom/client/game_over_text.hpp"
 #include "draw_util.hpp"
 #include "network_link.hpp"
+#include "unattended_modes.hpp"
 #include "window_output.hpp"
 
 #include <chrono>
 #include <ctime>
 #include <iostream>
+#include <utility>
 
 namespace carrom::client::app {
 namespace {
@@ -26,12 +28,7 @@ AppWindow::AppWindow(const AppOptions& options, const sf::Font& font)
       geometry_(make_board_geometry(physics_)), model_(physics_), aim_(physics_),
       board_painter_(geometry_), hud_(font), lobby_(font),
       sound_(!options.mute && options.bench_frames == 0 && options.screenshot_path.empty()),
-      session_(make_factory(), options.name, network_session_config()),
-      bench_(options.bench_frames) {
-    if (options.autoplay) {
-        auto_player_.emplace(*options.autoplay, 1);
-    }
-}
+      session_(make_factory(), options.name, network_session_config()) {}
 
 LinkFactory AppWindow::make_factory() {
     if (!options_.demo) {
@@ -212,7 +209,7 @@ int AppWindow::run() {
         // A screenshot of a networked match counts frames at 60 per second of real time.
         window_.setFramerateLimit(options_.screenshot_path.empty() ? 144 : 60);
     }
-    const auto started = std::chrono::steady_clock::now();
+    unattended_ = make_unattended_mode(options_);
     const sf::Vector2u size = window_.getSize();
     window_.setView(sf::View(sf::FloatRect(0.0f, 0.0f, f(size.x), f(size.y))));
     layout_ = make_layout(size.x, size.y, layout_seats_);
@@ -230,38 +227,68 @@ int AppWindow::run() {
         }
         const double now = clock_.now();
         update(now);
-        autoplay();
+        for (const sf::Event& e : std::exchange(unattended_input_, {})) {
+            handle_event(e);
+        }
         draw(now);
         if (model_.view().in_room) {
             frame_log_.frame(frame, model_, bodies_, session_.phase());
         }
         ++frame;
-        if (final_state_due()) {
-            const int code = write_final_state();
+        if (const std::optional<int> code = unattended_frame(frame)) {
             window_.close();
-            return code;
-        }
-        if (screenshot_due(frame)) {
-            const int code = finish_screenshot();
-            window_.close();
-            return code;
-        }
-        if (timed_out(started)) {
-            window_.close();
-            return 3;
+            return *code;
         }
         window_.display();
         const double ms =
             std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0)
                 .count();
         const double cpu_ms = 1000.0 * static_cast<double>(std::clock() - cpu0) / CLOCKS_PER_SEC;
-        if (bench_done(frame, ms, cpu_ms)) {
-            window_.close();
-            return 0;
-        }
+        shown_ = FrameTime{ms, cpu_ms, model_.animating()};
         clock_.tick();
     }
     return 0;
+}
+
+std::optional<int> AppWindow::unattended_frame(int frame) {
+    if (!unattended_) {
+        return std::nullopt;
+    }
+    const ScreenMapping m = mapping();
+    const MatchView& v = model_.view();
+    const LiveTurn live{room_, aim_, shot_sent_turn_ == v.turn};
+    UnattendedFrame f{
+        frame,
+        window_,
+        model_,
+        &live,
+        v.in_room && v.phase == proto::Phase::GameOver && v.result && !model_.animating(),
+        [this] {
+            return session_.status_text() + ", " + std::to_string(shots_seen_) + " shots seen";
+        },
+        shots_seen_,
+        m,
+        physics_,
+        bodies_,
+        aim_striker_drawn_,
+        hud_.overlay_area(),
+        shown_,
+        board_painter_.repaints(),
+        hud_.bar_repaints(),
+        unattended_input_};
+    unattended_->on_frame(f);
+    return unattended_->done();
+}
+
+// "room CODE" on stdout once per room, for scripts that start a second player (or a bot) with
+// that code.
+void AppWindow::announce_room() {
+    const MatchView& v = model_.view();
+    if (!v.in_room || v.code.empty() || v.code == announced_room_) {
+        return;
+    }
+    announced_room_ = v.code;
+    std::cout << "room " << v.code << std::endl;
 }
 
 } // namespace carrom::client::app

@@ -1,11 +1,10 @@
 #pragma once
-// The desktop client's window: lobby, match view, input, sound, and the unattended modes
-// (screenshot and report, final state, timeout, frame benchmark, autoplay). One class over three
-// files: app_window.cpp (the loop, messages, input), app_window_draw.cpp (drawing),
-// app_window_unattended.cpp (what the unattended modes write and when they end the loop).
+// The desktop client's window: lobby, match view, input, sound, and at most one unattended mode
+// (unattended_mode.hpp: screenshot and report, final state, timeout, frame benchmark, autoplay)
+// that sees every frame. One class over two files: app_window.cpp (the loop, messages, input),
+// app_window_draw.cpp (drawing).
 
 #include "app.hpp"
-#include "auto_player.hpp"
 #include "blitter.hpp"
 #include "board_painter.hpp"
 #include "carrom/client/aim_controller.hpp"
@@ -14,7 +13,6 @@
 #include "carrom/client/connection.hpp"
 #include "carrom/client/match_model.hpp"
 #include "carrom/client/screen_mapping.hpp"
-#include "frame_bench.hpp"
 #include "frame_clock.hpp"
 #include "frame_log.hpp"
 #include "game_over_panel.hpp"
@@ -22,10 +20,11 @@
 #include "lobby_view.hpp"
 #include "reconnect_panel.hpp"
 #include "sound_player.hpp"
+#include "unattended_mode.hpp"
 
 #include <SFML/Graphics.hpp>
 
-#include <chrono>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -49,15 +48,10 @@ private:
     void draw(double now);
     void draw_aim();
     void draw_status_panel(const std::string& title, const std::string& detail);
-    bool save_screenshot();
-    bool timed_out(std::chrono::steady_clock::time_point started) const;
-    bool bench_done(int frame, double ms, double cpu_ms);
-    bool screenshot_due(int frame) const;
-    int finish_screenshot();
     void announce_room();
-    void autoplay();
-    bool final_state_due() const;
-    int write_final_state();
+    // Hands the frame just drawn (number `frame`) to the unattended mode; its exit code when it
+    // ends the run.
+    std::optional<int> unattended_frame(int frame);
     ScreenMapping mapping() const {
         return make_mapping(layout_.board, physics_.board_size_px, model_.view_side());
     }
@@ -85,15 +79,15 @@ private:
     int shot_sent_turn_ = -1; // the turn we already shot in (no double shots)
     double last_aim_sent_s_ = -1.0;
     bool aim_dirty_ = false;
-    FrameBench bench_;                      // --bench-frames
     int shots_seen_ = 0;                    // shot results received
     std::optional<Vec2> aim_striker_drawn_; // a striker being placed, drawn this frame
     std::string announced_room_;            // the room code last printed on stdout
     bool rematch_asked_ = false;            // sent `rematch` for the game that is over
-    std::optional<AutoPlayer> auto_player_; // --autoplay
     std::optional<proto::RoomState> room_;  // the newest room state (what --autoplay plays from)
-    int auto_turn_ = -1;                    // the turn --autoplay last aimed in
     FrameLog frame_log_;                    // --frame-log
+    std::unique_ptr<UnattendedMode> unattended_; // null: none
+    std::vector<sf::Event> unattended_input_;    // the mode's events for the next frame
+    std::optional<FrameTime> shown_;             // the last frame displayed
 };
 
 } // namespace carrom::client::app

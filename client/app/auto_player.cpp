@@ -28,11 +28,23 @@ sf::Event mouse(sf::Event::EventType type, const ScreenMapping& mapping, Vec2 bo
 AutoPlayer::AutoPlayer(proto::BotLevel level, std::uint64_t seed)
     : strategy_(bots::make_level_strategy(level, seed)) {}
 
-std::optional<sf::Event> AutoPlayer::next_event() {
-    if (!busy()) {
-        return std::nullopt;
+void AutoPlayer::on_frame(UnattendedFrame& frame) {
+    if (frame.live == nullptr) {
+        return;
     }
-    return events_[next_++];
+    const LiveTurn& live = *frame.live;
+    const MatchView& v = frame.model.view();
+    if (!busy() && live.aim.phase() == AimPhase::Idle && live.room && live.room->turn == v.turn &&
+        live.room->phase == proto::Phase::Aiming && !live.shot_sent) {
+        if (aimed_turn_ == v.turn) {
+            strategy_->shot_refused(); // the last gesture of this turn made no shot
+        }
+        aimed_turn_ = v.turn;
+        aim(*live.room, live.aim.striker_x(), live.aim.side(), frame.mapping, frame.physics);
+    }
+    if (busy()) {
+        frame.input.push_back(events_[next_++]);
+    }
 }
 
 void AutoPlayer::aim(const proto::RoomState& room, double striker_x, rules::Side side,

@@ -6,6 +6,8 @@
 // x, then press on the striker and pull back), handled by the same input path, so the aim
 // controller checks it as any other and the server checks it as any other shot.
 
+#include "unattended_mode.hpp"
+
 #include "carrom/bots/strategy.hpp"
 #include "carrom/client/screen_mapping.hpp"
 #include "carrom/config.hpp"
@@ -22,27 +24,29 @@
 
 namespace carrom::client::app {
 
-class AutoPlayer {
+class AutoPlayer final : public UnattendedMode {
 public:
     AutoPlayer(proto::BotLevel level, std::uint64_t seed);
 
+    // One queued mouse event per frame; on our turn, at rest, with the striker idle and the room
+    // state of this turn, the strategy aims (again, differently, when the last gesture of this
+    // turn made no shot or the server refused it). Nothing without a live turn (a replay).
+    void on_frame(UnattendedFrame& frame) override;
+    std::optional<int> done() const override { return std::nullopt; } // plays until another ends
+
+private:
     // Chooses the shot for our seat in `room` (our turn, the board at rest, the striker idle at
     // striker_x along the baseline of `side`) and queues the mouse events (window px through the
     // turned view's `mapping`) that slide the striker to the chosen x and shoot it
     // (aim_gesture.hpp).
     void aim(const proto::RoomState& room, double striker_x, rules::Side side,
              const ScreenMapping& mapping, const PhysicsConfig& physics);
-    // The next queued event, one per frame (so the window shows the aim as it is made).
-    std::optional<sf::Event> next_event();
     bool busy() const { return next_ < events_.size(); }
-    // The last gesture made no shot (the aim controller or the server refused it): the next
-    // choice for the same state differs.
-    void refused() { strategy_->shot_refused(); }
 
-private:
     std::unique_ptr<bots::Strategy> strategy_;
-    std::vector<sf::Event> events_;
+    std::vector<sf::Event> events_; // handed out one per frame, so the window shows the aim
     std::size_t next_ = 0;
+    int aimed_turn_ = -1; // the turn the strategy last aimed in
 };
 
 } // namespace carrom::client::app

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <iostream>
 
 namespace carrom::client::app {
 namespace {
@@ -18,6 +19,16 @@ double percentile(std::vector<double> v, double p) {
 }
 
 } // namespace
+
+void FrameBench::on_frame(UnattendedFrame& frame) {
+    if (!frame.shown ||
+        !record(frame.number - 1, frame.shown->wall_ms, frame.shown->cpu_ms, frame.shown->moving)) {
+        return;
+    }
+    const sf::Vector2u size = frame.window.getSize();
+    std::cout << json({size.x, size.y, msaa_, frame.board_paints, frame.hud_paints}) << std::endl;
+    done_ = 0;
+}
 
 bool FrameBench::record(int frame, double ms, double cpu_ms, bool moving) {
     if (frames_ <= 0 || frame <= kWarmupFrames) {

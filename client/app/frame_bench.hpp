@@ -1,6 +1,8 @@
 #pragma once
-// --bench-frames: the times of the frames drawn after a warm-up of 10, and their statistics as
-// one JSON line (docs/client.md "Frame time").
+// --bench-frames N: the times of N frames drawn after a warm-up of 10, and their statistics as
+// one JSON line on stdout (docs/client.md "Frame time"); then the run ends (exit code 0).
+
+#include "unattended_mode.hpp"
 
 #include <string>
 #include <vector>
@@ -15,9 +17,14 @@ struct FrameBenchWindow {
     long hud_paints = 0;   // HUD bar paints
 };
 
-class FrameBench {
+class FrameBench final : public UnattendedMode {
 public:
-    explicit FrameBench(int frames) : frames_(frames) {}
+    FrameBench(int frames, unsigned msaa) : frames_(frames), msaa_(msaa) {}
+    // Records the frame shown before this one; prints the statistics after the last one.
+    void on_frame(UnattendedFrame& frame) override;
+    std::optional<int> done() const override { return done_; }
+
+private:
     // Records frame number `frame` (1-based): wall and process CPU time in ms, whether pieces
     // moved. True once the last frame is recorded (false always when frames <= 0).
     bool record(int frame, double ms, double cpu_ms, bool moving);
@@ -26,9 +33,10 @@ public:
     // "hud_paints"}.
     std::string json(const FrameBenchWindow& window) const;
 
-private:
     static constexpr int kWarmupFrames = 10;
     int frames_;
+    unsigned msaa_;
+    std::optional<int> done_;
     std::vector<double> all_ms_;
     std::vector<double> moving_ms_;
     std::vector<double> cpu_ms_; // CPU time of the whole process (renderer threads included)

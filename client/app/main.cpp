@@ -10,7 +10,7 @@
 #include "replay_source.hpp"
 #include "replay_view.hpp"
 
-#include "carrom/proto/limits.hpp"
+#include "carrom/cli/room_request_flags.hpp"
 #include "carrom/proto/types.hpp"
 
 #include <CLI/CLI.hpp>
@@ -21,55 +21,34 @@ int main(int argc, char** argv) {
     using carrom::client::RoomRequest;
     carrom::client::app::AppOptions options;
     CLI::App cli{"carrom-client: play carrom against another player over the network"};
-    std::string create_rules;
-    std::string join_code;
-    std::string spectate_code;
-    bool create = false;
-    bool quick = false;
     bool bot = false;
-    std::string rule_set = "icf";
     cli.add_option("--url", options.url, "Server address, ws://HOST:PORT or wss://HOST:PORT")
         ->capture_default_str();
     cli.add_option("--ca-file", options.ca_file,
                    "wss://: trust the certificate authorities in this PEM file too");
     cli.add_option("--name", options.name, "Your name (1 to 24 bytes)")->capture_default_str();
-    auto* create_flag = cli.add_flag("--create", create, "Create a private room");
-    auto* join_opt =
-        cli.add_option("--join", join_code, "Join the room with this code as a player");
-    auto* spectate_opt =
-        cli.add_option("--spectate", spectate_code, "Watch the room with this code");
-    auto* quick_flag = cli.add_flag("--quick", quick, "Quick match: play the next waiting player");
-    create_flag->excludes(join_opt)->excludes(spectate_opt)->excludes(quick_flag);
-    join_opt->excludes(spectate_opt)->excludes(quick_flag);
-    spectate_opt->excludes(quick_flag);
+    carrom::cli::RoomRequestFlags room_flags;
+    const carrom::cli::RoomRequestOptions room_opts =
+        carrom::cli::add_room_request_flags(cli, room_flags);
     std::string vs_bot;
     auto* bot_flag = cli.add_flag("--bot", bot, "With --create: a server bot takes the other seat");
     auto* vs_bot_opt = cli.add_option(
         "--vs-bot", vs_bot,
         "Create a room where a server bot of this level (random, easy, medium, hard) takes the "
-        "other seat");
-    vs_bot_opt->excludes(join_opt)
-        ->excludes(spectate_opt)
-        ->excludes(quick_flag)
+        "other seat (with --seats 4: server bots take the three other seats)");
+    vs_bot_opt->excludes(room_opts.join)
+        ->excludes(room_opts.spectate)
+        ->excludes(room_opts.quick)
         ->excludes(bot_flag);
-    cli.add_option("--rules", rule_set,
-                   "Rule set for --create and --quick: icf, seed, freestyle, discpool")
-        ->capture_default_str();
-    int seats = 2;
-    auto* seats_opt =
-        cli.add_option("--seats", seats,
-                       "With --create, --quick or --vs-bot: 2 (singles) or 4 (doubles: partners "
-                       "opposite; --vs-bot puts server bots in the three other seats)")
-            ->capture_default_str()
-            ->check(CLI::IsMember({2, 4}));
-    seats_opt->excludes(join_opt)->excludes(spectate_opt);
     std::vector<int> bot_seats;
     auto* bot_seats_opt =
         cli.add_option("--bot-seats", bot_seats,
                        "Doubles with --bot or --vs-bot: the seats the server's bots take, e.g. 2 "
                        "(a bot partner; two players join) or 1,3 (default: 1,2,3)")
             ->delimiter(',');
-    bot_seats_opt->excludes(join_opt)->excludes(spectate_opt)->excludes(quick_flag);
+    bot_seats_opt->excludes(room_opts.join)
+        ->excludes(room_opts.spectate)
+        ->excludes(room_opts.quick);
     cli.add_flag("--demo", options.demo, "Offline demo: a local stand-in server, no network");
     cli.add_option("--demo-break-at", options.demo_break_at_s,
                    "Demo: seconds before the opponent breaks")
@@ -117,10 +96,10 @@ int main(int argc, char** argv) {
     auto* replay_opt = cli.add_option(
         "--replay", replay,
         "Play back a match journal: http://HOST:PORT/matches/ID, a file, or - for stdin");
-    replay_opt->excludes(create_flag)
-        ->excludes(join_opt)
-        ->excludes(spectate_opt)
-        ->excludes(quick_flag)
+    replay_opt->excludes(room_opts.create)
+        ->excludes(room_opts.join)
+        ->excludes(room_opts.spectate)
+        ->excludes(room_opts.quick)
         ->excludes(vs_bot_opt);
     cli.add_option("--replay-speed", options.replay_speed, "Replay speed, 0.25 to 4")
         ->capture_default_str()
@@ -144,22 +123,15 @@ int main(int argc, char** argv) {
         return carrom::client::app::run_replay(options, std::move(model));
     }
 
-    carrom::proto::RuleSet rules{};
-    if (!carrom::proto::parse(rule_set, rules)) {
-        std::cerr << "carrom-client: --rules must be icf, seed, freestyle or discpool\n";
-        return 2;
-    }
     if (!carrom::proto::is_player_name(options.name)) {
         std::cerr << "carrom-client: --name must be 1 to 24 bytes, not only spaces, without "
                      "control characters\n";
         return 2;
     }
-    for (const std::string* code : {&join_code, &spectate_code}) {
-        if (!code->empty() && !carrom::proto::is_room_code(*code)) {
-            std::cerr << "carrom-client: a room code is 6 characters from "
-                      << carrom::proto::kRoomCodeAlphabet << " (got \"" << *code << "\")\n";
-            return 2;
-        }
+    if (const std::string problem = carrom::cli::room_request_problem(room_flags);
+        !problem.empty()) {
+        std::cerr << "carrom-client: " << problem << "\n";
+        return 2;
     }
     if (options.bench_frames > 0) {
         options.demo = true;
@@ -190,14 +162,15 @@ int main(int argc, char** argv) {
         std::cerr << "carrom-client: --bot-seats needs --bot or --vs-bot\n";
         return 2;
     }
-    if (options.demo && seats != 2) {
+    if (options.demo && room_flags.seats != 2) {
         std::cerr << "carrom-client: the demo is singles (no --seats 4)\n";
         return 2;
     }
+    using Kind = carrom::cli::RoomRequestFlags::Kind;
     RoomRequest request;
-    request.rule_set = rules;
-    request.seats = seats;
-    if (create || options.demo || !vs_bot.empty()) {
+    request.rule_set = room_flags.rule_set;
+    request.seats = room_flags.seats;
+    if (room_flags.kind == Kind::Create || options.demo || !vs_bot.empty()) {
         request.kind = RoomRequest::Kind::Create;
         if (bot || !vs_bot.empty()) {
             carrom::proto::BotSeat bot_seat;
@@ -211,15 +184,15 @@ int main(int argc, char** argv) {
             return 2;
         }
         options.request = request;
-    } else if (!join_code.empty()) {
+    } else if (room_flags.kind == Kind::Join) {
         request.kind = RoomRequest::Kind::Join;
-        request.code = join_code;
+        request.code = room_flags.code;
         options.request = request;
-    } else if (!spectate_code.empty()) {
+    } else if (room_flags.kind == Kind::Spectate) {
         request.kind = RoomRequest::Kind::Spectate;
-        request.code = spectate_code;
+        request.code = room_flags.code;
         options.request = request;
-    } else if (quick) {
+    } else if (room_flags.kind == Kind::Quick) {
         request.kind = RoomRequest::Kind::Quick;
         options.request = request;
     }

@@ -2,13 +2,13 @@
 
 #include "blitter.hpp"
 #include "board_painter.hpp"
-#include "carrom/client/board_report.hpp"
 #include "carrom/client/match_model.hpp"
 #include "carrom/client/screen_mapping.hpp"
 #include "draw_util.hpp"
 #include "font.hpp"
 #include "hud_painter.hpp"
 #include "text.hpp"
+#include "unattended_modes.hpp"
 #include "window_output.hpp"
 
 #include <SFML/Graphics.hpp>
@@ -16,9 +16,13 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
-#include <fstream>
 #include <iostream>
+#include <memory>
 #include <optional>
+#include <sstream>
+#include <utility>
+#include <variant>
+#include <vector>
 
 namespace carrom::client::app {
 
@@ -55,10 +59,13 @@ private:
     void handle(const sf::Event& e);
     void sync_hud(double now);
     int seat_count() const { return static_cast<int>(replay_.created().seats.size()); }
+    ScreenMapping mapping() const { return make_mapping(layout_.board, physics_.board_size_px); }
     void draw(double now);
     std::string status() const;
-    int write_final_state();
-    bool save_screenshot();
+    std::string progress() const;
+    // Hands the frame just drawn (number `frame`) to the unattended mode; its exit code when it
+    // ends the run.
+    std::optional<int> unattended_frame(int frame);
 
     AppOptions options_;
     ReplayModel replay_;
@@ -70,6 +77,10 @@ private:
     sf::RenderWindow window_;
     ScreenLayout layout_;
     std::optional<Shown> shown_;
+    std::vector<RenderedBody> bodies_;           // the pieces drawn this frame
+    int shots_seen_ = 0;                         // shot results given to hud_model_
+    std::unique_ptr<UnattendedMode> unattended_; // null: none
+    std::vector<sf::Event> unattended_input_;    // the mode's events for the next frame
 };
 
 ReplayView::Shown ReplayView::shown_at(double t) const {
@@ -136,6 +147,9 @@ void ReplayView::sync_hud(double now) {
     // the scores; older messages would only bury the board).
     if (done(shown) > (shown_ ? done(*shown_) : 0)) {
         for (const proto::ServerMessage& m : replay_.outcome_messages(done(shown) - 1)) {
+            if (std::holds_alternative<proto::ShotResult>(m)) {
+                ++shots_seen_;
+            }
             hud_model_.handle(m, now);
         }
     }
@@ -155,18 +169,24 @@ std::string ReplayView::status() const {
     return text;
 }
 
+std::string ReplayView::progress() const {
+    std::ostringstream text;
+    text << "replay at " << replay_.time_s() << " of " << replay_.duration_s() << " s";
+    return text.str();
+}
+
 void ReplayView::draw(double now) {
-    const ScreenMapping m = make_mapping(layout_.board, physics_.board_size_px);
+    const ScreenMapping m = mapping();
     const Rect band{0.0, layout_.top_bar.h, layout_.top_bar.w,
                     layout_.seat_bar.y - layout_.top_bar.h};
     board_painter_.draw_board(window_, blitter_, m, band);
-    std::vector<RenderedBody> bodies;
+    bodies_.clear();
     for (const Body& b : replay_.bodies()) {
         if (!b.pocketed) {
-            bodies.push_back(RenderedBody{b.id, b.kind, b.pos_px, 1.0, 1.0, false});
+            bodies_.push_back(RenderedBody{b.id, b.kind, b.pos_px, 1.0, 1.0, false});
         }
     }
-    board_painter_.draw_pieces(window_, blitter_, m, bodies);
+    board_painter_.draw_pieces(window_, blitter_, m, bodies_);
     hud_model_.render(now); // only for the coins each seat has left (the pieces are the replay's)
     hud_.draw(window_, blitter_, layout_, hud_model_,
               ConnectionLine{status(), replay_.mismatches() == 0, std::nullopt}, now);
@@ -179,13 +199,29 @@ void ReplayView::draw(double now) {
                       Align::Centre);
 }
 
-int ReplayView::write_final_state() {
-    return write_final_state_file(options_.final_state_path,
-                                  final_state_json(hud_model_.view(), hud_model_.board_now()));
-}
-
-bool ReplayView::save_screenshot() {
-    return save_window_png(window_, options_.screenshot_path);
+std::optional<int> ReplayView::unattended_frame(int frame) {
+    if (!unattended_) {
+        return std::nullopt;
+    }
+    const ScreenMapping m = mapping();
+    UnattendedFrame f{frame,
+                      window_,
+                      hud_model_,
+                      nullptr,
+                      replay_.finished(),
+                      [this] { return progress(); },
+                      shots_seen_,
+                      m,
+                      physics_,
+                      bodies_,
+                      std::nullopt,
+                      hud_.overlay_area(),
+                      std::nullopt,
+                      board_painter_.repaints(),
+                      hud_.bar_repaints(),
+                      unattended_input_};
+    unattended_->on_frame(f);
+    return unattended_->done();
 }
 
 int ReplayView::run() {
@@ -200,6 +236,7 @@ int ReplayView::run() {
     const sf::Vector2u size = window_.getSize();
     window_.setView(sf::View(sf::FloatRect(0.0f, 0.0f, f(size.x), f(size.y))));
     layout_ = make_layout(size.x, size.y, seat_count());
+    unattended_ = make_replay_unattended_mode(options_);
     using Clock = std::chrono::steady_clock;
     const auto started = Clock::now();
     auto last = started;
@@ -209,6 +246,9 @@ int ReplayView::run() {
         while (window_.pollEvent(event)) {
             handle(event);
         }
+        for (const sf::Event& e : std::exchange(unattended_input_, {})) {
+            handle(e);
+        }
         const auto now_tp = Clock::now();
         replay_.advance(std::chrono::duration<double>(now_tp - last).count());
         last = now_tp;
@@ -216,27 +256,9 @@ int ReplayView::run() {
         sync_hud(now);
         draw(now);
         ++frame;
-        if (!options_.final_state_path.empty() && replay_.finished()) {
-            const int code = write_final_state();
+        if (const std::optional<int> code = unattended_frame(frame)) {
             window_.close();
-            return code;
-        }
-        if (!options_.screenshot_path.empty() && frame >= options_.frames) {
-            const bool saved = save_screenshot();
-            window_.close();
-            if (!saved) {
-                std::cerr << "carrom-client: could not save " << options_.screenshot_path << "\n";
-                return 1;
-            }
-            std::cout << "saved " << options_.screenshot_path << std::endl;
-            return 0;
-        }
-        if (options_.timeout_s > 0.0 &&
-            std::chrono::duration<double>(now_tp - started).count() > options_.timeout_s) {
-            std::cerr << "carrom-client: gave up after " << options_.timeout_s << " s (replay at "
-                      << replay_.time_s() << " of " << replay_.duration_s() << " s)\n";
-            window_.close();
-            return 3;
+            return *code;
         }
         window_.display();
     }

@@ -57,7 +57,7 @@ std::string final_state_json(const MatchView& view, const std::vector<BodyState>
     j["room"] = view.code;
     j["you"] = view.you;
     j["winner"] = view.result ? view.result->winner : view.winner;
-    j["reason"] = view.result ? view.result->reason : std::string();
+    j["reason"] = view.result ? game_end_name(*view.result) : std::string();
     nlohmann::json scores = nlohmann::json::array();
     if (view.result) {
         for (const int s : view.result->scores) {

@@ -11,12 +11,6 @@
 namespace carrom::client {
 namespace {
 
-constexpr std::size_t kTurnsKept = 8;
-
-bool has_seat(const MatchView& view, int seat) {
-    return seat >= 0 && static_cast<std::size_t>(seat) < view.seats.size();
-}
-
 std::vector<std::string> names_of(const std::vector<SeatView>& seats) {
     std::vector<std::string> out;
     for (const SeatView& s : seats) {
@@ -26,63 +20,6 @@ std::vector<std::string> names_of(const std::vector<SeatView>& seats) {
 }
 
 } // namespace
-
-std::string seat_name(const MatchView& view, int seat) {
-    if (seat >= 0 && static_cast<std::size_t>(seat) < view.seats.size() &&
-        !view.seats[static_cast<std::size_t>(seat)].name.empty()) {
-        return view.seats[static_cast<std::size_t>(seat)].name;
-    }
-    return "Seat " + std::to_string(seat + 1);
-}
-
-std::string player_name_at_end(const MatchView& view, int seat) {
-    if (view.result && seat >= 0 && static_cast<std::size_t>(seat) < view.result->names.size() &&
-        !view.result->names[static_cast<std::size_t>(seat)].empty()) {
-        return view.result->names[static_cast<std::size_t>(seat)];
-    }
-    return seat_name(view, seat);
-}
-
-int team_of(const MatchView& view, int seat) {
-    return has_seat(view, seat) ? rules::team_of_seat(seat, static_cast<int>(view.seats.size()))
-                                : -1;
-}
-
-std::vector<int> team_seats(const MatchView& view, int team) {
-    std::vector<int> out;
-    for (int seat = 0; seat < static_cast<int>(view.seats.size()); ++seat) {
-        if (team >= 0 && team_of(view, seat) == team) {
-            out.push_back(seat);
-        }
-    }
-    return out;
-}
-
-int partner_of(const MatchView& view, int seat) {
-    const int team = team_of(view, seat);
-    for (const int other : team_seats(view, team)) {
-        if (other != seat) {
-            return other;
-        }
-    }
-    return -1;
-}
-
-std::string team_name(const MatchView& view, int team) {
-    std::string out;
-    for (const int seat : team_seats(view, team)) {
-        out += (out.empty() ? "" : " & ") + player_name_at_end(view, seat);
-    }
-    return out.empty() ? "Team " + std::to_string(team + 1) : out;
-}
-
-rules::Side seat_side(const MatchView& view, int seat) {
-    if (has_seat(view, seat)) {
-        return view.seats[static_cast<std::size_t>(seat)].side;
-    }
-    // Before a room state: the rules' seats of a singles match.
-    return seat == 1 ? rules::Side::Top : rules::Side::Bottom;
-}
 
 MatchModel::MatchModel(const PhysicsConfig& physics, const PlayoutConfig& playout,
                        const InterpolationConfig& interpolation)
@@ -100,13 +37,11 @@ void MatchModel::reset() {
     playout_ = PlayoutClock(playout_config_);
     buffer_ = InterpolationBuffer(make_board_geometry(physics_), interpolation_config_);
     coins_ = {};
-    cues_.clear();
-    due_.clear();
-    turn_offsets_.clear();
-    pending_cues_.clear();
+    sounds_.clear();
+    timeline_.clear();
+    due_said_.reset();
     last_proto_seq_.reset();
     prediction_.drop();
-    predicted_cues_.clear();
 }
 
 void MatchModel::apply_motion(const proto::MotionInfo& motion) {
@@ -242,22 +177,13 @@ void MatchModel::on_snapshot(const proto::Snapshot& m, double local_s) {
     const bool at_rest = m.keyframe && m.t_s <= 0.0;
     double offset = at_rest ? continuous_now(local_s) : 0.0;
     if (!at_rest) {
-        auto it = turn_offsets_.find(m.turn);
-        if (it == turn_offsets_.end()) {
-            it = turn_offsets_.emplace(m.turn, continuous_now(local_s) - m.t_s).first;
-            while (turn_offsets_.size() > kTurnsKept) {
-                turn_offsets_.erase(turn_offsets_.begin());
-            }
-            std::erase_if(pending_cues_, [&](PendingCue& p) {
-                if (p.turn != m.turn) {
-                    return false;
-                }
-                p.cue.time_s = it->second + p.t_s;
-                cues_.push(p.cue);
-                return true;
-            });
+        if (const auto start = timeline_.start_of(m.turn)) {
+            offset = *start;
+        } else {
+            offset = continuous_now(local_s) - m.t_s;
+            timeline_.place(m.turn, offset);
+            sounds_.start(m.turn, offset);
         }
-        offset = it->second;
     }
     const std::vector<BodyState> before = board_now();
     auto previous_pos = [&](int id) {
@@ -322,11 +248,8 @@ bool MatchModel::predict(const proto::Shoot& shot, double local_s) {
     rest.keyframe = true;
     rest.bodies = std::move(board);
     buffer_.push(rest);
-    turn_offsets_[view_.turn] = start;
-    while (turn_offsets_.size() > kTurnsKept) {
-        turn_offsets_.erase(turn_offsets_.begin());
-    }
-    predicted_cues_ = prediction_.cues();
+    timeline_.place(view_.turn, start);
+    sounds_.set_predicted(prediction_.cues());
     view_.phase = proto::Phase::Moving;
     return true;
 }
@@ -338,12 +261,7 @@ void MatchModel::cue(int turn, double t_s, SoundKind kind, double volume) {
     if (prediction_.claim_cue(turn, kind, t_s)) {
         return; // predicted, and played already
     }
-    const auto offset = turn_offsets_.find(turn);
-    if (offset == turn_offsets_.end()) {
-        pending_cues_.push_back({turn, t_s, {0.0, kind, volume}});
-        return;
-    }
-    cues_.push({offset->second + t_s, kind, volume});
+    sounds_.add(turn, t_s, kind, volume, timeline_.start_of(turn));
 }
 
 void MatchModel::on_event(const proto::Event& m, double local_s) {
@@ -363,15 +281,7 @@ void MatchModel::on_event(const proto::Event& m, double local_s) {
                 view_.queen = e.queen;
                 log_.post(queen_sentence(e.queen, seat_name(e.queen.seat)), Tone::Info, local_s);
             },
-            [&](const proto::DueEvent& e) {
-                if (e.seat >= 0 && static_cast<std::size_t>(e.seat) < view_.seats.size()) {
-                    view_.seats[static_cast<std::size_t>(e.seat)].dues = e.owed;
-                }
-                if (e.owed > 0) {
-                    log_.post(seat_name(e.seat) + " owes " + count_words(e.owed, "due", "dues"),
-                              Tone::Foul, local_s);
-                }
-            },
+            [&](const proto::DueEvent& e) { on_due(e, local_s); },
             [&](const proto::TurnEvent& e) {
                 server_clock_.one_way(e.server_time_ms, local_s);
                 view_.turn = e.turn;
@@ -382,24 +292,15 @@ void MatchModel::on_event(const proto::Event& m, double local_s) {
                 log_.post(e.seat == view_.you ? "Your turn" : seat_name(e.seat) + " to play",
                           Tone::Info, local_s);
             },
-            [&](const proto::BoardEndEvent& e) {
-                for (std::size_t i = 0; i < e.scores.size() && i < view_.seats.size(); ++i) {
-                    view_.seats[i].score = e.scores[i];
-                }
-                view_.phase = proto::Phase::BoardOver;
-                log_.post(e.winner >= 0
-                              ? "Board " + std::to_string(e.board) + " to " + seat_name(e.winner) +
-                                    " (+" + std::to_string(e.points) + ")"
-                              : "Board " + std::to_string(e.board) + " ends, no winner",
-                          Tone::Good, local_s);
-            },
+            [&](const proto::BoardEndEvent& e) { on_board_end(e, local_s); },
             [&](const proto::GameEndEvent& e) {
                 for (std::size_t i = 0; i < e.scores.size() && i < view_.seats.size(); ++i) {
                     view_.seats[i].score = e.scores[i];
                 }
                 view_.winner = e.winner;
                 view_.phase = proto::Phase::GameOver;
-                view_.result = GameResult{e.winner, e.reason, e.scores, names_of(view_.seats)};
+                view_.result =
+                    GameResult{e.winner, e.reason, e.scores, names_of(view_.seats), e.rule};
             },
             [&](const proto::PlayerDroppedEvent& e) {
                 if (e.seat >= 0 && static_cast<std::size_t>(e.seat) < view_.seats.size()) {
@@ -425,7 +326,39 @@ void MatchModel::on_event(const proto::Event& m, double local_s) {
         m);
 }
 
+// Dues are the team's: partners owe them together. The server sends one `due` per seat of the
+// team; the HUD says it once per team.
+void MatchModel::on_due(const proto::DueEvent& e, double local_s) {
+    const int team = team_of(view_, e.seat);
+    for (const int seat : team_seats(view_, team)) {
+        view_.seats[static_cast<std::size_t>(seat)].dues = e.owed;
+    }
+    const bool said = due_said_ && due_said_->team == team && due_said_->owed == e.owed;
+    due_said_ = DueSaid{team, e.owed};
+    if (said || e.owed <= 0) {
+        return;
+    }
+    const bool doubles = view_.seats.size() == 4;
+    log_.post(team_subject(view_, team) + (doubles ? " owe " : " owes ") +
+                  count_words(e.owed, "due", "dues"),
+              Tone::Foul, local_s);
+}
+
+// The board's winner is a team (its first seat): in doubles both partners are named.
+void MatchModel::on_board_end(const proto::BoardEndEvent& e, double local_s) {
+    for (std::size_t i = 0; i < e.scores.size() && i < view_.seats.size(); ++i) {
+        view_.seats[i].score = e.scores[i];
+    }
+    view_.phase = proto::Phase::BoardOver;
+    const std::string board = "Board " + std::to_string(e.board);
+    log_.post(e.winner >= 0 ? board + " to " + team_subject(view_, e.winner) + " (+" +
+                                  std::to_string(e.points) + ")"
+                            : board + " ends, no winner",
+              Tone::Good, local_s);
+}
+
 void MatchModel::on_shot_result(const proto::ShotResult& m, double local_s) {
+    due_said_.reset(); // the stroke's rule events (`due` among them) follow its shot_result
     for (std::size_t i = 0; i < view_.seats.size(); ++i) {
         if (i < m.scores.size()) {
             view_.seats[i].score = m.scores[i];
@@ -454,9 +387,9 @@ void MatchModel::drop_unconfirmed_prediction() {
         return;
     }
     // Back to the board at rest.
-    turn_offsets_.erase(prediction_.turn());
+    timeline_.forget(prediction_.turn());
     prediction_.drop();
-    predicted_cues_.clear();
+    sounds_.drop_predicted();
     if (view_.phase == proto::Phase::Moving) {
         view_.phase = proto::Phase::Aiming;
     }
@@ -473,13 +406,7 @@ std::vector<RenderedBody> MatchModel::render(double local_s) {
     std::vector<RenderedBody> bodies =
         prediction_.active() ? render_predicted(t, local_s) : buffer_.sample(t);
     coins_ = count_coins(bodies);
-    for (const SoundCue& c : cues_.take_due(t)) {
-        due_.push_back(c);
-    }
-    while (!predicted_cues_.empty() && predicted_cues_.front().time_s <= t) {
-        due_.push_back(predicted_cues_.front());
-        predicted_cues_.erase(predicted_cues_.begin());
-    }
+    sounds_.render_to(t);
     // While aiming, the striker is drawn where the shooter places it, not where it last stopped.
     if (view_.phase == proto::Phase::Aiming && !animating()) {
         std::erase_if(bodies, [](const RenderedBody& b) { return b.kind == BodyKind::Striker; });
@@ -514,22 +441,8 @@ std::vector<RenderedBody> MatchModel::render_predicted(double t_s, double local_
     return prediction_.draw(t_s, local_s, &server);
 }
 
-MatchModel::ShotTime MatchModel::shot_time(double continuous_s) const {
-    ShotTime best;
-    double best_offset = 0.0;
-    for (const auto& [turn, offset] : turn_offsets_) {
-        if (offset <= continuous_s && (best.turn < 0 || offset >= best_offset)) {
-            best = {turn, continuous_s - offset};
-            best_offset = offset;
-        }
-    }
-    return best;
-}
-
 std::vector<SoundCue> MatchModel::take_sounds() {
-    std::vector<SoundCue> out;
-    out.swap(due_);
-    return out;
+    return sounds_.take();
 }
 
 bool MatchModel::animating() const {

@@ -284,7 +284,11 @@ json encode_event(const BoardEndEvent& e) {
         {"board", e.board}, {"winner", e.winner}, {"points", e.points}, {"scores", e.scores}};
 }
 json encode_event(const GameEndEvent& e) {
-    return json{{"winner", e.winner}, {"reason", e.reason}, {"scores", e.scores}};
+    json out{{"winner", e.winner}, {"reason", e.reason}, {"scores", e.scores}};
+    if (!e.rule.empty()) {
+        out["rule"] = e.rule;
+    }
+    return out;
 }
 json encode_event(const PlayerDroppedEvent& e) {
     return json{{"seat", e.seat},
@@ -356,6 +360,9 @@ void decode_event(FieldReader& r, GameEndEvent& e) {
     e.winner = r.small_int("winner", -1, kMaxSeatIndex);
     e.reason = r.text("reason", 1, 32);
     e.scores = r.int_array("scores", -kMaxMessageScore, kMaxMessageScore, kMaxSeats);
+    if (r.has("rule")) {
+        e.rule = r.text("rule", 1, 32);
+    }
 }
 void decode_event(FieldReader& r, PlayerDroppedEvent& e) {
     e.seat = read_seat(r, "seat");

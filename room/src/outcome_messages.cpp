@@ -190,9 +190,10 @@ std::vector<proto::Event> rule_events(const rules::ShotOutcome& outcome,
                                               outcome.board_end->points, scores});
     }
     if (outcome.game_end) {
-        events.push_back(proto::GameEndEvent{outcome.game_end->winner_team.value_or(-1),
-                                             std::string(game_end_reason(outcome.game_end->reason)),
-                                             scores});
+        events.push_back(
+            proto::GameEndEvent{outcome.game_end->winner_team.value_or(-1),
+                                std::string(game_end_reason(outcome.game_end->reason)), scores,
+                                std::string(rules::to_string(outcome.game_end->reason))});
     }
     return events;
 }

@@ -1,13 +1,23 @@
 # Writes a C++ source that embeds every file under SOURCE_DIR (hidden entries skipped) as
 # carrom::server::embedded_web_files(), for StaticSite::from_files. Run as
-#   cmake -DSOURCE_DIR=<dir> -DOUTPUT=<file.cpp> -P embed_files.cmake
-# Paths are relative to SOURCE_DIR with '/' separators, sorted, so the output is reproducible.
+#   cmake -DSOURCE_DIR=<dir> [-DOVERLAY_DIR=<dir>] -DOUTPUT=<file.cpp> -P embed_files.cmake
+# Paths are relative to SOURCE_DIR with '/' separators, sorted, so the output is reproducible. A
+# file under OVERLAY_DIR (generated at build time) is embedded instead of the one at the same
+# path under SOURCE_DIR, or besides them when there is none.
+cmake_policy(SET CMP0057 NEW) # if(IN_LIST) in script mode
 if(NOT SOURCE_DIR OR NOT OUTPUT)
     message(FATAL_ERROR "embed_files.cmake: SOURCE_DIR and OUTPUT are required")
 endif()
 
 file(GLOB_RECURSE files LIST_DIRECTORIES false RELATIVE "${SOURCE_DIR}" "${SOURCE_DIR}/*")
 list(FILTER files EXCLUDE REGEX "(^|/)\\.")
+set(overlay_files "")
+if(OVERLAY_DIR)
+    file(GLOB_RECURSE overlay_files LIST_DIRECTORIES false RELATIVE "${OVERLAY_DIR}" "${OVERLAY_DIR}/*")
+    list(FILTER overlay_files EXCLUDE REGEX "(^|/)\\.")
+    list(APPEND files ${overlay_files})
+    list(REMOVE_DUPLICATES files)
+endif()
 list(SORT files)
 if(NOT files)
     message(FATAL_ERROR "embed_files.cmake: no files under ${SOURCE_DIR}")
@@ -20,7 +30,11 @@ set(table "")
 string(REPEAT "\\\\x[0-9a-f][0-9a-f]" 32 line_pattern)
 set(index 0)
 foreach(file IN LISTS files)
-    file(READ "${SOURCE_DIR}/${file}" hex HEX)
+    set(from "${SOURCE_DIR}")
+    if(file IN_LIST overlay_files)
+        set(from "${OVERLAY_DIR}")
+    endif()
+    file(READ "${from}/${file}" hex HEX)
     string(LENGTH "${hex}" hex_length)
     math(EXPR size "${hex_length} / 2")
     # Every byte as a \xNN escape inside string literals (constexpr, NUL bytes allowed),

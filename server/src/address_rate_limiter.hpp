@@ -1,9 +1,11 @@
 #pragma once
-// Private to server/src: a token bucket per client address for plain HTTP requests (the match
+// Private to server/src: a TokenBucket per client address for plain HTTP requests (the match
 // API and /metrics): rate_per_s requests per second sustained, bursts up to burst. The table
 // holds at most max_addresses buckets: a new address in a full table first evicts every bucket
 // that has refilled (an idle address: forgetting it changes nothing), else the least recently
 // used one. Thread-safe (one mutex); times are the caller's monotonic milliseconds. Boost-free.
+
+#include "carrom/server/token_bucket.hpp"
 
 #include <cstddef>
 #include <cstdint>
@@ -24,18 +26,13 @@ public:
     std::size_t size() const;
 
 private:
-    struct Bucket {
-        double tokens = 0.0;
-        std::int64_t last_ms = 0;
-    };
-    void refill(Bucket& bucket, std::int64_t now_ms) const;
     void make_room(std::int64_t now_ms);
 
-    double rate_per_ms_;
+    double rate_per_s_;
     double burst_;
     std::size_t max_addresses_;
     mutable std::mutex mutex_;
-    std::unordered_map<std::string, Bucket> buckets_;
+    std::unordered_map<std::string, TokenBucket> buckets_;
 };
 
 } // namespace carrom::server

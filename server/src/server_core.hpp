@@ -83,7 +83,7 @@ struct ServerCore {
     void remove_room(const std::string& code);
 
     // At start, before the I/O threads run: every unfinished match in the store whose journal
-    // replays with this build is restored in a room under its old code (docs/server.md,
+    // replays with this build is restored in a room under its old code (docs/store.md,
     // "Recovery after a restart"); the others are logged and left in the store. Returns how many.
     int restore_matches();
     // A resume token the registry does not know: the player of a restored seat whose token hash

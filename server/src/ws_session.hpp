@@ -9,6 +9,7 @@
 #include "server_stream.hpp"
 
 #include "carrom/proto/client_messages.hpp"
+#include "carrom/proto/error.hpp"
 #include "carrom/room/peer.hpp"
 #include "carrom/server/rate_limiter.hpp"
 #include "carrom/server/write_queue.hpp"
@@ -78,6 +79,9 @@ private:
                         proto::BotLevel level, const std::vector<int>& bot_seats,
                         const std::vector<std::shared_ptr<WsSession>>& others = {});
     void enter_room(const std::shared_ptr<RoomActor>& room, proto::Role role);
+    // The room refused this session's join or resume (called on the room's strand): the client
+    // gets the error, and the session forgets the room unless it has entered another meanwhile.
+    void on_room_refused(const std::shared_ptr<RoomActor>& room, const proto::Error& error);
     void send_now(room::Outgoing message);
     void send_error(std::string_view code, std::string message);
     void fail(std::string_view code, std::string message, int close_code);

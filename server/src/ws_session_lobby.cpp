@@ -63,13 +63,7 @@ void WsSession::handle_hello(const proto::Hello& hello) {
     room_ = room;
     room->post([self = shared_from_this(), room](room::Room& r) {
         if (auto error = r.resume(self)) {
-            self->send({std::make_shared<const std::string>(proto::encode(*error)),
-                        room::MessageKind::Normal});
-            asio::post(self->ws_.get_executor(), [self, room] {
-                if (self->room_ == room) {
-                    self->room_.reset();
-                }
-            });
+            self->on_room_refused(room, *error);
         }
     });
 }
@@ -149,13 +143,16 @@ void WsSession::enter_room(const std::shared_ptr<RoomActor>& room, proto::Role r
     }
     room->post([self = shared_from_this(), room, role](room::Room& r) {
         if (auto error = r.join(self, role)) {
-            self->send({std::make_shared<const std::string>(proto::encode(*error)),
-                        room::MessageKind::Normal});
-            asio::post(self->ws_.get_executor(), [self, room] {
-                if (self->room_ == room) {
-                    self->room_.reset();
-                }
-            });
+            self->on_room_refused(room, *error);
+        }
+    });
+}
+
+void WsSession::on_room_refused(const std::shared_ptr<RoomActor>& room, const proto::Error& error) {
+    send({std::make_shared<const std::string>(proto::encode(error)), room::MessageKind::Normal});
+    asio::post(ws_.get_executor(), [self = shared_from_this(), room] {
+        if (self->room_ == room) {
+            self->room_.reset();
         }
     });
 }

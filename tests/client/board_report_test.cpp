@@ -86,5 +86,24 @@ TEST(BoardReport, PredictionFigures) {
               (nlohmann::json{{"strokes", 7}, {"corrections", 2}, {"max_difference_px", 5.5}}));
 }
 
+TEST(BoardReport, FinalStateNamesTheEndByItsRuleCode) {
+    MatchView v = two_seats();
+    v.phase = proto::Phase::GameOver;
+    v.result = GameResult{0, "score", {25, 11}, {"Ana", "Ben"}, "target_points"};
+    const auto j = nlohmann::json::parse(final_state_json(v, {}));
+    EXPECT_EQ(j.at("reason"), "target_points");
+    EXPECT_EQ(j.at("winner"), 0);
+    EXPECT_EQ(j.at("scores"), nlohmann::json::array({25, 11}));
+}
+
+TEST(BoardReport, FinalStateNamesTheEndByGameEndsReasonWithoutARuleCode) {
+    MatchView v = two_seats();
+    v.phase = proto::Phase::GameOver;
+    v.result = GameResult{1, "left", {3, 5}, {"Ana", "Ben"}};
+    EXPECT_EQ(nlohmann::json::parse(final_state_json(v, {})).at("reason"), "left");
+    v.result->rule = "forfeit";
+    EXPECT_EQ(nlohmann::json::parse(final_state_json(v, {})).at("reason"), "forfeit");
+}
+
 } // namespace
 } // namespace carrom::client

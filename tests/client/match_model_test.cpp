@@ -1,4 +1,5 @@
 #include "carrom/client/match_model.hpp"
+#include "client/match_model_support.hpp"
 
 #include <gtest/gtest.h>
 
@@ -8,24 +9,7 @@ namespace carrom::client {
 namespace {
 
 proto::RoomState room(int you = 0) {
-    proto::RoomState r;
-    r.code = "ABC234";
-    r.you = you;
-    r.rule_set = proto::RuleSet::Icf;
-    r.seats.resize(2);
-    r.seats[0] = {true, "Ana", true, false, proto::Colour::White, proto::Baseline::Bottom};
-    r.seats[1] = {true, "Ben", true, false, proto::Colour::Black, proto::Baseline::Top};
-    r.scores = {3, 1};
-    r.dues = {0, 1};
-    r.turn = 4;
-    r.to_play = 0;
-    r.phase = proto::Phase::Aiming;
-    r.server_time_ms = 5'000'000;
-    r.shot_clock_deadline_ms = 5'015'000;
-    r.bodies = {{0, BodyKind::Queen, {300, 300}, {}, false},
-                {1, BodyKind::Black, {300, 265}, {}, false},
-                {2, BodyKind::White, {0, 0}, {}, true}};
-    return r;
+    return test::singles_room(you);
 }
 
 TEST(MatchModel, RoomStateFillsTheView) {
@@ -60,20 +44,7 @@ TEST(MatchModel, TopSeatSeesTheBoardTurned) {
     EXPECT_EQ(spectator.view_side(), rules::Side::Bottom);
 }
 
-// Doubles: Asha (0, bottom) and Cy (2, top) against Ravi (1, right) and Dee (3, left); a seat's
-// score and dues are its team's.
-proto::RoomState doubles_room(int you) {
-    proto::RoomState r = room(you);
-    r.seats.resize(4);
-    r.seats[0] = {true, "Asha", true, false, proto::Colour::White, proto::Baseline::Bottom};
-    r.seats[1] = {true, "Ravi", true, true, proto::Colour::Black, proto::Baseline::Right};
-    r.seats[2] = {true, "Cy", true, false, proto::Colour::White, proto::Baseline::Top};
-    r.seats[3] = {true, "Dee", false, false, proto::Colour::Black, proto::Baseline::Left};
-    r.scores = {7, 3, 7, 3};
-    r.dues = {0, 1, 0, 1};
-    r.to_play = 1;
-    return r;
-}
+using test::doubles_room;
 
 TEST(MatchModel, FourSeatRoomStateGivesSidesTeamsAndTurnedViews) {
     const rules::Side expected[] = {rules::Side::Bottom, rules::Side::Right, rules::Side::Top,
@@ -116,9 +87,13 @@ TEST(MatchModel, DoublesGameEndNamesTheWinningTeam) {
     end.winner = 0; // team 0: seats 0 and 2
     end.reason = "score";
     end.scores = {25, 11, 25, 11};
+    end.rule = "target_points";
     m.handle(proto::Event{end}, 2.0);
     ASSERT_TRUE(m.view().result.has_value());
     EXPECT_EQ(m.view().result->winner, 0);
+    EXPECT_EQ(m.view().result->reason, "score");
+    EXPECT_EQ(m.view().result->rule, "target_points");
+    EXPECT_EQ(game_end_name(*m.view().result), "target_points");
     EXPECT_EQ(m.view().seats[2].score, 25);
     EXPECT_EQ(team_of(m.view(), m.view().you), m.view().result->winner);
 }
@@ -361,6 +336,8 @@ TEST(MatchModel, GameEndKeepsWhoWonWhyAndTheScores) {
     ASSERT_TRUE(m.view().result.has_value());
     EXPECT_EQ(m.view().result->winner, 1);
     EXPECT_EQ(m.view().result->reason, "clock");
+    EXPECT_EQ(m.view().result->rule, ""); // a server that sends no rule
+    EXPECT_EQ(game_end_name(*m.view().result), "clock");
     EXPECT_EQ(m.view().result->scores, (std::vector<int>{0, 0}));
     EXPECT_EQ(m.view().result->names, (std::vector<std::string>{"Ana", "Ben"}));
     // The room state that follows keeps the reason.

@@ -157,6 +157,54 @@ TEST(ReplayCli, OpenedAtTheEndItWritesTheSameFinalState) {
     expect_final_state(final_state, short_journal());
 }
 
+// The replay window holds the match window's unattended modes: --timeout ends it with code 3
+// saying where the replay was.
+TEST(ReplayCli, ATimeoutEndsItWithCodeThreeSayingWhereTheReplayWas) {
+    TempDir dir("timeout");
+    write_file(dir.path / "match.json", proto::journal_to_json(short_journal()).dump());
+    const ClientRun run =
+        run_client({"--replay", (dir.path / "match.json").string(), "--replay-at", "1", "--timeout",
+                    "0.5", "--width", "300", "--height", "300"});
+    EXPECT_EQ(run.exit_code, 3) << run.err;
+    // A line of its own (SFML may write before it).
+    EXPECT_NE(("\n" + run.err).find("\ncarrom-client: gave up after 0.5 s (replay at 1 of "),
+              std::string::npos)
+        << run.err;
+}
+
+// --screenshot with --report: the PNG and, as for a match, what it shows (the replay's pieces).
+TEST(ReplayCli, AScreenshotWithAReportShowsTheReplayedPieces) {
+    TempDir dir("shot");
+    write_file(dir.path / "match.json", proto::journal_to_json(short_journal()).dump());
+    const fs::path png = dir.path / "replay.png";
+    const fs::path report = dir.path / "report.json";
+    const ClientRun run =
+        run_client({"--replay", (dir.path / "match.json").string(), "--replay-at", "100000",
+                    "--screenshot", png.string(), "--frames", "3", "--report", report.string(),
+                    "--timeout", "60", "--width", "400", "--height", "400"});
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    EXPECT_NE(run.out.find("saved " + png.string()), std::string::npos) << run.out;
+    EXPECT_GT(fs::file_size(png), 0u);
+    const proto::ReplayResult replayed = proto::replay(short_journal());
+    ASSERT_TRUE(replayed.ok());
+    std::vector<int> on_board;
+    for (const Body& b : replayed.state.bodies) {
+        if (!b.pocketed && b.id != kStrikerId) {
+            on_board.push_back(b.id);
+        }
+    }
+    const auto j = nlohmann::json::parse(read_all(report), nullptr, false);
+    ASSERT_TRUE(j.is_object()) << read_all(report);
+    EXPECT_EQ(j["room"], short_journal().created.room_code);
+    std::vector<int> drawn;
+    for (const auto& b : j["bodies"]) {
+        if (b["id"] != kStrikerId) {
+            drawn.push_back(b["id"]);
+        }
+    }
+    EXPECT_EQ(drawn, on_board);
+}
+
 TEST(ReplayCli, AJournalFromAServersHttpPortPlaysTheSame) {
     TempDir dir("url");
     write_file(dir.path / "index.html", "<!doctype html><title>carrom</title>");

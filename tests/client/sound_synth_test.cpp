@@ -49,30 +49,5 @@ TEST(Loudness, LogScaleBetweenQuietAndLoud) {
     EXPECT_DOUBLE_EQ(loudness_from_impulse(-3.0), 0.0);
 }
 
-TEST(SoundCueQueue, ReleasesCuesInTimeOrderWhenDue) {
-    SoundCueQueue q;
-    q.push({0.30, SoundKind::Pocket, 1.0});
-    q.push({0.10, SoundKind::Click, 0.5});
-    q.push({0.20, SoundKind::Cushion, 0.7});
-    q.push({std::nan(""), SoundKind::Click, 1.0}); // ignored
-    EXPECT_EQ(q.size(), 3u);
-    EXPECT_TRUE(q.take_due(0.05).empty());
-    const auto due = q.take_due(0.25);
-    ASSERT_EQ(due.size(), 2u);
-    EXPECT_EQ(due[0].kind, SoundKind::Click);
-    EXPECT_EQ(due[1].kind, SoundKind::Cushion);
-    EXPECT_EQ(q.size(), 1u);
-}
-
-TEST(SoundCueQueue, StaleCuesAreDroppedNotPlayed) {
-    SoundCueQueue q;
-    q.push({1.0, SoundKind::Click, 1.0});
-    q.push({4.9, SoundKind::Click, 1.0});
-    const auto due = q.take_due(5.0, 0.25);
-    ASSERT_EQ(due.size(), 1u);
-    EXPECT_DOUBLE_EQ(due[0].time_s, 4.9);
-    EXPECT_EQ(q.size(), 0u);
-}
-
 } // namespace
 } // namespace carrom::client

@@ -67,6 +67,10 @@ TEST(BotCli, TwoBotProcessesPlayAMatch) {
     EXPECT_EQ(a["strategy"], "sampling");
     EXPECT_EQ(b["strategy"], "random");
     EXPECT_NE(a["result"], b["result"]);
+    // A game to 30 points of freestyle's 320 ends when a side reaches them; the summary names
+    // that end as the journal and the Match API do.
+    EXPECT_EQ(a["reason"], "target_points");
+    EXPECT_EQ(b["reason"], "target_points");
 }
 
 TEST(BotCli, TraceHasEveryShotSentAndTheSnapshotsThatFollowIt) {
@@ -138,6 +142,14 @@ TEST(BotCli, UnwritableTraceIsRefusedWithExitTwo) {
     EXPECT_EQ(ran.exit, 2);
     EXPECT_NE(ran.out.find("--trace: cannot write /nonexistent/dir/t"), std::string::npos)
         << ran.out;
+}
+
+TEST(BotCli, ARoomCodeOutsideTheAlphabetIsRefusedWithExitTwo) {
+    const CommandRun ran =
+        run_command(std::string(CARROM_BOT_PATH) + " --url ws://127.0.0.1:1 --join abc123 2>&1");
+    EXPECT_EQ(ran.exit, 2);
+    EXPECT_EQ(ran.out, "carrom-bot: a room code is 6 characters from "
+                       "ABCDEFGHJKMNPQRSTUVWXYZ23456789 (got \"abc123\")\n");
 }
 
 TEST(BotCli, UnreachableServerSaysSoAndExitsWithOne) {

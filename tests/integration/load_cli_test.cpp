@@ -33,7 +33,8 @@ TEST(LoadCli, DrivesMatchesAndReportsTheirFigures) {
     EXPECT_EQ(out["held_at_end"], 4);
     EXPECT_EQ(out["client_failures"], 0);
     EXPECT_EQ(out["errors_received"], 0);
-    EXPECT_EQ(out["server_exit"], 0); // stopped by SIGTERM, exits cleanly
+    EXPECT_EQ(out["messages_malformed"], 0); // every message of the real server read
+    EXPECT_EQ(out["server_exit"], 0);        // stopped by SIGTERM, exits cleanly
     EXPECT_GT(out["lag_samples"].get<long>(), 0);
     EXPECT_GT(out["bytes_per_client_per_s_moving"].get<double>(), 0.0);
     EXPECT_GT(out["server_kib_per_match"].get<double>(), 0.0);

@@ -56,7 +56,9 @@ TEST_P(FullMatch, TwoBotsPlayToTheEnd) {
     spec.seed = 11 + static_cast<std::uint64_t>(GetParam());
     spec.timeout = 60s;
     const MatchRun run = play_match(server.url(), spec);
-    expect_complete(run, {"score", "boards", "cleared"});
+    // The rules engine's codes of a game's end (game_end's rule), as the journal names them.
+    expect_complete(run, {"target_points", "boards_played", "board_cleared", "colour_cleared",
+                          "coins_exhausted", "opponent_last_coin"});
     const auto& metrics = server.server().metrics();
     EXPECT_EQ(metrics.matches_finished_total.load(), 1);
     EXPECT_EQ(metrics.shots_total.load(), run.creator.shots + run.joiner.shots);
@@ -98,7 +100,7 @@ TEST(Matches, FiftyMatchesAtOnceFinishCorrectly) {
     const auto runs = play_matches(server.url(), specs);
     std::set<std::string> codes;
     for (const auto& run : runs) {
-        expect_complete(run, {"score", "cleared"});
+        expect_complete(run, {"target_points", "coins_exhausted"});
         codes.insert(run.code);
     }
     EXPECT_EQ(codes.size(), runs.size()); // fifty different rooms

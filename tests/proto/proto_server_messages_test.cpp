@@ -216,18 +216,32 @@ TEST(ProtoServer, EveryEventKindRoundTrips) {
         TurnEvent{4, 1, std::nullopt, 1700000000000},
         BoardEndEvent{2, 0, 7, {25, 3}},
         GameEndEvent{0, "score", {25, 3}},
+        GameEndEvent{0, "score", {25, 3}, "target_points"},
         PlayerDroppedEvent{1, 1700000060000, 1700000000000},
         PlayerReturnedEvent{1},
         AimEvent{0, 4, 250.75},
     };
-    const char* kinds[] = {
-        "collision", "cushion",   "pocket",   "foul",           "queen",           "due", "turn",
-        "turn",      "board_end", "game_end", "player_dropped", "player_returned", "aim"};
+    const char* kinds[] = {"collision",       "cushion",  "pocket",   "foul",
+                           "queen",           "due",      "turn",     "turn",
+                           "board_end",       "game_end", "game_end", "player_dropped",
+                           "player_returned", "aim"};
     for (std::size_t i = 0; i < std::size(events); ++i) {
         EXPECT_EQ(event_kind(events[i]), kinds[i]);
         EXPECT_EQ(to_json(ServerMessage{events[i]})["kind"], kinds[i]);
         EXPECT_EQ(round_trip(events[i]), ServerMessage{events[i]}) << kinds[i];
     }
+}
+
+TEST(ProtoServer, GameEndNamesItsRuleOnlyWhenItHasOne) {
+    EXPECT_EQ(encode(ServerMessage{Event{GameEndEvent{1, "cleared", {0, 20}, "coins_exhausted"}}}),
+              R"({"kind":"game_end","reason":"cleared","rule":"coins_exhausted","scores":[0,20],)"
+              R"("type":"event","winner":1})");
+    EXPECT_EQ(
+        encode(ServerMessage{Event{GameEndEvent{1, "cleared", {0, 20}}}}),
+        R"({"kind":"game_end","reason":"cleared","scores":[0,20],"type":"event","winner":1})");
+    EXPECT_EQ(error_of(json::parse(R"({"type":"event","kind":"game_end","winner":0,
+                                       "reason":"score","scores":[25,3],"rule":""})")),
+              "bad_field");
 }
 
 TEST(ProtoServer, EventValidation) {

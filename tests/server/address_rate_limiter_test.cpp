@@ -4,7 +4,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace carrom::server {
 namespace {
@@ -50,6 +53,21 @@ TEST(AddressRateLimiter, TheTableStaysBoundedIdleAddressesGoFirst) {
         EXPECT_EQ(limiter.take("flood" + std::to_string(i), 1500), 0);
         EXPECT_LE(limiter.size(), 3U);
     }
+}
+
+TEST(AddressRateLimiter, AFullTableOfActiveAddressesForgetsTheLeastRecentlySeen) {
+    AddressRateLimiter limiter(1.0, 2.0, 3); // 1 per second, bursts of 2
+    const std::vector<std::pair<std::string, std::int64_t>> seen = {
+        {"a", 0}, {"b", 100}, {"c", 200}};
+    for (const auto& [address, ms] : seen) {
+        EXPECT_EQ(limiter.take(address, ms), 0);
+        EXPECT_EQ(limiter.take(address, ms), 0); // empty: not idle
+    }
+    EXPECT_EQ(limiter.take("d", 300), 0); // no bucket has refilled: "a" (seen at 0) goes
+    EXPECT_EQ(limiter.size(), 3U);
+    EXPECT_EQ(limiter.take("c", 300), 1); // still limited: kept
+    EXPECT_EQ(limiter.take("b", 300), 1); // still limited: kept
+    EXPECT_EQ(limiter.take("a", 300), 0); // forgotten: a new, full bucket (0.3 tokens if kept)
 }
 
 } // namespace

@@ -4,8 +4,8 @@
 // the room code and plays its own with `--autoplay easy` (the server bots' strategy, through
 // the client's mouse input path). Both sides end the game; carrom-client writes the final state
 // it saw (`--final-state`) and exits. Checks: the same pieces (each piece's pocketed flag and,
-// on the board, its position as the server sent it), scores, winner and reason on both sides;
-// shots from both; no console errors.
+// on the board, its position as the server sent it), scores, winner and reason (the rule code)
+// on both sides; shots from both; no console errors.
 
 import fs from 'node:fs';
 import os from 'node:os';
@@ -54,6 +54,10 @@ run('web.client_match', 80000, async (t) => {
   check(JSON.stringify(desk.scores) === JSON.stringify(pageScores), `scores: page ${pageScores}, carrom-client ${desk.scores}`);
   check(desk.winner === end.winner && desk.winner >= 0, `winner: page ${end.winner}, carrom-client ${desk.winner}`);
   check(desk.reason === end.gameEnd.reason, `reason: page ${end.gameEnd.reason}, carrom-client ${desk.reason}`);
+  // Both name the end by game_end's rule code (docs/protocol.md), as the journal does.
+  const ruleCodes = ['target_points', 'boards_played', 'board_cleared', 'colour_cleared', 'coins_exhausted',
+    'opponent_last_coin', 'forfeit', 'missed_turns'];
+  check(ruleCodes.includes(desk.reason), `reason ${desk.reason} is a rule code`);
   const pieces = (list) => list.map((b) => ({ id: b.id, kind: b.kind, pocketed: b.pocketed, x: b.pocketed ? null : b.x, y: b.pocketed ? null : b.y }))
     .sort((a, b) => a.id - b.id);
   const a = pieces(end.board);

@@ -272,12 +272,33 @@ test('a due is the team\'s: both partners owe it', () => {
   assert.equal(m.log.lines[m.log.lines.length - 1].text, 'Ravi & Dev owe 2 dues');
 });
 
+test('the server\'s due per seat of a team makes one line per stroke', () => {
+  const m = viewOf(doublesState({ you: 0, dues: [0, 0, 0, 0] }));
+  const lines = () => m.log.lines.filter((l) => l.tone === 'foul').map((l) => l.text);
+  m.handle({ type: 'event', kind: 'due', seat: 1, owed: 1 }, 11);
+  m.handle({ type: 'event', kind: 'due', seat: 3, owed: 1 }, 11);
+  assert.deepEqual(lines(), ['Ravi & Dev owe 1 due']);
+  m.handle({ type: 'event', kind: 'due', seat: 1, owed: 2 }, 11); // another count: a line
+  m.handle({
+    type: 'shot_result', turn: 7, seat: 1, x: 300, angle: 0, power: 5, pocketed: [], returned: [],
+    fouls: [], points: [0, 0, 0, 0], scores: [0, 0, 0, 0], dues: [0, 2, 0, 2],
+    queen: { state: 'on_board', seat: -1 }, extra_turn: false, next_turn: 8, next_seat: 2,
+    board_over: false, game_over: false, winner: -1,
+  }, 12);
+  m.handle({ type: 'event', kind: 'due', seat: 3, owed: 2 }, 12); // another stroke: a line
+  m.handle({ type: 'event', kind: 'due', seat: 0, owed: 2 }, 12); // the other team: a line
+  assert.deepEqual(lines(), ['Ravi & Dev owe 1 due', 'Ravi & Dev owe 2 dues', 'Ravi & Dev owe 2 dues',
+    'Asha & Chitra owe 2 dues']);
+  assert.deepEqual(m.view.seats.map((s) => s.dues), [2, 2, 2, 2]);
+});
+
 test('the game over names the winning team; a board end too', () => {
   const m = viewOf(doublesState({ you: 0 }));
   m.handle({ type: 'event', kind: 'board_end', board: 1, winner: 1, points: 3, scores: [0, 3, 0, 3] }, 11);
   assert.ok(m.log.lines.some((l) => l.text === 'Board 1 to Ravi & Dev (+3)'), m.log.lines.map((l) => l.text).join('|'));
   m.handle({ type: 'event', kind: 'game_end', winner: 1, reason: 'score', scores: [0, 25, 0, 25] }, 12);
   assert.equal(m.view.gameEnd.sentence, 'Ravi & Dev win the game (target score reached)');
+  assert.ok(!m.log.lines.some((l) => l.text === m.view.gameEnd.sentence), 'the result panel says it, no HUD line');
   assert.deepEqual(m.view.seats.map((s) => s.score), [0, 25, 0, 25]);
   const partner = viewOf(doublesState({ you: 3 }));
   partner.handle({ type: 'event', kind: 'game_end', winner: 1, reason: 'left', scores: [0, 9, 0, 9] }, 12);

@@ -2,17 +2,20 @@
 // unit tests where the logic is shared (tests/client/playout_clock_test.cpp,
 // interpolation_buffer_test.cpp, aim_controller_test.cpp), plus the decoder and the room links.
 import assert from 'node:assert/strict';
+import fs from 'node:fs';
 import test from 'node:test';
 
 import { AimController, checkPlacement, clampBaselineX, powerFromDrag } from '../../web/js/aim_controller.js';
 import { makeBoardGeometry, nearestPocket, PHYSICS } from '../../web/js/board_geometry.js';
 import { hermite } from '../../web/js/hermite.js';
 import { InterpolationBuffer, INTERPOLATION_DEFAULTS, travelFactor } from '../../web/js/interpolation_buffer.js';
+import { applyLimits, OPTION_RANGES } from '../../web/js/lobby.js';
 import { MatchModel } from '../../web/js/match_model.js';
 import { gameEndSentence, pocketList } from '../../web/js/plain_words.js';
 import { PlayoutClock, PLAYOUT_DEFAULTS } from '../../web/js/playout_clock.js';
 import * as proto from '../../web/js/protocol.js';
 import { parseRoomHash, roomHash } from '../../web/js/room_link.js';
+import { PROTOCOL } from '../../web/js/physics_config.js';
 import { ScreenMapping } from '../../web/js/screen_mapping.js';
 import { ServerClock } from '../../web/js/server_clock.js';
 import { Session, SESSION_DEFAULTS } from '../../web/js/session.js';
@@ -359,6 +362,25 @@ test('the decoder refuses bad frames with a reason', () => {
     "event: field 'kind' must be a known event kind");
 });
 
+test('the lobby gives its inputs the protocol limits, which index.html does not spell', () => {
+  const inputs = { name: {}, code: {}, targetPoints: {}, boards: {}, shotClock: {} };
+  applyLimits(inputs);
+  assert.deepEqual(inputs, {
+    name: { maxLength: PROTOCOL.maxNameBytes },
+    code: { maxLength: PROTOCOL.roomCodeLength },
+    targetPoints: { min: '1', max: String(PROTOCOL.maxTargetPoints) },
+    boards: { min: '1', max: String(PROTOCOL.maxBoards) },
+    shotClock: { min: '0', max: String(PROTOCOL.maxShotClockS) },
+  });
+  assert.deepEqual(OPTION_RANGES.boards, [1, PROTOCOL.maxBoards]);
+  const html = fs.readFileSync(new URL('../../web/index.html', import.meta.url), 'utf8');
+  for (const id of ['name', 'room-code', 'target-points', 'boards', 'shot-clock']) {
+    const tag = html.match(new RegExp(`<input id="${id}"[^>]*>`));
+    assert.ok(tag, id);
+    assert.doesNotMatch(tag[0], /\b(maxlength|min|max)=/, id);
+  }
+});
+
 // ---- words, links, model ----
 
 test('plain words', () => {
@@ -417,6 +439,21 @@ test('the model places each shot on one timeline and ends the game with its reas
   m.handle({ type: 'event', kind: 'game_end', winner: 1, reason: 'left', scores: [0, 5] }, 11);
   assert.equal(m.view.phase, 'game_over');
   assert.equal(m.view.gameEnd.sentence, 'Ravi wins the game (the opponent left)');
+});
+
+test('the game end is named by its rule code, as the journal and carrom-client name it', () => {
+  const m = new MatchModel();
+  m.handle(roomState({ you: 0 }), 10);
+  const end = proto.decodeServer('{"type":"event","kind":"game_end","winner":1,"reason":"left","scores":[0,5],"rule":"forfeit"}');
+  m.handle(end.message, 11);
+  assert.deepEqual({ winner: m.view.gameEnd.winner, reason: m.view.gameEnd.reason }, { winner: 1, reason: 'forfeit' });
+  assert.equal(m.view.gameEnd.sentence, 'Ravi wins the game (the opponent left)');
+  const older = new MatchModel(); // a server that sends no rule: game_end's reason
+  older.handle(roomState({ you: 0 }), 10);
+  older.handle({ type: 'event', kind: 'game_end', winner: 0, reason: 'score', scores: [25, 5] }, 11);
+  assert.equal(older.view.gameEnd.reason, 'score');
+  assert.equal(proto.decodeServer('{"type":"event","kind":"game_end","winner":1,"reason":"score","scores":[0,5],"rule":7}').error,
+    "event: field 'rule' must be a string");
 });
 
 test('a shot played long after the join keyframe sounds every cue once, when rendered', () => {

@@ -3,6 +3,14 @@
 # in scripts/install-deps.sh; nothing is downloaded at test time) against a real carrom-server
 # (and carrom-bot). Registered when node and chromium are installed; a test whose
 # playwright-core is missing fails with that sentence. The pure modules' unit tests need only node.
+# The page's constants are the server's (docs/web.md, "Constants"): needs no node.
+add_test(NAME web.physics_config_current
+         COMMAND ${CMAKE_COMMAND} -DGENERATOR=$<TARGET_FILE:carrom-web-config>
+                 -DCHECKED_IN=${PROJECT_SOURCE_DIR}/web/js/physics_config.js
+                 -DOUTPUT=${CMAKE_CURRENT_BINARY_DIR}/physics_config.js
+                 -P ${CMAKE_CURRENT_SOURCE_DIR}/web/physics_config_current.cmake)
+set_tests_properties(web.physics_config_current PROPERTIES TIMEOUT 30 LABELS web)
+
 find_program(CARROM_NODE NAMES node nodejs)
 find_program(CARROM_CHROMIUM NAMES chromium chromium-browser)
 if(NOT CARROM_NODE)
@@ -13,6 +21,8 @@ endif()
 set(web_dir ${CMAKE_CURRENT_SOURCE_DIR}/web)
 add_test(NAME web.unit COMMAND ${CARROM_NODE} ${web_dir}/unit_test.mjs)
 set_tests_properties(web.unit PROPERTIES TIMEOUT 60 LABELS web)
+add_test(NAME web.golden COMMAND ${CARROM_NODE} ${web_dir}/golden_test.mjs)
+set_tests_properties(web.golden PROPERTIES TIMEOUT 60 LABELS web)
 add_test(NAME web.doubles_unit COMMAND ${CARROM_NODE} ${web_dir}/doubles_test.mjs)
 set_tests_properties(web.doubles_unit PROPERTIES TIMEOUT 60 LABELS web)
 

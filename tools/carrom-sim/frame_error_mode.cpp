@@ -36,7 +36,7 @@ constexpr double kFreezeIntervals = 2.0;
 // The server's last keyframe of a stroke holds the board after the rules: the striker on the next
 // baseline, returned pieces placed. A client interpolates those bodies there from its last
 // snapshot of the stroke, so they are compared only while they move in the exact trajectory and
-// not in the stroke's last snapshot interval (60 Hz).
+// not in the stroke's last 1/60 s (a margin of one 60 Hz snapshot interval).
 constexpr double kLastIntervalS = 1.0 / 60.0;
 
 struct Frame {

@@ -1,19 +1,10 @@
-// The board as the server simulates it (the defaults of common/include/carrom/config.hpp) and
-// its markings (client/src/board_geometry.cpp). Board px, origin at the top-left corner, y down.
+// The board as the server simulates it and its markings (client/src/board_geometry.cpp). Board
+// px, origin at the top-left corner, y down. PHYSICS and STRIKER_ID are the server's own
+// (physics_config.js, generated from common/include/carrom/config.hpp and scene.hpp).
 
-export const PHYSICS = Object.freeze({
-  boardSize: 600, // outer size of the square board
-  frame: 35, // cushion face distance from each edge
-  coinRadius: 14, // black, white and queen
-  strikerRadius: 18,
-  pocketRadius: 22,
-  maxPower: 25, // shot power range [0, maxPower]
-  baselineOffset: 80, // baseline distance from the near edge
-  baselineEndMargin: 60, // baseline x range: frame + margin + striker radius
-  dampingPerS: 60 * Math.log(1 / 0.985), // k of the free motion between changes of motion, 1/s
-});
+import { PHYSICS, STRIKER_ID } from './physics_config.js';
 
-export const STRIKER_ID = 19;
+export { PHYSICS, STRIKER_ID };
 
 export function radiusOf(kind, c = PHYSICS) {
   return kind === 'striker' ? c.strikerRadius : c.coinRadius;

@@ -7,6 +7,7 @@
 import {
   clipName, isPlayerName, isRoomCode, normaliseRoomCode, RULE_SETS, BOT_LEVELS,
 } from './protocol.js';
+import { PROTOCOL } from './physics_config.js';
 
 // The new-game buttons' labels for singles and doubles.
 const LABELS = {
@@ -15,6 +16,26 @@ const LABELS = {
 };
 
 const $ = (id) => document.getElementById(id);
+
+// The lobby's whole-number match options and the range create_room accepts for each
+// (proto/include/carrom/proto/limits.hpp; the maxima through physics_config.js).
+export const OPTION_RANGES = Object.freeze({
+  targetPoints: Object.freeze([1, PROTOCOL.maxTargetPoints]),
+  boards: Object.freeze([1, PROTOCOL.maxBoards]),
+  shotClock: Object.freeze([0, PROTOCOL.maxShotClockS]),
+});
+
+// Gives the lobby's inputs the protocol's limits (index.html spells none of them): the name's and
+// the room code's lengths, the match options' ranges. inputs: {name, code, targetPoints, boards,
+// shotClock}, the form's input elements.
+export function applyLimits(inputs) {
+  inputs.name.maxLength = PROTOCOL.maxNameBytes;
+  inputs.code.maxLength = PROTOCOL.roomCodeLength;
+  for (const [key, [lo, hi]] of Object.entries(OPTION_RANGES)) {
+    inputs[key].min = String(lo);
+    inputs[key].max = String(hi);
+  }
+}
 
 // Reads an optional whole number in [lo, hi] from an input; '' when empty, null when invalid.
 function optionalInt(input, lo, hi) {
@@ -41,6 +62,7 @@ export class Lobby {
     this.code = $('room-code');
     this.status = $('lobby-status');
     this.error = $('lobby-error');
+    applyLimits(this);
     this.name.value = storage?.getItem('carrom.name') ?? '';
     this.form.addEventListener('submit', (e) => {
       e.preventDefault();
@@ -115,16 +137,16 @@ export class Lobby {
   submit(action) {
     const name = this.name.value.trim();
     if (!isPlayerName(name)) {
-      this.setError('Enter a name first (1 to 24 bytes, no control characters).');
+      this.setError(`Enter a name first (1 to ${PROTOCOL.maxNameBytes} bytes, no control characters).`);
       this.name.focus();
       return;
     }
     this.storage?.setItem('carrom.name', name);
     const ruleSet = RULE_SETS.includes(this.ruleSet.value) ? this.ruleSet.value : 'icf';
     const options = {
-      target_points: optionalInt(this.targetPoints, 1, 1000),
-      boards: optionalInt(this.boards, 1, 99),
-      shot_clock_s: optionalInt(this.shotClock, 0, 600),
+      target_points: optionalInt(this.targetPoints, ...OPTION_RANGES.targetPoints),
+      boards: optionalInt(this.boards, ...OPTION_RANGES.boards),
+      shot_clock_s: optionalInt(this.shotClock, ...OPTION_RANGES.shotClock),
     };
     let request;
     if (action === 'create' || action === 'bot') {

@@ -42,7 +42,9 @@ function emptyView() {
     winner: -1,
     deadlineMs: null, // shot clock, server clock
     aimX: null, // the shooter's live striker x (aim events)
-    gameEnd: null, // {winner, reason, sentence} once the game ended
+    // {winner, reason, sentence} once the game ended; reason: the name the journal, the Match API
+    // and carrom-bot give the end (game_end's rule code, or its reason from a server without one).
+    gameEnd: null,
     rematchAsked: false,
   };
 }
@@ -69,6 +71,7 @@ export class MatchModel {
     this.cuesHeard = 0; // audible physics events received (collision, cushion, pocket)
     this.cuesMerged = 0; // cues played as one with another of their kind at the same time
     this.lastProtoSeq = null;
+    this.lastDue = null; // the stroke's last due event: {team, owed}
     this.nextSeq = 1;
     this.lastRender = 0;
     this.shots = 0; // shot results received
@@ -265,11 +268,16 @@ export class MatchModel {
         post(queenSentence(e.queen, this.seatName(e.queen.seat)), 'info');
         break;
       case 'due': {
-        // Dues are the team's: partners owe them together.
+        // Dues are the team's: partners owe them together. The server sends one event per seat
+        // of the team; the partner's event with the same count in the same stroke (since the
+        // stroke's shot_result, which its rule events follow) adds no line.
         const team = this.teamOf(e.seat);
         v.seats.forEach((s, i) => { if (i === e.seat || s.team === team) s.dues = e.owed; });
+        const last = this.lastDue;
+        const repeat = last !== null && last.team === team && last.owed === e.owed;
+        this.lastDue = { team, owed: e.owed };
         const who = this.doubles() ? `${this.teamName(team)} owe` : `${this.seatName(e.seat)} owes`;
-        if (e.owed > 0) post(`${who} ${countWords(e.owed, 'due', 'dues')}`, 'foul');
+        if (e.owed > 0 && !repeat) post(`${who} ${countWords(e.owed, 'due', 'dues')}`, 'foul');
         break;
       }
       case 'turn':
@@ -292,8 +300,9 @@ export class MatchModel {
         v.phase = 'game_over';
         const sentence = gameEndSentence(e.winner, this.ourTeam(e.winner), this.teamName(e.winner),
           e.reason, v.you < 0, this.doubles());
-        v.gameEnd = { winner: e.winner, reason: e.reason, sentence };
-        post(sentence, 'good');
+        // Said by the result panel (hud.js), as the desktop client's game-over panel says it: no
+        // HUD line.
+        v.gameEnd = { winner: e.winner, reason: e.rule || e.reason, sentence };
         break;
       }
       case 'player_dropped': {
@@ -317,6 +326,7 @@ export class MatchModel {
   onShotResult(m, localS) {
     const v = this.view;
     this.shots += 1;
+    this.lastDue = null; // the stroke's rule events (due among them) follow
     this.lastShot = {
       turn: m.turn, seat: m.seat, x: m.x, angle: m.angle, power: m.power, pocketed: m.pocketed,
     };

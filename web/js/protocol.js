@@ -3,19 +3,23 @@
 // decoder checks the fields this client reads, so a malformed frame is reported and ignored
 // instead of breaking the page.
 
-export const PROTOCOL_VERSION = 1;
-export const MAX_NAME_BYTES = 24;
-export const ROOM_CODE_LENGTH = 6;
-export const ROOM_CODE_ALPHABET = 'ABCDEFGHJKMNPQRSTUVWXYZ23456789';
+import { PHYSICS, PROTOCOL } from './physics_config.js';
+
+// The server's own values (physics_config.js, generated from proto/version.hpp and limits.hpp).
+export const PROTOCOL_VERSION = PROTOCOL.version;
+export const MAX_NAME_BYTES = PROTOCOL.maxNameBytes;
+export const ROOM_CODE_LENGTH = PROTOCOL.roomCodeLength;
+export const ROOM_CODE_ALPHABET = PROTOCOL.roomCodeAlphabet;
 export const RULE_SETS = ['icf', 'seed', 'freestyle', 'discpool'];
 export const BOT_LEVELS = ['random', 'easy', 'medium', 'hard'];
 export const SEAT_COUNTS = [2, 4]; // singles, doubles
 export const BASELINES = ['bottom', 'right', 'top', 'left']; // seat order 0..3 in doubles
-export const MAX_SERVER_MESSAGE_BYTES = 262144;
+export const MAX_SERVER_MESSAGE_BYTES = PROTOCOL.maxServerMessageBytes;
 
 const utf8 = new TextEncoder();
 
-// A name the server accepts: 1-24 UTF-8 bytes, no control characters, a visible character.
+// A name the server accepts: 1 to MAX_NAME_BYTES UTF-8 bytes, no control characters, a visible
+// character.
 export function isPlayerName(name) {
   if (typeof name !== 'string') return false;
   const bytes = utf8.encode(name);
@@ -28,7 +32,7 @@ export function isPlayerName(name) {
   return visible;
 }
 
-// Cuts a name to at most 24 UTF-8 bytes without splitting a character.
+// Cuts a name to at most MAX_NAME_BYTES UTF-8 bytes without splitting a character.
 export function clipName(name) {
   let out = '';
   for (const ch of String(name).replace(/[\u0000-\u001f\u007f]/g, '')) {
@@ -131,6 +135,10 @@ function optInt(o, k) {
   if (o[k] === undefined) return undefined;
   return int(o, k);
 }
+function optStr(o, k) {
+  if (o[k] === undefined) return undefined;
+  return str(o, k);
+}
 function intArray(o, k) {
   need(Array.isArray(o[k]) && o[k].every(isInt), k, 'an array of integers');
   return o[k];
@@ -143,7 +151,7 @@ function oneOf(o, k, values) {
 // room_state's motion when the server sends none (an older server): the default k
 // (common/include/carrom/config.hpp) and only the regular snapshots.
 export const DEFAULT_MOTION = Object.freeze({
-  damping_per_s: 60 * Math.log(1 / 0.985), contact_snapshots: false,
+  damping_per_s: PHYSICS.dampingPerS, contact_snapshots: false,
 });
 
 const KINDS = ['black', 'white', 'queen', 'striker'];
@@ -232,7 +240,7 @@ const EVENT_FIELDS = {
   due: (m) => { int(m, 'seat'); int(m, 'owed'); },
   turn: (m) => { int(m, 'turn'); int(m, 'seat'); optInt(m, 'deadline_ms'); int(m, 'server_time_ms'); },
   board_end: (m) => { int(m, 'board'); int(m, 'winner'); int(m, 'points'); intArray(m, 'scores'); },
-  game_end: (m) => { int(m, 'winner'); str(m, 'reason'); intArray(m, 'scores'); },
+  game_end: (m) => { int(m, 'winner'); str(m, 'reason'); intArray(m, 'scores'); optStr(m, 'rule'); },
   player_dropped: (m) => { int(m, 'seat'); int(m, 'grace_deadline_ms'); int(m, 'server_time_ms'); },
   player_returned: (m) => { int(m, 'seat'); },
   aim: (m) => { int(m, 'seat'); int(m, 'turn'); num(m, 'x'); },

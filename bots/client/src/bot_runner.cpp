@@ -300,7 +300,7 @@ void BotRunner::on_error(const proto::Error& error) {
 void BotRunner::on_game_end(const proto::GameEndEvent& end) {
     ++summary_.games;
     summary_.scores = end.scores;
-    summary_.last_reason = end.reason;
+    summary_.last_reason = end.rule.empty() ? end.reason : end.rule; // the journal's name
     const int seat = room_ ? room_->you : -1;
     if (seat >= 0) {
         if (end.winner < 0) {

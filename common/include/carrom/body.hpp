@@ -10,6 +10,11 @@ namespace carrom {
 
 enum class BodyKind : std::uint8_t { Black, White, Queen, Striker };
 
+// The engine's body: what the simulation moves and the rules read, full double precision in
+// board px and px/s. proto::BoardBody (a body of room_state, the wire's form, compared field by
+// field) and client::BodyState (a body as a snapshot gave it to the client: 0.01 px as the
+// server quantised it, a pocketed body at its last drawn place) carry the same fields for their
+// own layer, so a change of the wire or of the client never reaches the engine's type.
 struct Body {
     int id = 0; // caller's id, unique within a scene; events name bodies by it
     BodyKind kind = BodyKind::Black;

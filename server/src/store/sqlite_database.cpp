@@ -159,7 +159,7 @@ SQLite::Database open_connection(const std::string& path, bool read_only) {
     SQLite::Database db(path, read_only ? SQLite::OPEN_READONLY : SQLite::OPEN_READWRITE,
                         kBusyTimeoutMs);
     // NORMAL in WAL mode: a commit writes the WAL without fsync, so it survives a crash of the
-    // process; the WAL is synced at each checkpoint (docs/server.md, "Durability").
+    // process; the WAL is synced at each checkpoint (docs/store.md, "Durability").
     db.exec("PRAGMA synchronous = NORMAL");
     db.exec("PRAGMA foreign_keys = ON");
     return db;

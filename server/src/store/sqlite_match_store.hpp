@@ -1,5 +1,5 @@
 #pragma once
-// The embedded MatchStore: one SQLite file in WAL mode (docs/server.md, "Match store").
+// The embedded MatchStore: one SQLite file in WAL mode (docs/store.md).
 //
 // Threads: callers only queue (a mutex held for a push). A writer thread takes up to max_batch
 // items at a time and writes them in one transaction (SqliteWriter); a checkpointer thread copies

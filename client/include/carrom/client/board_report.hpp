@@ -32,9 +32,9 @@ std::string board_report_json(const MatchView& view, const std::vector<RenderedB
                               const ScreenMapping& mapping, const ReportContext& context);
 
 // The final state of a game (carrom-client --final-state), one JSON object (one line): {"room",
-// "you", "winner" (seat, -1 a draw), "reason" (game_end's), "scores" [per seat, game_end's],
-// "bodies" [{"id", "kind", "x", "y" (board px, as the server sent them), "pocketed"}] of the
-// newest board in id order}.
+// "you", "winner" (seat, -1 a draw), "reason" (game_end_name: the rule code, as the journal names
+// the end), "scores" [per seat, game_end's], "bodies" [{"id", "kind", "x", "y" (board px, as the
+// server sent them), "pocketed"}] of the newest board in id order}.
 std::string final_state_json(const MatchView& view, const std::vector<BodyState>& board);
 
 } // namespace carrom::client

@@ -1,21 +1,24 @@
 #pragma once
 // Everything the client knows about its match, built only from server messages: the HUD's view
-// (seats, scores, turn, shot clock, queen and dues), the board to draw (through the playout clock
-// and the interpolation buffer), sound cues and short messages for the player.
+// (match_view.hpp: seats, scores, turn, shot clock, queen and dues), the board to draw (through
+// the playout clock and the interpolation buffer), sound cues (sound_cue_schedule.hpp) and short
+// messages for the player; and the glue to the own stroke's prediction (shot_prediction.hpp).
 //
 // Snapshot and event times are seconds since the start of their shot (proto), so each shot's
-// times are placed on one continuous timeline: the first snapshot of a turn starts where the
-// local clock (less the base network transit) is when it arrives. Physics events for a turn
-// whose first snapshot has not arrived yet wait for it.
+// times are placed on one continuous timeline (shot_timeline.hpp): the first snapshot of a turn
+// starts where the local clock (less the base network transit) is when it arrives. Physics
+// events for a turn whose first snapshot has not arrived yet wait for it.
 
 #include "carrom/client/coins_left.hpp"
 #include "carrom/client/hud_log.hpp"
 #include "carrom/client/interpolation_buffer.hpp"
+#include "carrom/client/match_view.hpp"
 #include "carrom/client/playout_clock.hpp"
 #include "carrom/client/server_clock.hpp"
 #include "carrom/client/shot_prediction.hpp"
+#include "carrom/client/shot_timeline.hpp"
 #include "carrom/client/snapshot.hpp"
-#include "carrom/client/sound_synth.hpp"
+#include "carrom/client/sound_cue_schedule.hpp"
 #include "carrom/config.hpp"
 #include "carrom/proto/client_messages.hpp"
 #include "carrom/proto/server_messages.hpp"
@@ -28,63 +31,6 @@
 #include <vector>
 
 namespace carrom::client {
-
-struct SeatView {
-    bool occupied = false;
-    std::string name;
-    bool connected = false;
-    bool bot = false;
-    proto::Colour colour = proto::Colour::None;
-    rules::Side side = rules::Side::Bottom; // the seat's baseline (room_state's "baseline")
-    int score = 0;                          // the team's score (partners show the same)
-    int dues = 0;                           // the team's dues
-};
-
-// How the game ended.
-struct GameResult {
-    int winner = -1; // the winning team (its first seat: singles the seat); -1: a draw
-    // game_end's reason: "score", "boards", "cleared", "forfeit", "left" or "clock"; empty when
-    // the client came in after the end (a room state that was already over).
-    std::string reason;
-    std::vector<int> scores;        // final, per seat (a seat's is its team's)
-    std::vector<std::string> names; // per seat when the game ended (a seat may empty later)
-};
-
-struct MatchView {
-    bool in_room = false;
-    std::string code;
-    int you = -1; // our seat, -1 for a spectator
-    proto::RuleSet rule_set = proto::RuleSet::Icf;
-    proto::MatchOptions options;
-    std::vector<SeatView> seats;
-    int spectators = 0;
-    int board_number = 1;
-    int turn = 0;
-    int to_play = 0;
-    proto::Phase phase = proto::Phase::Waiting;
-    proto::QueenInfo queen;
-    int winner = -1;                         // team, -1 none
-    std::optional<std::int64_t> deadline_ms; // shot clock, server clock
-    std::optional<double> aim_x_px;          // the shooter's live striker x (aim events)
-    std::optional<GameResult> result;        // from game over until a new game starts
-};
-
-// The seat's name, or "Seat N" for a seat without one.
-std::string seat_name(const MatchView& view, int seat);
-// After a game: the name the seat had when it ended (its player may have left since).
-std::string player_name_at_end(const MatchView& view, int seat);
-// The team of a seat, -1 for no such seat: the rules' team for the room's seat count, which is
-// room_state's "team" (singles: the seat; doubles: seat % 2, partners opposite).
-int team_of(const MatchView& view, int seat);
-// The seats of a team in seat order: one in singles, the two partners in doubles.
-std::vector<int> team_seats(const MatchView& view, int team);
-// The partner's seat in doubles, -1 in singles (or for no such seat).
-int partner_of(const MatchView& view, int seat);
-// A team's players as a sentence subject, e.g. "Asha & Ravi" (at the end of the game: the names
-// they had then).
-std::string team_name(const MatchView& view, int team);
-// The side a seat shoots from (its room_state baseline).
-rules::Side seat_side(const MatchView& view, int seat);
 
 class MatchModel {
 public:
@@ -134,13 +80,9 @@ public:
     const ShotPrediction& prediction() const { return prediction_; }
     // The continuous time of the last render().
     double rendered_time_s() const { return last_render_s_; }
-    // The shot a continuous time falls in: the turn whose shot started last at or before it
-    // (turn -1 when none is known) and the time since that shot's t = 0 (its snapshot time).
-    struct ShotTime {
-        int turn = -1;
-        double t_s = 0.0;
-    };
-    ShotTime shot_time(double continuous_s) const;
+    // The shot a continuous time falls in (ShotTimeline::shot_time).
+    using ShotTime = client::ShotTime;
+    ShotTime shot_time(double continuous_s) const { return timeline_.shot_time(continuous_s); }
 
 private:
     // The server's motion model (room_state "motion") for the buffer and the playout clock.
@@ -148,6 +90,8 @@ private:
     void on_room_state(const proto::RoomState& m, double local_s);
     void on_snapshot(const proto::Snapshot& m, double local_s);
     void on_event(const proto::Event& m, double local_s);
+    void on_due(const proto::DueEvent& e, double local_s);
+    void on_board_end(const proto::BoardEndEvent& e, double local_s);
     void on_shot_result(const proto::ShotResult& m, double local_s);
     void on_error(const proto::Error& m, double local_s);
     void cue(int turn, double t_s, SoundKind kind, double volume);
@@ -163,23 +107,22 @@ private:
     PlayoutClock playout_;
     InterpolationBuffer buffer_;
     ServerClock server_clock_;
-    SoundCueQueue cues_;
-    std::vector<SoundCue> due_;
+    SoundCueSchedule sounds_;
     HudLog log_;
     std::map<int, BodyKind> kinds_;
-    std::map<int, double> turn_offsets_; // turn -> continuous time of the shot's t = 0
-    struct PendingCue {
-        int turn;
-        double t_s;
-        SoundCue cue;
+    ShotTimeline timeline_;
+    // The team and dues of the last `due` event since the last shot_result: the server sends one
+    // per seat of the team, the HUD says it once.
+    struct DueSaid {
+        int team;
+        int owed;
     };
-    std::vector<PendingCue> pending_cues_;
+    std::optional<DueSaid> due_said_;
     std::optional<std::int64_t> last_proto_seq_;
     std::uint64_t next_seq_ = 1;
     double last_render_s_ = 0.0;
     CoinsOnBoard coins_;
     ShotPrediction prediction_;
-    std::vector<SoundCue> predicted_cues_; // sorted by time, played as the render time passes
     int corrections_logged_ = 0;
 };
 

@@ -10,6 +10,10 @@
 
 namespace carrom::client {
 
+// A body as the client knows it at a snapshot's time: the fields of carrom::Body, taken from
+// room_state (proto::BoardBody) or a snapshot (values the server quantised to 0.01 px and
+// px/s; a body a delta names as pocketed keeps the position the client last had for it, at
+// rest). The client's interpolation, aiming and prediction work on it, never on the wire's type.
 struct BodyState {
     int id = 0;
     BodyKind kind = BodyKind::Black;

@@ -25,20 +25,7 @@ struct SoundCue {
     double time_s = 0.0;
     SoundKind kind = SoundKind::Click;
     double volume = 1.0; // 0..1
-};
-
-// Cues wait until the board is rendered at their time, so sounds match what is seen.
-class SoundCueQueue {
-public:
-    void push(const SoundCue& cue);
-    // Cues with time_s <= render_time_s, in time order; cues that are more than stale_s late are
-    // dropped instead (a resume or a stall should not play a burst of old clicks).
-    std::vector<SoundCue> take_due(double render_time_s, double stale_s = 0.25);
-    void clear() { cues_.clear(); }
-    std::size_t size() const { return cues_.size(); }
-
-private:
-    std::vector<SoundCue> cues_; // sorted by time_s
+    friend bool operator==(const SoundCue&, const SoundCue&) = default;
 };
 
 } // namespace carrom::client

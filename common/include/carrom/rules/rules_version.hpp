@@ -1,7 +1,7 @@
 #pragma once
 // The version of the rules' results. A match journal records it (with the physics version) so
 // that a journal written by a build whose rules differ is recognised instead of being replayed
-// to different outcomes (docs/server.md, "Match store").
+// to different outcomes (docs/store.md).
 //
 // Bump it whenever a match state plus a stroke can give another state or outcome than before:
 // a changed rule, default, scoring or return spot, or a change to hash_match_state

@@ -165,6 +165,9 @@ struct GameEndEvent { // "game_end"; reason: "score", "boards", "cleared", "forf
     int winner = -1;
     std::string reason;
     std::vector<int> scores;
+    // "rule"?: the rules engine's code of the end ("target_points", "boards_played",
+    // "board_cleared", ...), the name the journal and the Match API give it; empty when absent.
+    std::string rule{};
     friend bool operator==(const GameEndEvent&, const GameEndEvent&) = default;
 };
 struct PlayerDroppedEvent { // "player_dropped": the seat forfeits at grace_deadline_ms unless it

@@ -60,7 +60,10 @@ bool is_resume_token(std::string_view text); // 32 lowercase hex digits
 // (The JSON parser has already rejected invalid UTF-8.)
 bool is_player_name(std::string_view text);
 
-// One body of a full board (room_state). Pocketed bodies keep their last position.
+// One body of a full board (room_state). Pocketed bodies keep their last position. The wire's
+// form of carrom::Body (same fields, px and px/s as the server's engine has them, plus ==
+// for the message round trips; to_board_body / to_body convert), kept apart from the engine's
+// type so the protocol owns what it sends; client::BodyState is the client's own copy.
 struct BoardBody {
     int id = 0;
     BodyKind kind = BodyKind::Black;

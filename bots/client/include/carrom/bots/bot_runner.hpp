@@ -58,7 +58,10 @@ struct BotSummary {
     int losses = 0;
     int draws = 0;
     std::vector<int> scores; // at the last game end, one per seat (partners share a value)
-    std::string last_reason; // game_end reason of the last game
+    // How the last game ended: game_end's rule, the rules engine's code the journal and the
+    // Match API use ("target_points", ...); game_end's reason from a server that sends no rule;
+    // "ended_while_away" when the bot came back to a game that ended meanwhile.
+    std::string last_reason;
     int snapshots = 0;
     int keyframes = 0;
     int seq_gaps = 0;        // deltas whose seq did not follow the previous one (the server

@@ -1,0 +1,33 @@
+#pragma once
+// --screenshot PATH (--frames N, --after-shots K, --report FILE): after N frames, and once K shot
+// results have arrived and the board is drawn at rest again, saves the window as a PNG and,
+// with --report, what it shows as JSON (board_report.hpp); then ends the run (exit code 0, or 1
+// when a file cannot be written).
+
+#include "app.hpp"
+#include "unattended_mode.hpp"
+
+#include <string>
+
+namespace carrom::client::app {
+
+class ScreenshotMode final : public UnattendedMode {
+public:
+    explicit ScreenshotMode(const AppOptions& options)
+        : path_(options.screenshot_path), report_path_(options.report_path),
+          frames_(options.frames), after_shots_(options.after_shots) {}
+    void on_frame(UnattendedFrame& frame) override;
+    std::optional<int> done() const override { return done_; }
+
+private:
+    bool due(const UnattendedFrame& frame) const;
+    int save(const UnattendedFrame& frame) const;
+
+    std::string path_;
+    std::string report_path_; // empty: no report
+    int frames_;
+    int after_shots_;
+    std::optional<int> done_;
+};
+
+} // namespace carrom::client::app
