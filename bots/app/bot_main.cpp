@@ -166,8 +166,7 @@ int main(int argc, char** argv) {
     }
     config.budget.time = std::chrono::milliseconds(think_ms);
     config.auto_resume = resume_for_s > 0.0;
-    config.reconnect.give_up_after =
-        std::chrono::milliseconds(static_cast<std::int64_t>(resume_for_s * 1000.0));
+    config.reconnect.give_up_after_s = resume_for_s;
 
     if (!script_path.empty()) {
         std::string text;

@@ -5,29 +5,6 @@
 #include <chrono>
 
 namespace carrom::client::app {
-namespace {
-
-const char* link_name(SessionPhase phase) {
-    switch (phase) {
-    case SessionPhase::Connecting:
-        return "connecting";
-    case SessionPhase::Greeting:
-        return "greeting";
-    case SessionPhase::Lobby:
-        return "lobby";
-    case SessionPhase::Joining:
-        return "joining";
-    case SessionPhase::InRoom:
-        return "in_room";
-    case SessionPhase::Reconnecting:
-        return "reconnecting";
-    case SessionPhase::Failed:
-        return "failed";
-    }
-    return "unknown";
-}
-
-} // namespace
 
 std::optional<std::string> FrameLog::open(const std::string& path) {
     out_.open(path, std::ios::out | std::ios::trunc);
@@ -75,7 +52,7 @@ void FrameLog::frame(long index, const MatchModel& model, const std::vector<Rend
                               {"predicted", model.prediction().active()},
                               {"delay_ms", 1000.0 * model.playout().delay_s()},
                               {"playing", model.animating()},
-                              {"link", link_name(link)},
+                              {"link", std::string(net::session_phase_name(link))},
                               {"bodies", std::move(bodies)}};
     out_ << line.dump() << '\n' << std::flush;
 }

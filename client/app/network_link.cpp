@@ -38,6 +38,7 @@ public:
             break;
         }
         out.detail = s.detail;
+        out.close_code = s.close_code;
         if (const int bad = connection_->decode_errors(); bad > 0) {
             if (!out.detail.empty()) {
                 out.detail += ' ';

@@ -15,13 +15,6 @@ std::string as_sentence(const std::string& text) {
     return text + ".";
 }
 
-// Errors that answer a room request with no: the player picks something else in the lobby.
-bool refuses_request(const std::string& code) {
-    return code == proto::code::kRoomNotFound || code == proto::code::kRoomFull ||
-           code == proto::code::kUnsupported || code == proto::code::kTooManyRooms ||
-           code == proto::code::kBadField;
-}
-
 std::string delay_text(double s) {
     std::ostringstream out;
     out.precision(s < 10.0 ? 1 : 0);
@@ -40,33 +33,101 @@ bool is_room_message(const proto::ServerMessage& m) {
 
 ClientSession::ClientSession(LinkFactory factory, std::string name, const SessionConfig& config)
     : factory_(std::move(factory)), name_(std::move(name)), config_(config),
-      jitter_(config.jitter_seed.value_or(0)) {}
+      core_(config.backoff, net::ReconnectPolicy::Always), jitter_(config.jitter_seed.value_or(0)) {
+}
 
 ReconnectInfo ClientSession::reconnect_info(double local_s) const {
     ReconnectInfo info;
-    info.attempt = attempts_;
+    info.attempt = core_.tries();
     info.trying = link_ != nullptr;
-    info.next_try_in_s = link_ ? 0.0 : std::max(0.0, retry_at_s_ - local_s);
-    info.gives_up_in_s = std::max(0.0, lost_since_s_ + config_.give_up_after_s - local_s);
+    info.next_try_in_s = link_ ? 0.0 : std::max(0.0, core_.retry_at_s() - local_s);
+    info.gives_up_in_s = std::max(0.0, core_.gives_up_at_s() - local_s);
     info.reason = lost_reason_;
     return info;
 }
 
 void ClientSession::start(double local_s) {
-    open_link(local_s);
+    now_s_ = local_s;
+    apply(core_.start(""));
+}
+
+void ClientSession::apply(const net::SessionActions& actions) {
+    using Kind = net::SessionActionKind;
+    for (const net::SessionAction& action : actions) {
+        switch (action.kind) {
+        case Kind::Connect:
+            open_link(now_s_);
+            break;
+        case Kind::SendHello:
+        case Kind::SendResume: {
+            proto::Hello hello;
+            hello.name = name_;
+            if (action.kind == Kind::SendResume) {
+                hello.resume_token = core_.token();
+            }
+            link_->send(hello);
+            status_ = "Saying hello...";
+            break;
+        }
+        case Kind::SendRoomRequest:
+            send_request();
+            break;
+        case Kind::SendLeave:
+            if (link_ && link_->status().state == LinkState::Open) {
+                link_->send(proto::Leave{});
+            }
+            break;
+        case Kind::Wait:
+            status_ = lost_reason_ + " Retrying in " + delay_text(action.wait_s) + " (attempt " +
+                      std::to_string(core_.tries()) + ")";
+            break;
+        case Kind::Resumed:
+            break;
+        case Kind::SeatLost:
+            seat_lost_ = true;
+            request_.reset();
+            status_ = "Connected (your old seat is gone: the server no longer holds it)";
+            break;
+        case Kind::Refused:
+            request_.reset();
+            status_ = "Connected";
+            break;
+        case Kind::GiveUp:
+            if (link_) {
+                link_->close();
+                link_.reset();
+            }
+            switch (action.reason) {
+            case net::GiveUpReason::VersionMismatch:
+                status_ = "The server speaks another protocol version";
+                break;
+            case net::GiveUpReason::Replaced:
+                status_ = "This seat was opened on another connection.";
+                break;
+            case net::GiveUpReason::TimeUp:
+                status_ = lost_reason_ + " Gave up after " +
+                          delay_text(now_s_ - core_.lost_since_s()) + ".";
+                break;
+            case net::GiveUpReason::NoRetry:
+                status_ = lost_reason_;
+                break;
+            }
+            break;
+        }
+    }
 }
 
 void ClientSession::open_link(double local_s) {
     link_ = factory_ ? factory_() : nullptr;
     if (!link_) {
-        on_link_lost(local_s, "Could not start a connection");
+        on_link_lost(local_s, "Could not start a connection", 0);
         return;
     }
-    if (phase_ != SessionPhase::Reconnecting) {
-        phase_ = SessionPhase::Connecting;
-        status_ = "Connecting...";
+    hello_due_ = true;
+    if (core_.phase() == SessionPhase::Reconnecting) {
+        status_ = "Reconnecting (attempt " + std::to_string(core_.tries()) + ")...";
     } else {
-        status_ = "Reconnecting (attempt " + std::to_string(attempts_) + ")...";
+        status_ = "Connecting...";
     }
 }
 
@@ -94,11 +155,8 @@ std::string check_room_request(const RoomRequest& request) {
 
 void ClientSession::request(const RoomRequest& request) {
     request_ = request;
-    request_sent_ = false;
     seat_lost_ = false;
-    if (phase_ == SessionPhase::Lobby) {
-        send_request();
-    }
+    apply(core_.request());
 }
 
 void ClientSession::send_request() {
@@ -129,16 +187,13 @@ void ClientSession::send_request() {
         break;
     }
     }
-    request_sent_ = true;
-    left_room_ = false;
-    phase_ = SessionPhase::Joining;
     status_ = r.kind != RoomRequest::Kind::Quick ? "Joining..."
               : r.seats > 2                      ? "Waiting for players..."
                                                  : "Waiting for an opponent...";
 }
 
 bool ClientSession::send_game(const proto::ClientMessage& message) {
-    if (phase_ != SessionPhase::InRoom || !link_ || link_->status().state != LinkState::Open) {
+    if (phase() != SessionPhase::InRoom || !link_ || link_->status().state != LinkState::Open) {
         return false;
     }
     link_->send(message);
@@ -146,86 +201,52 @@ bool ClientSession::send_game(const proto::ClientMessage& message) {
 }
 
 void ClientSession::leave_room() {
-    if (link_ && link_->status().state == LinkState::Open &&
-        (phase_ == SessionPhase::InRoom || phase_ == SessionPhase::Joining)) {
-        link_->send(proto::Leave{});
-    }
+    const bool in_room = phase() == SessionPhase::InRoom || phase() == SessionPhase::Joining;
+    apply(core_.leave());
     request_.reset();
-    request_sent_ = false;
-    left_room_ = true;
-    resuming_ = false; // a reconnect says hello as a new player, without the old seat
-    if (phase_ == SessionPhase::InRoom || phase_ == SessionPhase::Joining) {
-        phase_ = SessionPhase::Lobby;
+    if (in_room) {
         status_ = "Connected";
     }
 }
 
-void ClientSession::on_link_lost(double local_s, const std::string& why) {
+void ClientSession::on_link_lost(double local_s, const std::string& why, int close_code) {
     if (link_) {
         link_->close();
         link_.reset();
     }
-    if (phase_ == SessionPhase::Failed) {
+    if (core_.phase() == SessionPhase::Failed) {
         return;
     }
-    const bool was_connected = attempts_ == 0;
-    if (was_connected) {
-        lost_since_s_ = local_s;
-    }
-    ++attempts_;
-    const std::string reason = as_sentence(why.empty() ? "The connection was lost" : why);
-    lost_reason_ = reason;
-    if (local_s - lost_since_s_ >= config_.give_up_after_s) {
-        phase_ = SessionPhase::Failed;
-        status_ = reason + " Gave up after " + delay_text(local_s - lost_since_s_) + ".";
-        return;
-    }
-    retry_delay_s_ = attempts_ == 1 ? config_.first_retry_s
-                                    : std::min(2.0 * retry_delay_s_, config_.max_retry_s);
-    double delay = retry_delay_s_;
-    if (config_.jitter_seed) {
-        delay = std::uniform_real_distribution<double>(delay / 2.0, delay)(jitter_);
-    }
-    retry_at_s_ = local_s + delay;
-    resuming_ = resuming_ || (!token_.empty() &&
-                              (phase_ == SessionPhase::InRoom || phase_ == SessionPhase::Joining));
-    phase_ = ever_welcomed_ ? SessionPhase::Reconnecting : SessionPhase::Connecting;
-    status_ = reason + " Retrying in " + delay_text(delay) + " (attempt " +
-              std::to_string(attempts_) + ")";
+    lost_reason_ = as_sentence(why.empty() ? "The connection was lost" : why);
+    const double jitter =
+        config_.jitter_seed ? std::uniform_real_distribution<double>(0.0, 1.0)(jitter_) : 1.0;
+    now_s_ = local_s;
+    apply(core_.link_closed(local_s, close_code, jitter));
 }
 
 std::vector<proto::ServerMessage> ClientSession::update(double local_s) {
+    now_s_ = local_s;
     std::vector<proto::ServerMessage> out;
     if (!link_) {
-        if ((phase_ == SessionPhase::Connecting || phase_ == SessionPhase::Reconnecting) &&
-            local_s >= retry_at_s_) {
-            open_link(local_s);
-        }
+        apply(core_.tick(local_s));
         return out;
     }
     const LinkStatus st = link_->status();
-    if (st.state == LinkState::Open &&
-        (phase_ == SessionPhase::Connecting || phase_ == SessionPhase::Reconnecting)) {
-        proto::Hello hello;
-        hello.name = name_;
-        if (resuming_) {
-            hello.resume_token = token_;
-        }
-        link_->send(hello);
-        phase_ = SessionPhase::Greeting;
-        status_ = "Saying hello...";
+    if (st.state == LinkState::Open && hello_due_) {
+        hello_due_ = false;
+        apply(core_.link_opened());
     }
     for (proto::ServerMessage& m : link_->poll()) {
-        if (handle(m, local_s)) {
+        if (handle(m)) {
             out.push_back(std::move(m));
         }
     }
     if (st.state == LinkState::Closed && link_) {
-        on_link_lost(local_s, st.detail);
+        on_link_lost(local_s, st.detail, st.close_code);
         return out;
     }
-    const bool pinging = phase_ == SessionPhase::Lobby || phase_ == SessionPhase::Joining ||
-                         phase_ == SessionPhase::InRoom;
+    const bool pinging = phase() == SessionPhase::Lobby || phase() == SessionPhase::Joining ||
+                         phase() == SessionPhase::InRoom;
     if (pinging && local_s >= next_ping_s_ && link_) {
         const std::int64_t nonce = next_nonce_++;
         pings_in_flight_[nonce] = local_s;
@@ -238,57 +259,32 @@ std::vector<proto::ServerMessage> ClientSession::update(double local_s) {
     return out;
 }
 
-bool ClientSession::handle(const proto::ServerMessage& m, double local_s) {
-    if (left_room_ && is_room_message(m)) {
+bool ClientSession::handle(const proto::ServerMessage& m) {
+    if (core_.drops_room_messages() && is_room_message(m)) {
         return false; // from a room we left, sent before the server had our leave
     }
     if (const auto* welcome = std::get_if<proto::Welcome>(&m)) {
-        token_ = welcome->resume_token;
         player_id_ = welcome->player_id;
-        ever_welcomed_ = true;
-        attempts_ = 0;
         status_ = "Connected";
-        if (resuming_) {
-            phase_ = SessionPhase::Joining; // the server sends the room back
-        } else {
-            phase_ = SessionPhase::Lobby;
-            if (request_) {
-                send_request();
-            }
-        }
+        apply(core_.welcome(welcome->resume_token));
         return true;
     }
     if (std::holds_alternative<proto::RoomState>(m)) {
-        phase_ = SessionPhase::InRoom;
-        resuming_ = false;
         status_ = "Connected";
+        apply(core_.room_state());
         return true;
     }
     if (const auto* pong = std::get_if<proto::Pong>(&m)) {
         const auto it = pings_in_flight_.find(pong->nonce);
         if (it != pings_in_flight_.end()) {
-            rtt_ms_ = std::max(local_s - it->second, 0.0) * 1000.0;
-            pongs_.push_back({pong->server_time_ms, it->second, local_s});
+            rtt_ms_ = std::max(now_s_ - it->second, 0.0) * 1000.0;
+            pongs_.push_back({pong->server_time_ms, it->second, now_s_});
             pings_in_flight_.erase(it);
         }
         return false;
     }
     if (const auto* error = std::get_if<proto::Error>(&m)) {
-        if (error->code == proto::code::kVersionMismatch) {
-            phase_ = SessionPhase::Failed;
-            status_ = "The server speaks another protocol version";
-        } else if (error->code == proto::code::kBadToken) {
-            seat_lost_ = seat_lost_ || resuming_;
-            resuming_ = false;
-            token_.clear();
-            phase_ = SessionPhase::Lobby;
-            request_.reset();
-            status_ = "Connected (your old seat is gone: the server no longer holds it)";
-        } else if (phase_ == SessionPhase::Joining && refuses_request(error->code)) {
-            phase_ = SessionPhase::Lobby;
-            request_.reset();
-            status_ = "Connected";
-        }
+        apply(core_.error(error->code));
         return true;
     }
     return true;

@@ -235,7 +235,7 @@ template <class F> bool step_until(BotRunner& runner, F done) {
 
 TEST_F(BotRunnerTest, LostConnectionInARoomResumesByItselfAndPlaysTheDueShotAgain) {
     BotConfig config;
-    config.reconnect = {2ms, 8ms, 5000ms};
+    config.reconnect = {0.002, 0.008, 5.0};
     start(config);
     std::vector<std::string> notices;
     runner_->on_notice = [&](const std::string& text) { notices.push_back(text); };
@@ -267,7 +267,7 @@ TEST_F(BotRunnerTest, LostConnectionInARoomResumesByItselfAndPlaysTheDueShotAgai
 
 TEST_F(BotRunnerTest, AGameThatEndedWhileAwayCountsOnResume) {
     BotConfig config;
-    config.reconnect = {1ms, 1ms, 5000ms};
+    config.reconnect = {0.001, 0.001, 5.0};
     start(config);
     const std::string token(32, 'f');
     deliver(proto::Welcome{1, 7, token, 0});
@@ -291,7 +291,7 @@ TEST_F(BotRunnerTest, AGameThatEndedWhileAwayCountsOnResume) {
 
 TEST_F(BotRunnerTest, GivesUpNamingTheSeatOnceTheResumeTimeIsOver) {
     BotConfig config;
-    config.reconnect = {2ms, 8ms, 60ms};
+    config.reconnect = {0.002, 0.008, 0.06};
     start(config);
     deliver(proto::Welcome{1, 7, std::string(32, 'f'), 0});
     deliver(room_for(match_, 1, proto::Phase::Aiming));
@@ -303,6 +303,18 @@ TEST_F(BotRunnerTest, GivesUpNamingTheSeatOnceTheResumeTimeIsOver) {
     EXPECT_NE(failure.find("; the last: Could not reach x:1: refused."), std::string::npos)
         << failure;
     EXPECT_GE(wire_.opened, 4);
+}
+
+TEST_F(BotRunnerTest, ASeatOpenedOnAnotherConnectionIsNotTakenBack) {
+    start(BotConfig{});
+    deliver(proto::Welcome{1, 7, std::string(32, 'f'), 0});
+    deliver(room_for(match_, 1, proto::Phase::Aiming));
+    wire_.status = {net::ConnectionState::Closed,
+                    "The server closed the connection (code 4002: replaced).", 4002};
+    runner_->step(0ms);
+    EXPECT_EQ(runner_->summary().failure,
+              "The server closed the connection (code 4002: replaced).");
+    EXPECT_EQ(wire_.opened, 1);
 }
 
 TEST_F(BotRunnerTest, NoResumeBeforeARoomOrWhenTurnedOff) {
@@ -329,7 +341,7 @@ TEST_F(BotRunnerTest, RefusedResumeIsAFailure) {
 
 TEST_F(BotRunnerTest, BadTokenAfterTheWelcomeEndsAnAutomaticResume) {
     BotConfig config;
-    config.reconnect = {1ms, 1ms, 5000ms};
+    config.reconnect = {0.001, 0.001, 5.0};
     start(config);
     const std::string token(32, 'f');
     deliver(proto::Welcome{1, 7, token, 0});

@@ -12,6 +12,7 @@ namespace {
 struct FakeWire {
     LinkState state = LinkState::Connecting;
     std::string detail;
+    int close_code = 0;
     std::vector<proto::ClientMessage> sent;
     std::deque<proto::ServerMessage> inbox;
 };
@@ -25,7 +26,7 @@ public:
         wire_.inbox.clear();
         return out;
     }
-    LinkStatus status() const override { return {wire_.state, wire_.detail}; }
+    LinkStatus status() const override { return {wire_.state, wire_.detail, wire_.close_code}; }
     void close() override {}
 
 private:
@@ -40,9 +41,21 @@ struct Harness {
                           },
                           "Ana"};
     FakeWire& wire() { return *wires.back(); }
+    // Asks to create a room, connects and is in the room (welcomed with kToken) by 0.2 s.
+    void into_room();
 };
 
 const std::string kToken = "0123456789abcdef0123456789abcdef";
+
+void Harness::into_room() {
+    session.request({RoomRequest::Kind::Create, "", proto::RuleSet::Icf, std::nullopt});
+    session.start(0.0);
+    wire().state = LinkState::Open;
+    session.update(0.1);
+    wire().inbox.push_back(proto::Welcome{1, 7, kToken, 1000});
+    wire().inbox.push_back(proto::RoomState{});
+    session.update(0.2);
+}
 
 template <class T> bool has_sent(const FakeWire& w) {
     return std::any_of(w.sent.begin(), w.sent.end(),
@@ -133,6 +146,7 @@ TEST(ClientSession, LobbyWaitsForAChoice) {
 
 TEST(ClientSession, GameInputOnlyInARoom) {
     Harness h;
+    h.session.request({RoomRequest::Kind::Join, "ABC234", proto::RuleSet::Icf, std::nullopt});
     h.session.start(0.0);
     EXPECT_FALSE(h.session.send_game(proto::Shoot{}));
     h.wire().state = LinkState::Open;
@@ -146,13 +160,7 @@ TEST(ClientSession, GameInputOnlyInARoom) {
 
 TEST(ClientSession, ADropReconnectsAndResumesWithTheToken) {
     Harness h;
-    h.session.request({RoomRequest::Kind::Create, "", proto::RuleSet::Icf, std::nullopt});
-    h.session.start(0.0);
-    h.wire().state = LinkState::Open;
-    h.session.update(0.1);
-    h.wire().inbox.push_back(proto::Welcome{1, 7, kToken, 1000});
-    h.wire().inbox.push_back(proto::RoomState{});
-    h.session.update(0.2);
+    h.into_room();
     ASSERT_EQ(h.session.phase(), SessionPhase::InRoom);
     h.wire().state = LinkState::Closed;
     h.wire().detail = "Connection reset by peer";
@@ -175,6 +183,40 @@ TEST(ClientSession, ADropReconnectsAndResumesWithTheToken) {
     h.wire().inbox.push_back(proto::RoomState{});
     h.session.update(1.9);
     EXPECT_EQ(h.session.phase(), SessionPhase::InRoom);
+}
+
+TEST(ClientSession, ASeatOpenedOnAnotherLinkIsNotTakenBack) {
+    Harness h;
+    h.into_room();
+    h.wire().state = LinkState::Closed;
+    h.wire().detail = "The server closed the connection (code 4002: replaced).";
+    h.wire().close_code = 4002;
+    h.session.update(0.3);
+    EXPECT_EQ(h.session.phase(), SessionPhase::Failed);
+    h.session.update(30.0);
+    EXPECT_EQ(h.wires.size(), 1u); // no new link
+}
+
+TEST(ClientSession, ARequestLostBeforeItsAnswerIsAskedAgainByANewPlayer) {
+    Harness h;
+    h.session.request({RoomRequest::Kind::Quick, "", proto::RuleSet::Icf, std::nullopt});
+    h.session.start(0.0);
+    h.wire().state = LinkState::Open;
+    h.session.update(0.1);
+    h.wire().inbox.push_back(proto::Welcome{1, 7, kToken, 1000});
+    h.session.update(0.2);
+    ASSERT_TRUE(has_sent<proto::QuickMatch>(h.wire()));
+    h.wire().state = LinkState::Closed; // still in the queue: no seat to resume
+    h.session.update(20.0);
+    h.session.update(20.5);
+    ASSERT_EQ(h.wires.size(), 2u);
+    h.wire().state = LinkState::Open;
+    h.session.update(20.6);
+    EXPECT_EQ(sent<proto::Hello>(h.wire()).resume_token, std::nullopt);
+    h.wire().inbox.push_back(proto::Welcome{1, 8, std::string(32, 'b'), 2000});
+    h.session.update(20.7);
+    EXPECT_TRUE(has_sent<proto::QuickMatch>(h.wire()));
+    EXPECT_EQ(h.session.phase(), SessionPhase::Joining);
 }
 
 TEST(ClientSession, LostLinkReasonReadsAsOneSentence) {
@@ -263,13 +305,7 @@ TEST(ClientSession, JitterDrawsEachDelayInItsUpperHalfAndReportsTheTries) {
 
 TEST(ClientSession, LostSeatGoesBackToTheLobby) {
     Harness h;
-    h.session.request({RoomRequest::Kind::Create, "", proto::RuleSet::Icf, std::nullopt});
-    h.session.start(0.0);
-    h.wire().state = LinkState::Open;
-    h.session.update(0.1);
-    h.wire().inbox.push_back(proto::Welcome{1, 7, kToken, 1000});
-    h.wire().inbox.push_back(proto::RoomState{});
-    h.session.update(0.2);
+    h.into_room();
     h.wire().state = LinkState::Closed;
     h.session.update(0.3);
     h.session.update(1.0);
@@ -284,13 +320,7 @@ TEST(ClientSession, LostSeatGoesBackToTheLobby) {
 
 TEST(ClientSession, LeavingTheRoomGoesBackToTheLobbyOnTheSameLink) {
     Harness h;
-    h.session.request({RoomRequest::Kind::Create, "", proto::RuleSet::Icf, std::nullopt});
-    h.session.start(0.0);
-    h.wire().state = LinkState::Open;
-    h.session.update(0.1);
-    h.wire().inbox.push_back(proto::Welcome{1, 7, kToken, 1000});
-    h.wire().inbox.push_back(proto::RoomState{});
-    h.session.update(0.2);
+    h.into_room();
     ASSERT_EQ(h.session.phase(), SessionPhase::InRoom);
     h.session.leave_room();
     EXPECT_TRUE(has_sent<proto::Leave>(h.wire()));

@@ -1,15 +1,21 @@
 // The connection's life (client/src/client_session.cpp): open a WebSocket, say hello, ask for a
 // room (create, join, spectate or quick match), ping for the round trip and the server clock,
-// and when the link drops open a new one and resume the seat with the token, backing off 0.5 s
-// doubling to 5 s and giving up after 130 s (the server's default idle timeout, after which it
-// notices a silent link, plus its grace, plus a margin). A link on which nothing (not even a pong
-// to the pings every 2 s) arrived for 10 s is taken for lost: a browser's WebSocket may wait
-// minutes before it notices a dead path by itself. The token and whether
-// we hold a seat are kept in sessionStorage, so a reload of the page resumes the seat too.
+// and when the link drops open a new one and resume the seat with the token. When to connect,
+// say hello or resume, ask, wait and give up is SessionCore's decision (session_core.js, the
+// port of net::SessionCore, checked against the same golden cases): back-off 0.5 s doubling to
+// 5 s, each delay drawn from [d/2, d], giving up after 130 s (the server's default idle timeout,
+// after which it notices a silent link, plus its grace, plus a margin); close 4001 and 4002 are
+// final. This class carries the decisions out on a Connection, with timers, and words them. A
+// link on which nothing (not even a pong to the pings every 2 s) arrived for 10 s is taken for
+// lost: a browser's WebSocket may wait minutes before it notices a dead path by itself. The
+// token and whether we hold a seat are kept in sessionStorage, so a reload of the page resumes
+// the seat too.
 //
-// Phases: idle, connecting, greeting, lobby, joining, in_room, reconnecting, failed.
+// Phases: idle (before start), then SessionCore's: connecting, greeting, lobby, joining, in_room,
+// reconnecting, failed.
 
 import * as proto from './protocol.js';
+import { SessionCore } from './session_core.js';
 
 export const SESSION_DEFAULTS = Object.freeze({
   pingInterval: 2.0,
@@ -19,13 +25,8 @@ export const SESSION_DEFAULTS = Object.freeze({
   silenceTimeout: 10.0,
 });
 
-// Errors that answer a room request with no: the player picks something else in the lobby.
-const REFUSALS = ['room_not_found', 'room_full', 'unsupported', 'too_many_rooms', 'bad_field',
-  'already_in_room'];
 // Messages that belong to a room.
 const ROOM_TRAFFIC = { room_state: true, snapshot: true, event: true, shot_result: true };
-// Close codes after which reconnecting cannot help.
-const FINAL_CLOSES = { 4001: true, 4002: true };
 
 const now = () => performance.now() / 1000;
 
@@ -36,31 +37,36 @@ function seconds(s) {
 export class Session {
   // url: the WebSocket URL. storage: a Storage (sessionStorage) or null. hooks:
   // onMessage(message, localS) for every message of the match, onChange() when phase or status
-  // change, onRefused(error) when a room request was refused.
+  // change, onRefused(error, request) when a room request was refused.
   constructor(url, storage, hooks, config = SESSION_DEFAULTS, ConnectionClass) {
     this.url = url;
     this.storage = storage;
     this.hooks = hooks;
     this.config = config;
     this.ConnectionClass = ConnectionClass;
-    this.phase = 'idle';
+    this.core = new SessionCore({ firstS: config.firstRetry, capS: config.maxRetry, giveUpAfterS: config.giveUpAfter });
+    this.core.token = storage?.getItem('carrom.token') ?? '';
+    this.started = false;
     this.status = '';
     this.name = '';
     this.link = null;
-    this.request = null; // the room request waiting to be sent
+    this.request = null; // the room request, until a room or a refusal answers it
     this.lastRequest = null;
-    this.token = storage?.getItem('carrom.token') ?? '';
-    this.resuming = false;
-    this.everWelcomed = false;
-    this.attempts = 0;
-    this.retryDelay = 0;
-    this.lostSince = 0;
+    this.lostReason = ''; // why the last link ended, a sentence
     this.retryTimer = null;
     this.pingTimer = null;
     this.nextNonce = 1;
     this.pings = new Map();
     this.rttMs = null;
     this.pongs = []; // {serverMs, sentS, receivedS}
+  }
+
+  get phase() {
+    return this.started ? this.core.phase : 'idle';
+  }
+
+  get token() {
+    return this.core.token;
   }
 
   // Whether this tab held a seat (or watched) before a reload.
@@ -74,8 +80,7 @@ export class Session {
     else this.storage.removeItem('carrom.room');
   }
 
-  setStatus(phase, status) {
-    this.phase = phase;
+  setStatus(status) {
     this.status = status;
     this.hooks.onChange?.();
   }
@@ -84,10 +89,62 @@ export class Session {
   start(name, resume = false) {
     this.stopLink();
     this.name = name;
-    this.resuming = resume && proto.isResumeToken(this.token);
-    this.attempts = 0;
-    this.everWelcomed = false;
-    this.openLink();
+    this.started = true;
+    this.apply(this.core.start(resume && proto.isResumeToken(this.core.token) ? this.core.token : ''));
+  }
+
+  // Carries out SessionCore's actions; `error`: the error message they answer, if any.
+  apply(actions, error = null) {
+    for (const a of actions) {
+      switch (a.kind) {
+        case 'connect':
+          this.openLink();
+          break;
+        case 'send_hello':
+        case 'send_resume':
+          this.link.send(proto.hello(this.name, a.kind === 'send_resume' ? this.core.token : undefined));
+          this.setStatus('Saying hello...');
+          clearInterval(this.pingTimer);
+          this.pingTimer = setInterval(() => this.ping(), this.config.pingInterval * 1000);
+          break;
+        case 'send_room_request':
+          this.sendRequest();
+          break;
+        case 'send_leave':
+          this.link?.send(proto.leave());
+          break;
+        case 'wait':
+          this.setStatus(`${this.lostReason} Retrying in ${seconds(a.waitS)} (attempt ${this.core.tries})`);
+          this.scheduleRetry();
+          break;
+        case 'resumed':
+          break;
+        case 'seat_lost':
+          this.request = null;
+          this.setHeldRoom('');
+          this.setStatus('Connected (your old seat is gone)');
+          break;
+        case 'refused':
+          this.request = null;
+          this.setStatus('Connected');
+          this.hooks.onRefused?.(error, this.lastRequest);
+          break;
+        case 'give_up':
+          this.stopLink();
+          if (a.reason === 'time_up') {
+            this.setStatus(`${this.lostReason} Gave up after ${seconds(now() - this.core.lostSinceS)}.`);
+          } else if (error?.code === 'version_mismatch') {
+            this.setStatus('The server speaks another protocol version');
+          } else if (error?.code === 'replaced') {
+            this.setStatus('This seat was opened in another tab or window.');
+          } else {
+            this.setStatus(this.lostReason);
+          }
+          break;
+        default:
+          break;
+      }
+    }
   }
 
   openLink() {
@@ -99,11 +156,23 @@ export class Session {
       onClose: (sentence, code) => this.onLinkLost(link, sentence, code),
     });
     this.link = link;
-    if (this.phase === 'reconnecting') {
-      this.setStatus('reconnecting', `Reconnecting (attempt ${this.attempts})...`);
+    if (this.core.phase === 'reconnecting') {
+      this.setStatus(`Reconnecting (attempt ${this.core.tries})...`);
     } else {
-      this.setStatus('connecting', 'Connecting...');
+      this.setStatus('Connecting...');
     }
+  }
+
+  // The next try once SessionCore's wait is over.
+  scheduleRetry() {
+    clearTimeout(this.retryTimer);
+    const left = Math.max(this.core.retryAtS - now(), 0);
+    this.retryTimer = setTimeout(() => {
+      this.retryTimer = null;
+      const actions = this.core.tick(now());
+      if (actions.length > 0) this.apply(actions);
+      else if (this.core.waiting) this.scheduleRetry(); // a timer that fired early
+    }, left * 1000);
   }
 
   stopLink() {
@@ -118,10 +187,7 @@ export class Session {
   onOpen(link) {
     if (link !== this.link) return;
     this.lastHeard = now();
-    link.send(proto.hello(this.name, this.resuming ? this.token : undefined));
-    this.setStatus('greeting', 'Saying hello...');
-    clearInterval(this.pingTimer);
-    this.pingTimer = setInterval(() => this.ping(), this.config.pingInterval * 1000);
+    this.apply(this.core.linkOpened());
   }
 
   ping() {
@@ -144,7 +210,7 @@ export class Session {
   // soon as the server has welcomed us (or at once if it has).
   ask(request) {
     this.request = request;
-    if (this.phase === 'lobby') this.sendRequest();
+    this.apply(this.core.request());
   }
 
   sendRequest() {
@@ -157,10 +223,9 @@ export class Session {
     else m = proto.quickMatch(r.ruleSet, r.seats ?? 2);
     this.link.send(m);
     this.lastRequest = r;
-    this.request = null;
     let status = 'Joining...';
     if (r.kind === 'quick') status = r.seats === 4 ? 'Waiting for three players...' : 'Waiting for an opponent...';
-    this.setStatus('joining', status);
+    this.setStatus(status);
   }
 
   // Game input (aim, shoot, rematch): sent only while in a room.
@@ -171,37 +236,31 @@ export class Session {
 
   // Leave the room (or the quick-match queue) and go back to the lobby.
   leaveRoom() {
-    if (this.link) this.link.send(proto.leave());
+    this.apply(this.core.leave());
     this.setHeldRoom('');
     this.request = null;
-    if (this.link && ['in_room', 'joining', 'lobby'].includes(this.phase)) {
-      this.setStatus('lobby', 'Connected');
-    }
+    if (this.link && this.phase === 'lobby') this.setStatus('Connected');
   }
 
   onMessage(link, m, localS) {
     if (link !== this.link) return;
     this.lastHeard = now();
     // In the lobby no room is ours: what a room we just left still sends is not shown.
-    if (this.phase === 'lobby' && ROOM_TRAFFIC[m.type]) return;
+    if (this.core.dropsRoomMessages() && ROOM_TRAFFIC[m.type]) return;
     switch (m.type) {
       case 'welcome':
-        this.token = m.resume_token;
         this.storage?.setItem('carrom.token', m.resume_token);
-        this.everWelcomed = true;
-        this.attempts = 0;
-        if (this.resuming) {
-          this.setStatus('joining', 'Resuming your seat...'); // the server sends the room back
-        } else {
-          this.setStatus('lobby', 'Connected');
-          if (this.request) this.sendRequest();
-        }
+        this.setStatus(this.core.resuming ? 'Resuming your seat...' : 'Connected'); // a resume: the room follows
+        this.apply(this.core.welcome(m.resume_token));
         break;
-      case 'room_state':
-        this.resuming = false;
+      case 'room_state': {
+        const joined = this.core.phase !== 'in_room';
+        this.apply(this.core.roomState());
+        this.request = null;
         this.setHeldRoom(m.code);
-        if (this.phase !== 'in_room') this.setStatus('in_room', 'Connected');
+        if (joined) this.setStatus('Connected');
         break;
+      }
       case 'pong': {
         const sent = this.pings.get(m.nonce);
         if (sent !== undefined) {
@@ -212,16 +271,7 @@ export class Session {
         return; // the session measures round trips
       }
       case 'error':
-        if (m.code === 'version_mismatch') {
-          this.setStatus('failed', 'The server speaks another protocol version');
-        } else if (m.code === 'bad_token') {
-          this.resuming = false;
-          this.setHeldRoom('');
-          this.setStatus('lobby', 'Connected (your old seat is gone)');
-        } else if (this.phase === 'joining' && REFUSALS.includes(m.code)) {
-          this.setStatus('lobby', 'Connected');
-          this.hooks.onRefused?.(m, this.lastRequest);
-        }
+        this.apply(this.core.error(m.code), m);
         break;
       default:
         break;
@@ -234,27 +284,9 @@ export class Session {
     clearInterval(this.pingTimer);
     this.pingTimer = null;
     this.link = null;
-    if (this.phase === 'failed' || this.phase === 'idle') return;
-    if (FINAL_CLOSES[code]) {
-      this.setStatus('failed', `${sentence}.`);
-      return;
-    }
-    const t = now();
-    if (this.attempts === 0) this.lostSince = t;
-    this.attempts += 1;
-    const reason = `${sentence}.`;
-    if (t - this.lostSince >= this.config.giveUpAfter) {
-      this.setStatus('failed', `${reason} Gave up after ${seconds(t - this.lostSince)}.`);
-      return;
-    }
-    this.retryDelay = this.attempts === 1 ? this.config.firstRetry
-      : Math.min(2 * this.retryDelay, this.config.maxRetry);
-    const held = ['in_room', 'joining'].includes(this.phase) || this.resuming;
-    this.resuming = proto.isResumeToken(this.token) && held;
-    if (!held && this.lastRequest && this.phase === 'joining') this.request = this.lastRequest;
-    this.phase = this.everWelcomed ? 'reconnecting' : 'connecting';
-    this.setStatus(this.phase, `${reason} Retrying in ${seconds(this.retryDelay)} (attempt ${this.attempts})`);
-    this.retryTimer = setTimeout(() => this.openLink(), this.retryDelay * 1000);
+    if (!this.started || this.core.phase === 'failed') return;
+    this.lostReason = `${sentence}.`;
+    this.apply(this.core.linkClosed(now(), code, Math.random()));
   }
 
   takePongs() {

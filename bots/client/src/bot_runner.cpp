@@ -5,6 +5,7 @@
 #include "carrom/rules/seat.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <thread>
 
 namespace carrom::bots {
@@ -17,48 +18,103 @@ bool is_game_input_error(const std::string& code) {
            code == proto::code::kInMotion || code == proto::code::kWrongPhase;
 }
 
-// Errors after which this bot cannot get where it was going.
-bool is_fatal_error(const std::string& code) {
-    return code == proto::code::kRoomNotFound || code == proto::code::kRoomFull ||
-           code == proto::code::kTooManyRooms || code == proto::code::kVersionMismatch ||
-           code == proto::code::kServerFull || code == proto::code::kAlreadyInRoom ||
-           code == proto::code::kUnsupported || code == proto::code::kReplaced ||
-           code == proto::code::kSpectator;
+// Seconds with one decimal, for sentences.
+std::string seconds_text(double s) {
+    const long tenths = std::lround(std::max(s, 0.0) * 10.0);
+    return std::to_string(tenths / 10) + "." + std::to_string(tenths % 10) + " s";
 }
 
-// Seconds with one decimal, for sentences.
-std::string seconds_text(std::chrono::milliseconds ms) {
-    const auto tenths = (ms.count() + 50) / 100;
-    return std::to_string(tenths / 10) + "." + std::to_string(tenths % 10) + " s";
+std::string said(const proto::Error& error) {
+    return "The server said " + error.code + ": " + error.message;
 }
 
 } // namespace
 
 BotRunner::BotRunner(BotConfig config, Strategy& strategy)
-    : config_(std::move(config)), strategy_(strategy), backoff_(config_.reconnect) {}
+    : config_(std::move(config)), strategy_(strategy),
+      core_(config_.reconnect,
+            config_.auto_resume ? net::ReconnectPolicy::SeatOnly : net::ReconnectPolicy::Never) {}
 
 BotRunner::~BotRunner() = default;
 
+double BotRunner::now_s() const {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - epoch_).count();
+}
+
 void BotRunner::start() {
+    apply(core_.request());
+    apply(core_.start(""));
+}
+
+void BotRunner::open_connection() {
     connection_ =
         connect ? connect(config_) : net::Connection::open(config_.url, config_.connection);
-    connection_->send(
-        proto::Hello{proto::kProtocolVersion, config_.name,
-                     token_.empty() ? std::nullopt : std::optional<std::string>(token_)});
+    // The connection queues what is sent before it opens: hello goes out at once.
+    apply(core_.link_opened());
+}
+
+void BotRunner::apply(const net::SessionActions& actions, const proto::Error* error) {
+    using Kind = net::SessionActionKind;
+    for (const net::SessionAction& action : actions) {
+        switch (action.kind) {
+        case Kind::Connect:
+            open_connection();
+            break;
+        case Kind::SendHello:
+            connection_->send(proto::Hello{proto::kProtocolVersion, config_.name, std::nullopt});
+            break;
+        case Kind::SendResume:
+            connection_->send(proto::Hello{proto::kProtocolVersion, config_.name, core_.token()});
+            break;
+        case Kind::SendRoomRequest:
+            send_room_request();
+            break;
+        case Kind::SendLeave:
+            connection_->send(proto::Leave{});
+            break;
+        case Kind::Wait:
+            if (core_.tries() == 1) {
+                notice("Connection lost: " + lost_reason_ + " Resuming " + seat_words() +
+                       " for up to " + seconds_text(config_.reconnect.give_up_after_s) + ".");
+            }
+            notice("Reconnecting (try " + std::to_string(core_.tries()) + ", in " +
+                   seconds_text(action.wait_s) + ").");
+            break;
+        case Kind::Resumed: // on_room_state() counts it
+            break;
+        case Kind::SeatLost:
+            fail(error ? "The server no longer holds " + seat_words() +
+                             " (bad_token: " + error->message + "); the match is lost."
+                       : std::string("The server did not give the seat back on resume."));
+            break;
+        case Kind::Refused:
+            fail(error ? said(*error) : lost_reason_);
+            break;
+        case Kind::GiveUp:
+            if (action.reason == net::GiveUpReason::TimeUp) {
+                fail("Gave up resuming " + seat_words() + " after " +
+                     seconds_text(now_s() - core_.lost_since_s()) + " and " +
+                     std::to_string(core_.tries()) + " tries; the last: " + lost_reason_);
+            } else {
+                fail(error ? said(*error) : lost_reason_);
+            }
+            break;
+        }
+    }
 }
 
 bool BotRunner::step(std::chrono::milliseconds wait) {
     if (!connection_ || done()) {
         return done();
     }
-    if (waiting_) {
-        const auto now = net::Backoff::Clock::now();
-        if (now < next_try_) {
-            std::this_thread::sleep_for(
-                std::min<net::Backoff::Clock::duration>(next_try_ - now, wait));
+    if (!core_.link_up()) { // waiting for the next try
+        const double left_s = core_.retry_at_s() - now_s();
+        if (left_s > 0.0) {
+            std::this_thread::sleep_for(std::min<std::chrono::duration<double>>(
+                std::chrono::duration<double>(left_s), wait));
             return done();
         }
-        try_resume();
+        apply(core_.tick(now_s()));
         return done();
     }
     connection_->wait(wait);
@@ -80,41 +136,9 @@ bool BotRunner::step(std::chrono::milliseconds wait) {
 }
 
 void BotRunner::connection_lost(const net::ConnectionStatus& status) {
-    const auto now = net::Backoff::Clock::now();
-    const bool in_room = !token_.empty() && room_.has_value();
-    if (!reconnecting_) {
-        if (!config_.auto_resume || !in_room) {
-            fail(status.detail);
-            return;
-        }
-        reconnecting_ = true;
-        backoff_.start(now);
-        notice("Connection lost: " + status.detail + " Resuming " + seat_words() + " for up to " +
-               seconds_text(config_.reconnect.give_up_after) + ".");
-    }
     lost_reason_ = status.detail;
-    resuming_ = false;
-    if (backoff_.expired(now)) {
-        fail("Gave up resuming " + seat_words() + " after " +
-             seconds_text(
-                 std::chrono::duration_cast<std::chrono::milliseconds>(now - backoff_.lost_at())) +
-             " and " + std::to_string(backoff_.tries()) + " tries; the last: " + lost_reason_);
-        return;
-    }
-    // The last try is made when the time is up, not after it.
-    const auto delay = std::min<net::Backoff::Clock::duration>(
-        backoff_.next_delay(), backoff_.lost_at() + config_.reconnect.give_up_after - now);
-    next_try_ = now + delay;
-    waiting_ = true;
-    notice("Reconnecting (try " + std::to_string(backoff_.tries()) + ", in " +
-           seconds_text(std::chrono::duration_cast<std::chrono::milliseconds>(delay)) + ").");
-}
-
-void BotRunner::try_resume() {
-    waiting_ = false;
-    resuming_ = true;
-    welcomed_ = false;
-    start();
+    apply(core_.link_closed(now_s(), status.close_code,
+                            std::uniform_real_distribution<double>(0.0, 1.0)(jitter_)));
 }
 
 std::string BotRunner::seat_words() const {
@@ -155,9 +179,7 @@ void BotRunner::drop() {
 
 void BotRunner::resume() {
     dropped_ = false;
-    resuming_ = true;
-    welcomed_ = false;
-    start();
+    apply(core_.start(core_.token()));
 }
 
 void BotRunner::fail(std::string why) {
@@ -180,17 +202,8 @@ void BotRunner::handle(const proto::ServerMessage& message) {
 }
 
 void BotRunner::on_welcome(const proto::Welcome& welcome) {
-    const bool same_token = welcome.resume_token == token_;
-    token_ = welcome.resume_token;
-    welcomed_ = true;
-    if (resuming_ && !same_token) {
-        fail("The server did not give the seat back on resume.");
-        return;
-    }
-    if (!resuming_) {
-        send_room_request();
-    }
-    // Resuming: the seat is back with the room's state, or gone with a bad_token error.
+    // Resuming: the seat comes back with the room's state, or is gone with a bad_token error.
+    apply(core_.welcome(welcome.resume_token));
 }
 
 void BotRunner::send_room_request() {
@@ -211,15 +224,18 @@ void BotRunner::send_room_request() {
 }
 
 void BotRunner::on_room_state(const proto::RoomState& room) {
-    const bool missed_game_end = resuming_ && room.phase == proto::Phase::GameOver && room_ &&
+    const int tries = core_.tries(); // 0 after resume(): no reconnect of its own
+    const net::SessionActions actions = core_.room_state();
+    const bool resumed = std::find_if(actions.begin(), actions.end(), [](const auto& a) {
+                             return a.kind == net::SessionActionKind::Resumed;
+                         }) != actions.end();
+    const bool missed_game_end = resumed && room.phase == proto::Phase::GameOver && room_ &&
                                  room_->phase != proto::Phase::GameOver;
-    if (resuming_) {
-        resuming_ = false;
+    if (resumed) {
         ++summary_.resumes;
-        if (reconnecting_) {
-            notice("Resumed " + seat_words() + " (try " + std::to_string(backoff_.tries()) + ").");
+        if (tries > 0) {
+            notice("Resumed " + seat_words() + " (try " + std::to_string(tries) + ").");
         }
-        reconnecting_ = false;
         last_played_turn_ = -1; // a shot sent into the lost connection is sent again if still due
         last_seq_ = -1;
         awaiting_keyframe_ = false;
@@ -274,13 +290,12 @@ void BotRunner::on_shot_result(const proto::ShotResult& result) {
 
 void BotRunner::on_error(const proto::Error& error) {
     ++summary_.errors[error.code];
-    if (error.code == proto::code::kBadToken && resuming_) {
-        fail("The server no longer holds " + seat_words() + " (bad_token: " + error.message +
-             "); the match is lost.");
+    apply(core_.error(error.code), &error);
+    if (done()) {
         return;
     }
-    if (is_fatal_error(error.code)) {
-        fail("The server said " + error.code + ": " + error.message);
+    if (error.code == proto::code::kSpectator) { // this bot cannot get where it was going
+        fail(said(error));
         return;
     }
     if (!is_game_input_error(error.code)) {
@@ -323,7 +338,7 @@ void BotRunner::on_game_end(const proto::GameEndEvent& end) {
         }
         return;
     }
-    connection_->send(proto::Leave{});
+    apply(core_.leave());
     summary_.finished = true;
     connection_->close();
 }

@@ -1,10 +1,14 @@
 #pragma once
 // The connection's life: open a link, say hello, ask for a room (create, join, spectate or quick
 // match), keep pinging for the round trip and the server clock, and when the link drops, open a
-// new one and resume the seat with the token, backing off between attempts. Game input goes out
-// only while in a room. Messages for the match are handed to the caller from update().
+// new one and resume the seat with the token, backing off between attempts. The decisions (when
+// to connect, hello or resume, request, wait, give up) are net::SessionCore's, with
+// ReconnectPolicy::Always (a person waits at the window); this class carries them out on a
+// MessageLink and words them. Game input goes out only while in a room. Messages for the match
+// are handed to the caller from update().
 
 #include "carrom/client/connection.hpp"
+#include "carrom/net/session_core.hpp"
 #include "carrom/proto/client_messages.hpp"
 #include "carrom/proto/server_messages.hpp"
 
@@ -33,22 +37,12 @@ struct RoomRequest {
 // only seat 1). Empty if it is fine, else one sentence naming the flag.
 std::string check_room_request(const RoomRequest& request);
 
-enum class SessionPhase {
-    Connecting,   // first link opening
-    Greeting,     // hello sent, waiting for welcome
-    Lobby,        // welcomed, no room asked for yet
-    Joining,      // room asked for, waiting for its state
-    InRoom,       // room state received
-    Reconnecting, // the link dropped; a new one will resume the seat
-    Failed,       // given up (version mismatch, or the server stayed away too long)
-};
+// Connecting, Greeting, Lobby, Joining, InRoom, Reconnecting, Failed (session_core.hpp).
+using SessionPhase = net::SessionPhase;
 
 struct SessionConfig {
     double ping_interval_s = 2.0;
-    double first_retry_s = 0.5; // reconnect back-off starts here and doubles
-    double max_retry_s = 5.0;
-    // How long to keep trying: the server's default grace period (60 s) plus a margin.
-    double give_up_after_s = 130.0;
+    net::BackoffSettings backoff; // 0.5 s doubling to 5 s; give up after 130 s
     // Each delay d drawn uniformly from [d/2, d] with this seed (so that many clients cut at
     // once do not come back at once); none: exactly d.
     std::optional<std::uint64_t> jitter_seed;
@@ -79,7 +73,7 @@ public:
     // Polls the link, answers the handshake, pings, reconnects; returns the messages for the match.
     std::vector<proto::ServerMessage> update(double local_s);
 
-    SessionPhase phase() const { return phase_; }
+    SessionPhase phase() const { return core_.phase(); }
     // What the connection is doing, in plain words ("Connected", "Reconnecting (attempt 2)...").
     const std::string& status_text() const { return status_; }
     // Phase Reconnecting (or Greeting on a resuming link): the tries and the last loss's reason.
@@ -87,7 +81,7 @@ public:
     // The seat was being resumed (bad_token): the server no longer holds it.
     bool seat_lost() const { return seat_lost_; }
     std::optional<double> rtt_ms() const { return rtt_ms_; }
-    const std::string& resume_token() const { return token_; }
+    const std::string& resume_token() const { return core_.token(); }
     std::int64_t player_id() const { return player_id_; }
     // A pong's server time with the local send and receive times, for the server clock.
     struct PongSample {
@@ -98,34 +92,28 @@ public:
     std::vector<PongSample> take_pongs();
 
 private:
+    void apply(const net::SessionActions& actions);
     void open_link(double local_s);
-    void on_link_lost(double local_s, const std::string& why);
+    void on_link_lost(double local_s, const std::string& why, int close_code);
     void send_request();
-    bool handle(const proto::ServerMessage& m, double local_s);
+    bool handle(const proto::ServerMessage& m);
 
     LinkFactory factory_;
     std::string name_;
     SessionConfig config_;
+    net::SessionCore core_;
     std::unique_ptr<MessageLink> link_;
-    SessionPhase phase_ = SessionPhase::Connecting;
+    bool hello_due_ = false; // the link is new: the core hears of it once it is open
     std::string status_ = "Not connected";
     std::optional<RoomRequest> request_;
-    bool request_sent_ = false;
-    bool left_room_ = false; // left a room, no new request sent yet: its messages are stale
-    bool resuming_ = false;
-    bool ever_welcomed_ = false;
-    std::string token_;
     std::int64_t player_id_ = -1;
     double next_ping_s_ = 0.0;
     std::int64_t next_nonce_ = 1;
     std::map<std::int64_t, double> pings_in_flight_;
     std::optional<double> rtt_ms_;
     std::vector<PongSample> pongs_;
-    double retry_delay_s_ = 0.0;
-    double retry_at_s_ = 0.0;
-    double lost_since_s_ = 0.0;
-    int attempts_ = 0;
     std::string lost_reason_;
+    double now_s_ = 0.0; // the last time given to start() or update()
     bool seat_lost_ = false;
     std::mt19937_64 jitter_;
 };

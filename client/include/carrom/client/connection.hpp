@@ -22,6 +22,8 @@ enum class LinkState {
 struct LinkStatus {
     LinkState state = LinkState::Connecting;
     std::string detail; // e.g. "Could not reach 10.0.0.5:7777: connection refused."
+    int close_code =
+        0; // the server's close frame's code once Closed by it (4002: replaced), else 0
 };
 
 class MessageLink {

@@ -4,18 +4,20 @@
 // then shoot with the turn number; at game end it asks for a rematch until it has played
 // `games` games, then leaves. After a drop, resume() reconnects with the seat's token.
 //
-// A connection that ends without the runner asking (network error, idle timeout, the server
-// restarting) once it holds a room is resumed by itself: it reconnects with net::Backoff and
-// sends hello{resume_token} until the seat is back or config.reconnect.give_up_after has passed
-// (then it fails, naming the seat). A bad_token answer ends it at once: the server no longer
-// holds the seat.
+// When to say hello, resume, reconnect and give up is net::SessionCore's decision, with
+// ReconnectPolicy::SeatOnly (or Never without auto_resume): a connection that ends without the
+// runner asking (network error, idle timeout, the server restarting) once it holds a room is
+// resumed by itself: it reconnects with back-off and sends hello{resume_token} until the seat is
+// back or config.reconnect.give_up_after_s has passed (then it fails, naming the seat). A
+// bad_token answer ends it at once: the server no longer holds the seat. A connection lost
+// before a room, a refused room request, version_mismatch and replaced end it too.
 //
 // Single-threaded: call step() (or run_until_done()) from one thread; the connection does the
 // I/O on its own thread.
 
 #include "carrom/bots/strategy.hpp"
-#include "carrom/net/backoff.hpp"
 #include "carrom/net/connection.hpp"
+#include "carrom/net/session_core.hpp"
 #include "carrom/proto/client_messages.hpp"
 #include "carrom/proto/server_messages.hpp"
 
@@ -24,6 +26,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -45,7 +48,7 @@ struct BotConfig {
     int max_refusals = 20; // refused shots in a row before giving up
     net::ConnectionOptions connection;
     bool auto_resume = true;        // resume by itself after a connection lost while in a room
-    net::BackoffSettings reconnect; // its delays and how long to keep trying
+    net::BackoffSettings reconnect; // its delays and how long to keep trying, in seconds
 };
 
 struct BotSummary {
@@ -108,7 +111,7 @@ public:
 
     const BotSummary& summary() const { return summary_; }
     const std::optional<proto::RoomState>& room() const { return room_; }
-    const std::string& resume_token() const { return token_; }
+    const std::string& resume_token() const { return core_.token(); }
     net::Connection* connection() { return connection_.get(); }
 
 private:
@@ -121,19 +124,22 @@ private:
     void on_error(const proto::Error& error);
     void on_game_end(const proto::GameEndEvent& end);
     void send_room_request();
+    // Carries out the session core's actions; `error`: the error they answer, if any.
+    void apply(const net::SessionActions& actions, const proto::Error* error = nullptr);
+    void open_connection();
+    double now_s() const; // seconds since the runner was made
     void maybe_play();
     void fail(std::string why);
     void connection_lost(const net::ConnectionStatus& status);
-    void try_resume();
     std::string seat_words() const;
     void notice(const std::string& text);
 
     BotConfig config_;
     Strategy& strategy_;
     std::unique_ptr<net::Connection> connection_;
-    std::string token_;
-    bool welcomed_ = false;
-    bool resuming_ = false;
+    net::SessionCore core_;
+    std::chrono::steady_clock::time_point epoch_ = std::chrono::steady_clock::now();
+    std::mt19937_64 jitter_{std::random_device{}()}; // draws each try's place in [d/2, d]
     bool dropped_ = false;
     std::optional<proto::RoomState> room_;
     int last_played_turn_ = -1; // turn number of the last shot sent in this game
@@ -141,10 +147,6 @@ private:
     std::int64_t last_seq_ = -1;
     bool awaiting_keyframe_ = false; // a gap was seen; the board is stale until a keyframe
     BotSummary summary_;
-    net::Backoff backoff_;
-    bool reconnecting_ = false; // lost while in a room; resuming by itself
-    bool waiting_ = false;      // reconnecting_, and the last try ended: next at next_try_
-    net::Backoff::Clock::time_point next_try_{};
     std::string lost_reason_; // why the last connection (or try) ended
 };
 

@@ -1,0 +1,212 @@
+#include "carrom/net/session_core.hpp"
+
+#include "carrom/proto/error.hpp"
+
+#include <algorithm>
+#include <array>
+
+namespace carrom::net {
+namespace {
+
+// Errors that answer a room request with no: the session goes back to the lobby.
+bool refuses_request(std::string_view code) {
+    namespace c = proto::code;
+    return code == c::kRoomNotFound || code == c::kRoomFull || code == c::kUnsupported ||
+           code == c::kTooManyRooms || code == c::kBadField || code == c::kAlreadyInRoom;
+}
+
+SessionAction act(SessionActionKind kind) {
+    return SessionAction{kind, 0.0, GiveUpReason::NoRetry};
+}
+
+} // namespace
+
+SessionCore::SessionCore(BackoffSettings backoff, ReconnectPolicy policy)
+    : backoff_(backoff), policy_(policy) {}
+
+SessionActions SessionCore::start(const std::string& resume_token) {
+    if (!resume_token.empty()) {
+        token_ = resume_token;
+    }
+    resuming_ = !resume_token.empty();
+    ever_welcomed_ = false;
+    waiting_ = false;
+    end_loss();
+    phase_ = SessionPhase::Connecting;
+    link_up_ = true;
+    return {act(SessionActionKind::Connect)};
+}
+
+SessionActions SessionCore::request() {
+    wants_room_ = true;
+    if (phase_ != SessionPhase::Lobby) {
+        return {}; // sent once welcomed
+    }
+    phase_ = SessionPhase::Joining;
+    return {act(SessionActionKind::SendRoomRequest)};
+}
+
+SessionActions SessionCore::leave() {
+    wants_room_ = false;
+    resuming_ = false; // a reconnect says hello as a new player, without the old seat
+    if (phase_ != SessionPhase::InRoom && phase_ != SessionPhase::Joining) {
+        return {};
+    }
+    phase_ = SessionPhase::Lobby;
+    return {act(SessionActionKind::SendLeave)};
+}
+
+SessionActions SessionCore::link_opened() {
+    if (!link_up_ || (phase_ != SessionPhase::Connecting && phase_ != SessionPhase::Reconnecting)) {
+        return {};
+    }
+    phase_ = SessionPhase::Greeting;
+    return {act(resuming_ ? SessionActionKind::SendResume : SessionActionKind::SendHello)};
+}
+
+SessionActions SessionCore::link_closed(double now_s, int close_code, double jitter) {
+    if (!link_up_ || phase_ == SessionPhase::Failed) {
+        return {};
+    }
+    link_up_ = false;
+    if (close_code == proto::kCloseVersionMismatch) {
+        return give_up(GiveUpReason::VersionMismatch);
+    }
+    if (close_code == proto::kCloseReplaced) {
+        return give_up(GiveUpReason::Replaced);
+    }
+    const bool holds_seat = phase_ == SessionPhase::InRoom || resuming_;
+    if (policy_ == ReconnectPolicy::Never ||
+        (policy_ == ReconnectPolicy::SeatOnly && !holds_seat)) {
+        return give_up(GiveUpReason::NoRetry);
+    }
+    if (tries_ == 0) {
+        lost_since_s_ = now_s;
+    }
+    if (now_s - lost_since_s_ >= backoff_.give_up_after_s) {
+        return give_up(GiveUpReason::TimeUp); // tries_: the tries made
+    }
+    ++tries_;
+    resuming_ = holds_seat && !token_.empty();
+    double nominal = backoff_.first_s;
+    for (int n = 1; n < tries_ && nominal < backoff_.cap_s; ++n) {
+        nominal *= 2.0;
+    }
+    nominal = std::min(nominal, backoff_.cap_s);
+    const double drawn = nominal * (0.5 + 0.5 * std::clamp(jitter, 0.0, 1.0));
+    const double wait_s = std::min(drawn, gives_up_at_s() - now_s);
+    retry_at_s_ = now_s + wait_s;
+    waiting_ = true;
+    phase_ = ever_welcomed_ ? SessionPhase::Reconnecting : SessionPhase::Connecting;
+    return {SessionAction{SessionActionKind::Wait, wait_s, GiveUpReason::NoRetry}};
+}
+
+SessionActions SessionCore::tick(double now_s) {
+    if (!waiting_ || now_s < retry_at_s_) {
+        return {};
+    }
+    waiting_ = false;
+    link_up_ = true;
+    return {act(SessionActionKind::Connect)};
+}
+
+SessionActions SessionCore::welcome(const std::string& token) {
+    if (phase_ == SessionPhase::Failed) {
+        return {};
+    }
+    ever_welcomed_ = true;
+    if (resuming_) {
+        if (token != token_) { // a new player: the seat is not ours any more
+            token_ = token;
+            return give_up_seat();
+        }
+        phase_ = SessionPhase::Joining; // the server sends the room back
+        return {};
+    }
+    token_ = token;
+    end_loss();
+    phase_ = SessionPhase::Lobby;
+    if (!wants_room_) {
+        return {};
+    }
+    phase_ = SessionPhase::Joining;
+    return {act(SessionActionKind::SendRoomRequest)};
+}
+
+SessionActions SessionCore::room_state() {
+    if (phase_ != SessionPhase::Joining && phase_ != SessionPhase::InRoom) {
+        return {}; // in the lobby: from a room we left; before a welcome: not ours
+    }
+    phase_ = SessionPhase::InRoom;
+    wants_room_ = false;
+    end_loss();
+    if (!resuming_) {
+        return {};
+    }
+    resuming_ = false;
+    return {act(SessionActionKind::Resumed)};
+}
+
+SessionActions SessionCore::error(std::string_view code) {
+    if (phase_ == SessionPhase::Failed) {
+        return {};
+    }
+    if (code == proto::code::kVersionMismatch) {
+        return give_up(GiveUpReason::VersionMismatch);
+    }
+    if (code == proto::code::kReplaced) {
+        return give_up(GiveUpReason::Replaced);
+    }
+    if (code == proto::code::kBadToken && resuming_) {
+        token_.clear();
+        return give_up_seat();
+    }
+    if (phase_ == SessionPhase::Joining && !resuming_ && refuses_request(code)) {
+        wants_room_ = false;
+        phase_ = SessionPhase::Lobby;
+        return {act(SessionActionKind::Refused)};
+    }
+    return {};
+}
+
+SessionActions SessionCore::give_up_seat() {
+    resuming_ = false;
+    wants_room_ = false;
+    end_loss();
+    phase_ = SessionPhase::Lobby;
+    return {act(SessionActionKind::SeatLost)};
+}
+
+SessionActions SessionCore::give_up(GiveUpReason reason) {
+    phase_ = SessionPhase::Failed;
+    link_up_ = false;
+    waiting_ = false;
+    resuming_ = false;
+    return {SessionAction{SessionActionKind::GiveUp, 0.0, reason}};
+}
+
+void SessionCore::end_loss() {
+    tries_ = 0;
+}
+
+// The names in the enumerators' order.
+std::string_view session_phase_name(SessionPhase phase) {
+    static constexpr std::array<std::string_view, 7> kNames{
+        "connecting", "greeting", "lobby", "joining", "in_room", "reconnecting", "failed"};
+    return kNames.at(static_cast<std::size_t>(phase));
+}
+
+std::string_view session_action_name(SessionActionKind kind) {
+    static constexpr std::array<std::string_view, 10> kNames{
+        "connect", "send_hello", "send_resume", "send_room_request", "send_leave",
+        "wait",    "resumed",    "seat_lost",   "refused",           "give_up"};
+    return kNames.at(static_cast<std::size_t>(kind));
+}
+
+std::string_view give_up_reason_name(GiveUpReason reason) {
+    static constexpr std::array<std::string_view, 4> kNames{"no_retry", "time_up",
+                                                            "version_mismatch", "replaced"};
+    return kNames.at(static_cast<std::size_t>(reason));
+}
+
+} // namespace carrom::net
