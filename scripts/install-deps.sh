@@ -10,6 +10,7 @@ packages=(
     libboost-dev nlohmann-json3-dev libsfml-dev
     libgtest-dev libgmock-dev googletest libbenchmark-dev
     libcli11-dev libspdlog-dev libsqlite3-dev libsqlitecpp-dev
+    libssl-dev ca-certificates openssl libnss3-tools
     xvfb xauth fonts-dejavu-core
     python3 python3-matplotlib
     iproute2 procps

@@ -89,7 +89,9 @@ int main(int argc, char** argv) {
 
     CLI::App app{"carrom-bot: a headless carrom player (prints a JSON summary at the end)"};
     app.option_defaults()->always_capture_default();
-    app.add_option("--url", config.url, "Server address, ws://HOST:PORT");
+    app.add_option("--url", config.url, "Server address, ws://HOST:PORT or wss://HOST:PORT");
+    app.add_option("--ca-file", config.connection.ca_file,
+                   "wss://: trust the certificate authorities in this PEM file too");
     app.add_option("--name", config.name, "Player name (1-24 bytes)");
     cli::add_room_request_flags(app, room_flags);
     app.add_option("--target-points", target_points, "--create: points to win (0 = default)")

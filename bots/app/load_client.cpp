@@ -4,6 +4,7 @@
 
 #include "carrom/bots/match_view.hpp"
 #include "carrom/proto/codec.hpp"
+#include "carrom/tls/client_tls.hpp"
 
 #include <boost/asio/post.hpp>
 #include <boost/asio/steady_timer.hpp>
@@ -74,6 +75,33 @@ private:
             beast::get_lowest_layer(ws_).close();
             return;
         }
+        if (options_.tls) {
+            if (!tls::start_client_tls(ws_.next_layer(), options_.tls,
+                                       options_.server.address().to_string(), verify_failure_)) {
+                return fail();
+            }
+            ws_.next_layer().tls().async_handshake(
+                asio::ssl::stream_base::client,
+                [self = shared_from_this()](beast::error_code e) { self->on_tls_handshake(e); });
+            return;
+        }
+        websocket_handshake();
+    }
+
+    void on_tls_handshake(beast::error_code ec) {
+        if (ec) {
+            if (stats_.tls_refusal.empty()) {
+                stats_.tls_refusal =
+                    tls::tls_handshake_error_text(options_.server.address().to_string() + ":" +
+                                                      std::to_string(options_.server.port()),
+                                                  ec, verify_failure_);
+            }
+            return fail();
+        }
+        websocket_handshake();
+    }
+
+    void websocket_handshake() {
         beast::get_lowest_layer(ws_).expires_never();
         ws_.set_option(websocket::stream_base::timeout::suggested(beast::role_type::client));
         ws_.read_message_max(proto::kMaxServerMessageBytes);
@@ -342,7 +370,8 @@ private:
     LoadStats& stats_;
     bool creator_;
     int generation_; // of the pair's slot
-    websocket::stream<beast::tcp_stream> ws_;
+    websocket::stream<tls::FlexStream<beast::tcp_stream>> ws_;
+    tls::VerifyFailure verify_failure_; // the certificate refused in the TLS handshake
     asio::steady_timer think_;
     std::mt19937_64 think_rng_; // the spread of think delays
     beast::flat_buffer buffer_;
@@ -378,6 +407,9 @@ LoadCounts& LoadCounts::operator+=(const LoadCounts& other) {
 
 LoadStats& LoadStats::operator+=(const LoadStats& other) {
     LoadCounts::operator+=(other);
+    if (tls_refusal.empty()) {
+        tls_refusal = other.tls_refusal;
+    }
     for (const auto& [code, count] : other.errors_by_code) {
         errors_by_code[code] += count;
     }

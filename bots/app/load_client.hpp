@@ -9,6 +9,7 @@
 
 #include <boost/asio/io_context.hpp>
 #include <boost/asio/ip/tcp.hpp>
+#include <boost/asio/ssl/context.hpp>
 
 #include <chrono>
 #include <cstdint>
@@ -40,6 +41,7 @@ struct LoadCounts {
 // What clients measure, summed over them (one thread: no locking).
 struct LoadStats : LoadCounts {
     std::map<std::string, std::int64_t> errors_by_code; // error messages received, by code
+    std::string tls_refusal; // the first refused TLS handshake's sentence (client_tls.hpp)
     // Per delta snapshot: receive time - the time the room's schedule had it due (due_ms), ms.
     std::vector<double> lag_ms;
     std::vector<std::int64_t> lag_due_ms; // due_ms of each lag_ms sample, for the timeline
@@ -55,6 +57,9 @@ struct LoadStats : LoadCounts {
 
 struct LoadOptions {
     boost::asio::ip::tcp::endpoint server;
+    // wss: TLS with this client context, the certificate checked for the server's IP address;
+    // null: plain ws.
+    std::shared_ptr<boost::asio::ssl::context> tls;
     proto::RuleSet rule_set = proto::RuleSet::Freestyle;
     std::chrono::milliseconds think{0}; // delay before each shot
     // Each delay is drawn uniformly from [think - think_spread, think + think_spread] (players

@@ -6,6 +6,7 @@
 #include "load_process.hpp"
 
 #include "carrom/proto/limits.hpp"
+#include "carrom/tls/client_tls.hpp"
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
@@ -153,6 +154,8 @@ int main(int argc, char** argv) {
     bool no_samples = false;
     std::string progress_out;
     double progress_s = 60.0;
+    bool tls = false;
+    std::string ca_file;
 
     CLI::App app{"carrom-load: N concurrent bot matches against a carrom-server on 127.0.0.1"};
     app.option_defaults()->always_capture_default();
@@ -194,6 +197,11 @@ int main(int argc, char** argv) {
                    "Append a JSON line of running totals here every --progress-s seconds");
     app.add_option("--progress-s", progress_s, "Seconds between progress lines")
         ->check(CLI::Range(1.0, 3600.0));
+    auto* tls_flag = app.add_flag("--tls", tls,
+                                  "Connect with wss (TLS; the server's certificate must be for "
+                                  "127.0.0.1 and trusted)");
+    app.add_option("--ca-file", ca_file, "--tls: trust the certificate authorities in this file")
+        ->needs(tls_flag);
     CLI11_PARSE(app, argc, argv);
     if (think_spread_ms > think_ms) {
         std::cerr << "--think-spread-ms must not exceed --think-ms.\n";
@@ -221,6 +229,14 @@ int main(int argc, char** argv) {
 
     load::LoadOptions options;
     options.server = {asio::ip::make_address("127.0.0.1"), server_port};
+    if (tls) {
+        auto context = tls::client_tls_context(ca_file);
+        if (auto* error = std::get_if<std::string>(&context)) {
+            std::cerr << *error << "\n";
+            return 2;
+        }
+        options.tls = std::get<0>(std::move(context));
+    }
     proto::parse(rule_set_name, options.rule_set);
     options.think = std::chrono::milliseconds(think_ms);
     options.think_spread = std::chrono::milliseconds(think_spread_ms);
@@ -359,6 +375,8 @@ int main(int argc, char** argv) {
         {"held_at_start", held_before},
         {"held_at_end", held},
         {"client_failures", measured.failures},
+        {"tls", tls},
+        {"tls_refusal", measured.tls_refusal},
         {"errors_received", measured.errors},
         {"messages_malformed", measured.malformed},
         {"shots", measured.shots},

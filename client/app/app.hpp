@@ -12,6 +12,7 @@ namespace carrom::client::app {
 
 struct AppOptions {
     std::string url = "ws://127.0.0.1:7777"; // carrom-server's default port
+    std::string ca_file; // wss://: a private CA trusted besides the system's (--ca-file)
     std::string name = "Player";
     std::optional<RoomRequest> request; // from the flags; else the lobby asks
     bool demo = false;                  // offline: a local stand-in server (DemoLink)

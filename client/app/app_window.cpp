@@ -32,7 +32,7 @@ AppWindow::AppWindow(const AppOptions& options, const sf::Font& font)
 
 LinkFactory AppWindow::make_factory() {
     if (!options_.demo) {
-        return make_network_link_factory(options_.url);
+        return make_network_link_factory(options_.url, options_.ca_file);
     }
     DemoConfig demo;
     demo.first_shot_at_s = options_.demo_break_at_s;

@@ -70,16 +70,20 @@ void AppWindow::draw_status_panel(const std::string& title, const std::string& d
     const float cx = f(b.x + b.w / 2.0);
     draw_text(window_, font_, title, static_cast<unsigned>(std::clamp(b.h * 0.05, 18.0, 44.0)), cx,
               f(b.y + b.h * 0.42), sf::Color(236, 184, 64), Align::Centre);
-    // One sentence per line, so long reasons stay inside the window.
+    // Each sentence from a new line, wrapped to the board's width, so long reasons (a refused
+    // TLS certificate's) stay inside the window.
     const auto size = static_cast<unsigned>(std::clamp(b.h * 0.024, 12.0, 22.0));
     std::size_t start = 0;
     double y = b.y + b.h * 0.52;
     while (start < detail.size()) {
         std::size_t end = detail.find(". ", start);
         end = end == std::string::npos ? detail.size() : end + 1;
-        draw_text(window_, font_, detail.substr(start, end - start), size, cx, f(y),
-                  sf::Color(242, 232, 214), Align::Centre);
-        y += size * 1.5;
+        for (const std::string& line :
+             wrap_text(hud_.texts(), detail.substr(start, end - start), size, b.w * 0.9)) {
+            draw_text(window_, font_, line, size, cx, f(y), sf::Color(242, 232, 214),
+                      Align::Centre);
+            y += size * 1.5;
+        }
         start = end < detail.size() ? end + 1 : end;
     }
 }

@@ -22,7 +22,10 @@ int main(int argc, char** argv) {
     carrom::client::app::AppOptions options;
     CLI::App cli{"carrom-client: play carrom against another player over the network"};
     bool bot = false;
-    cli.add_option("--url", options.url, "Server address, ws://HOST:PORT")->capture_default_str();
+    cli.add_option("--url", options.url, "Server address, ws://HOST:PORT or wss://HOST:PORT")
+        ->capture_default_str();
+    cli.add_option("--ca-file", options.ca_file,
+                   "wss://: trust the certificate authorities in this PEM file too");
     cli.add_option("--name", options.name, "Your name (1 to 24 bytes)")->capture_default_str();
     carrom::cli::RoomRequestFlags room_flags;
     const carrom::cli::RoomRequestOptions room_opts =

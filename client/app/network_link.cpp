@@ -14,7 +14,8 @@ namespace {
 // to decode are skipped there and only counted, which the status detail mentions.
 class NetworkLink final : public MessageLink {
 public:
-    explicit NetworkLink(const std::string& url) : connection_(net::Connection::open(url)) {}
+    NetworkLink(const std::string& url, const net::ConnectionOptions& options)
+        : connection_(net::Connection::open(url, options)) {}
     ~NetworkLink() override = default; // the connection closes and joins its thread
 
     NetworkLink(const NetworkLink&) = delete;
@@ -70,8 +71,10 @@ SessionConfig network_session_config() {
     return config;
 }
 
-LinkFactory make_network_link_factory(const std::string& url) {
-    return [url] { return std::make_unique<NetworkLink>(url); };
+LinkFactory make_network_link_factory(const std::string& url, const std::string& ca_file) {
+    net::ConnectionOptions options;
+    options.ca_file = ca_file;
+    return [url, options] { return std::make_unique<NetworkLink>(url, options); };
 }
 
 } // namespace carrom::client::app

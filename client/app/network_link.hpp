@@ -8,9 +8,11 @@
 
 namespace carrom::client::app {
 
-// url: ws://HOST:PORT[/path]. Returns an empty string if it looks right, else a sentence.
+// url: ws:// or wss://HOST:PORT[/path]. Returns an empty string if it looks right, else a
+// sentence.
 std::string check_url(const std::string& url);
-LinkFactory make_network_link_factory(const std::string& url);
+// ca_file: for wss://, certificate authorities trusted besides the system's ("" = none).
+LinkFactory make_network_link_factory(const std::string& url, const std::string& ca_file);
 // The session's settings for the window: the defaults, with jitter on the reconnect back-off.
 SessionConfig network_session_config();
 

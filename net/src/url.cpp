@@ -40,11 +40,13 @@ std::string WsUrl::authority() const {
 
 std::variant<WsUrl, std::string> parse_ws_url(std::string_view url) {
     constexpr std::string_view kScheme = "ws://";
+    constexpr std::string_view kTlsScheme = "wss://";
     const std::string bad = "The server address " + quoted_url(url);
-    if (url.substr(0, kScheme.size()) != kScheme) {
-        return bad + " must start with ws:// (for example ws://127.0.0.1:7777).";
+    const bool tls = url.substr(0, kTlsScheme.size()) == kTlsScheme;
+    if (!tls && url.substr(0, kScheme.size()) != kScheme) {
+        return bad + " must start with ws:// or wss:// (for example ws://127.0.0.1:7777).";
     }
-    std::string_view rest = url.substr(kScheme.size());
+    std::string_view rest = url.substr(tls ? kTlsScheme.size() : kScheme.size());
     if (rest.find('#') != std::string_view::npos) {
         return bad + " must not have a #fragment.";
     }
@@ -96,6 +98,7 @@ std::variant<WsUrl, std::string> parse_ws_url(std::string_view url) {
     }
     out.host = std::string(host);
     out.port = *port_number;
+    out.tls = tls;
     return out;
 }
 

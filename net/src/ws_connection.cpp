@@ -1,4 +1,6 @@
-// Connection over Boost.Beast: one io_context run by the connection's own I/O thread. Every
+// Connection over Boost.Beast: one io_context run by the connection's own I/O thread. A wss://
+// URL adds the TLS handshake (carrom/tls/client_tls.hpp: the certificate verified for the URL's
+// host) between the TCP connect and the WebSocket handshake, within the connect timeout. Every
 // socket operation happens on that thread; the public functions only post work to it or read
 // the shared inbox and status under a mutex.
 //
@@ -11,6 +13,8 @@
 #include "carrom/net/ws_url.hpp"
 #include "carrom/proto/codec.hpp"
 #include "ws_error_text.hpp"
+
+#include "carrom/tls/client_tls.hpp"
 
 #include <boost/asio/connect.hpp>
 #include <boost/asio/io_context.hpp>
@@ -40,8 +44,11 @@ constexpr std::chrono::milliseconds kCloseTimeout{2000};
 
 class WsConnection final : public Connection {
 public:
-    WsConnection(WsUrl url, const ConnectionOptions& options)
-        : url_(std::move(url)), options_(options), resolver_(ioc_), deadline_(ioc_), ws_(ioc_) {
+    // tls_context: for a wss:// url (null for ws://).
+    WsConnection(WsUrl url, const ConnectionOptions& options,
+                 std::shared_ptr<asio::ssl::context> tls_context)
+        : url_(std::move(url)), options_(options), tls_context_(std::move(tls_context)),
+          resolver_(ioc_), deadline_(ioc_), ws_(ioc_) {
         asio::post(ioc_, [this] { start(); });
         thread_ = std::thread([this] { ioc_.run(); });
     }
@@ -160,6 +167,32 @@ private:
         }
         beast::error_code ignored;
         beast::get_lowest_layer(ws_).socket().set_option(tcp::no_delay(true), ignored);
+        if (url_.tls) {
+            if (!tls::start_client_tls(ws_.next_layer(), tls_context_, url_.host,
+                                       verify_failure_)) {
+                fail("The host name '" + url_.host + "' cannot be checked against a certificate.");
+                return;
+            }
+            ws_.next_layer().tls().async_handshake(
+                asio::ssl::stream_base::client,
+                [this](beast::error_code e) { on_tls_handshake(e); });
+            return;
+        }
+        websocket_handshake();
+    }
+
+    void on_tls_handshake(beast::error_code ec) {
+        if (is_closed()) {
+            return;
+        }
+        if (ec) {
+            fail(tls::tls_handshake_error_text(url_.authority(), ec, verify_failure_));
+            return;
+        }
+        websocket_handshake();
+    }
+
+    void websocket_handshake() {
         ws_.read_message_max(proto::kMaxServerMessageBytes);
         ws_.set_option(websocket::stream_base::decorator([](websocket::request_type& request) {
             request.set(beast::http::field::user_agent, "carrom-net");
@@ -294,10 +327,12 @@ private:
 
     WsUrl url_;
     ConnectionOptions options_;
+    std::shared_ptr<asio::ssl::context> tls_context_;
     asio::io_context ioc_{1};
     tcp::resolver resolver_;
-    asio::steady_timer deadline_; // connect timeout
-    websocket::stream<beast::tcp_stream> ws_;
+    asio::steady_timer deadline_; // connect timeout (TCP, TLS and WebSocket handshakes)
+    websocket::stream<tls::FlexStream<beast::tcp_stream>> ws_;
+    tls::VerifyFailure verify_failure_; // the certificate refused in the TLS handshake
     beast::flat_buffer buffer_;
     // I/O thread only.
     std::deque<std::string> outbox_;
@@ -340,8 +375,17 @@ std::unique_ptr<Connection> Connection::open(const std::string& url,
     if (auto* error = std::get_if<std::string>(&parsed)) {
         return std::make_unique<ClosedConnection>(std::move(*error));
     }
+    std::shared_ptr<boost::asio::ssl::context> tls_context;
+    if (std::get<WsUrl>(parsed).tls) {
+        auto made = tls::client_tls_context(options.ca_file);
+        if (auto* error = std::get_if<std::string>(&made)) {
+            return std::make_unique<ClosedConnection>(std::move(*error));
+        }
+        tls_context = std::get<0>(std::move(made));
+    }
     try {
-        return std::make_unique<WsConnection>(std::get<WsUrl>(std::move(parsed)), options);
+        return std::make_unique<WsConnection>(std::get<WsUrl>(std::move(parsed)), options,
+                                              std::move(tls_context));
     } catch (const std::exception& e) { // thread or socket creation failed
         return std::make_unique<ClosedConnection>(
             "Could not start a connection: " + std::string(e.what()) + ".");

@@ -92,6 +92,18 @@ int main(int argc, char** argv) {
                    "Match API and /metrics request burst allowance per client address")
         ->envname("CARROM_HTTP_BURST")
         ->check(CLI::Range(1.0, 100000.0));
+    auto* tls_cert = app.add_option("--tls-cert", s.tls_cert,
+                                    "TLS certificate chain, PEM (https and wss on the port, "
+                                    "beside plain http and ws; re-read on SIGHUP)")
+                         ->envname("CARROM_TLS_CERT");
+    app.add_option("--tls-key", s.tls_key, "TLS private key of --tls-cert, PEM (unencrypted)")
+        ->envname("CARROM_TLS_KEY")
+        ->needs(tls_cert);
+    tls_cert->needs("--tls-key");
+    app.add_option("--tls-handshake-timeout", s.tls_handshake_timeout_s,
+                   "Seconds for a new connection's first bytes and TLS handshake")
+        ->envname("CARROM_TLS_HANDSHAKE_TIMEOUT")
+        ->check(CLI::Range(0.05, 600.0));
     app.add_option("--bot-seed", bot_seed, "Seed of the first server-side bot's random choices")
         ->envname("CARROM_BOT_SEED");
     app.add_option("--bot-think-ms", bot_think_ms,
@@ -125,6 +137,10 @@ int main(int argc, char** argv) {
         ->check(CLI::IsMember({"trace", "debug", "info", "warn", "error", "off"}));
     CLI11_PARSE(app, argc, argv);
     (void)carrom::proto::parse(quick_bot_level, s.quick_match_bot_level);
+    if (const std::string problem = carrom::server::tls_files_problem(s); !problem.empty()) {
+        std::fprintf(stderr, "carrom-server: bad_tls_files: %s\n", problem.c_str());
+        return 2;
+    }
 
     // Logs go to stderr: stdout carries only the "listening on" line that scripts read.
     spdlog::set_default_logger(std::make_shared<spdlog::logger>(
@@ -172,14 +188,24 @@ int main(int argc, char** argv) {
                                           : carrom::server::make_strategy_bot_factory(
                                                 bot_seed, std::chrono::milliseconds(bot_think_ms)),
                                       web, store);
-        const auto port = server.listen();
+        std::uint16_t port = 0;
+        try {
+            port = server.listen();
+        } catch (const carrom::server::TlsFileError& e) {
+            std::fprintf(stderr, "carrom-server: bad_tls_files: %s\n", e.what());
+            return 2;
+        }
         std::printf("listening on %s:%u\n", s.host.c_str(), static_cast<unsigned>(port));
         std::fflush(stdout);
         spdlog::info("carrom-server on {}:{} ({} threads, {} Hz snapshots{})", s.host, port,
                      s.threads, s.snapshot_hz,
                      s.contact_snapshots ? " plus one per change of motion" : "");
+        if (!s.tls_cert.empty()) {
+            spdlog::info("TLS: https and wss on port {} (plain http and ws too)", port);
+        }
         if (web) {
-            spdlog::info("web client at http://{}:{}/ ({}: {} files, {} bytes)", s.host, port,
+            spdlog::info("web client at http{}://{}:{}/ ({}: {} files, {} bytes)",
+                         s.tls_cert.empty() ? "" : "s", s.host, port,
                          web_root.empty() ? "embedded" : web_root, web->file_count(),
                          web->total_bytes());
         } else {

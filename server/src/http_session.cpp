@@ -2,6 +2,7 @@
 
 #include "match_api.hpp"
 #include "server_core.hpp"
+#include "tls_context.hpp"
 #include "ws_session.hpp"
 
 #include <boost/asio/buffer.hpp>
@@ -38,8 +39,9 @@ std::string_view refusal_sentence(http::status status) {
 
 } // namespace
 
-HttpSession::HttpSession(ServerCore& core, tcp::socket socket)
-    : core_(core), stream_(std::move(socket)) {}
+HttpSession::HttpSession(ServerCore& core, ServerStream stream, beast::flat_buffer buffer)
+    : core_(core), stream_(std::move(stream)), buffer_(std::move(buffer)),
+      deadline_(stream_.get_executor()) {}
 
 void HttpSession::run() {
     read_request();
@@ -49,7 +51,7 @@ void HttpSession::read_request() {
     parser_.emplace();
     parser_->header_limit(kHeaderLimit);
     parser_->body_limit(kBodyLimit);
-    stream_.expires_after(to_duration(core_.settings.handshake_timeout_s));
+    expire_after(to_duration(core_.settings.handshake_timeout_s));
     http::async_read(stream_, buffer_, *parser_,
                      beast::bind_front_handler(&HttpSession::on_read, shared_from_this()));
 }
@@ -80,6 +82,7 @@ void HttpSession::on_read(beast::error_code ec, std::size_t) {
     }
     auto request = parser_->release();
     if (beast::websocket::is_upgrade(request)) {
+        deadline_.cancel(); // the WebSocket handshake has its own
         std::make_shared<WsSession>(core_, std::move(stream_))->run(std::move(request));
         return;
     }
@@ -113,7 +116,7 @@ void HttpSession::respond(const Request& request) {
             return;
         } else if (target == "/healthz") {
             // 200 "ok", 200 "degraded: ..." while match store writes fail (matches go on in
-            // memory), 503 "stopping" during shutdown.
+            // memory), 503 "stopping" during shutdown; with TLS, a second line "tls: {...}".
             std::optional<store::StoreHealth> health;
             if (core_.store) {
                 health = core_.store->health();
@@ -126,6 +129,9 @@ void HttpSession::respond(const Request& request) {
                                    std::to_string(health->pending) + " items waiting)\n";
             } else {
                 response->body() = "ok\n";
+            }
+            if (core_.tls && !core_.stopping) { // the certificate in use, the last reload
+                response->body() += "tls: " + core_.tls->health_json() + "\n";
             }
         } else {
             response->result(http::status::ok);
@@ -146,7 +152,7 @@ void HttpSession::respond(const Request& request) {
 
 bool HttpSession::refuse_over_rate(unsigned version, bool head) {
     beast::error_code ec;
-    const auto remote = stream_.socket().remote_endpoint(ec);
+    const auto remote = stream_.next_layer().remote_endpoint(ec);
     const std::string address = ec ? std::string() : remote.address().to_string();
     const int retry_s = core_.http_limiter.take(address, core_.clock.now_ms());
     if (retry_s == 0) {
@@ -171,12 +177,12 @@ void HttpSession::answer_api(unsigned version, std::string_view target) {
         send(api_response(version, answer_match_api(nullptr, target)), false);
         return;
     }
+    deadline_.cancel(); // the read may take longer; the write gets a fresh deadline
     const bool queued = core_.match_reader->submit(
         std::string(target), [self = shared_from_this(), executor = stream_.get_executor(),
                               version](MatchApiAnswer answer) {
             asio::post(executor, [self, version, answer = std::move(answer)] {
-                // The read may have outlasted the request's timeout: a fresh one for the write.
-                self->stream_.expires_after(to_duration(self->core_.settings.handshake_timeout_s));
+                self->expire_after(to_duration(self->core_.settings.handshake_timeout_s));
                 self->send(self->api_response(version, answer), false);
             });
         });
@@ -259,10 +265,30 @@ void HttpSession::write(std::shared_ptr<Response> response, bool keep_alive) {
 }
 
 void HttpSession::close() {
+    expire_after(kLinger);
+    if (stream_.is_tls()) { // close_notify; the client's answer to it ends the connection
+        stream_.tls().async_shutdown([self = shared_from_this()](beast::error_code) {
+            beast::error_code ignored;
+            self->stream_.next_layer().close(ignored);
+        });
+        return;
+    }
     beast::error_code ignored;
-    stream_.socket().shutdown(tcp::socket::shutdown_send, ignored);
-    stream_.expires_after(kLinger);
+    stream_.next_layer().shutdown(tcp::socket::shutdown_send, ignored);
     drain();
+}
+
+void HttpSession::expire_after(std::chrono::milliseconds timeout) {
+    deadline_.expires_after(timeout);
+    deadline_.async_wait([weak = weak_from_this()](beast::error_code ec) {
+        if (ec) {
+            return; // re-armed, cancelled or the session ended
+        }
+        if (auto self = weak.lock()) {
+            beast::error_code ignored;
+            self->stream_.next_layer().close(ignored);
+        }
+    });
 }
 
 void HttpSession::drain() {

@@ -1,17 +1,18 @@
 #pragma once
-// Private to server/src: one plain HTTP connection. Reads a request; hands a WebSocket upgrade
-// (any target) to a new WsSession; answers GET /healthz, GET /metrics and the match API (405 for
-// another method); answers every other target from the web client's StaticSite when the server
-// has one (404 when it has none). A request that cannot be read gets its status (400, 413, 414,
-// 431). The match API's reads run on the MatchApiReader's thread (match_api_reader.hpp), never
+// Private to server/src: one HTTP connection, plain or over TLS. Reads a request; hands a WebSocket
+// upgrade (any target) to a new WsSession; answers GET /healthz, GET /metrics and the match API
+// (405 for another method); answers every other target from the web client's StaticSite when the
+// server has one (404 when it has none). A request that cannot be read gets its status (400, 413,
+// 414, 431). The match API's reads run on the MatchApiReader's thread (match_api_reader.hpp), never
 // here; the match API and /metrics are limited per client address (429 rate_limited).
 // A 200 or 304 of the site keeps the connection open for the next request when the client asks
 // for it; every other answer closes it (lingering: the rest of the request is read and dropped
 // for a moment, so the client reads the answer before the connection ends).
 
-#include "asio_types.hpp"
 #include "match_api.hpp"
+#include "server_stream.hpp"
 
+#include <boost/asio/steady_timer.hpp>
 #include <boost/beast/core/flat_buffer.hpp>
 
 #include <array>
@@ -25,7 +26,8 @@ struct ServerCore;
 
 class HttpSession : public std::enable_shared_from_this<HttpSession> {
 public:
-    HttpSession(ServerCore& core, tcp::socket socket);
+    // buffer: bytes of the first request read already (TLS detection).
+    HttpSession(ServerCore& core, ServerStream stream, beast::flat_buffer buffer = {});
 
     void run();
 
@@ -53,10 +55,13 @@ private:
     void write(std::shared_ptr<Response> response, bool keep_alive);
     void close();
     void drain();
+    // The socket is closed when the deadline passes (pending operations end with an error).
+    void expire_after(std::chrono::milliseconds timeout);
 
     ServerCore& core_;
-    beast::tcp_stream stream_;
+    ServerStream stream_;
     beast::flat_buffer buffer_;
+    asio::steady_timer deadline_;
     std::optional<http::request_parser<http::string_body>> parser_;
     std::array<char, 1024> drained_{};
 };

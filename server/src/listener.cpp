@@ -2,6 +2,7 @@
 
 #include "http_session.hpp"
 #include "server_core.hpp"
+#include "tls_detect_session.hpp"
 
 #include <boost/asio/post.hpp>
 #include <boost/asio/strand.hpp>
@@ -37,7 +38,7 @@ void Listener::do_accept() {
                            beast::bind_front_handler(&Listener::on_accept, shared_from_this()));
 }
 
-void Listener::on_accept(beast::error_code ec, tcp::socket socket) {
+void Listener::on_accept(beast::error_code ec, WsSocket socket) {
     if (ec == asio::error::operation_aborted || !acceptor_.is_open()) {
         return;
     }
@@ -45,7 +46,11 @@ void Listener::on_accept(beast::error_code ec, tcp::socket socket) {
         // Snapshots are small and time-critical: send each at once, without Nagle's delay.
         beast::error_code ignored;
         socket.set_option(tcp::no_delay(true), ignored);
-        std::make_shared<HttpSession>(core_, std::move(socket))->run();
+        if (core_.tls) {
+            std::make_shared<TlsDetectSession>(core_, std::move(socket))->run();
+        } else {
+            std::make_shared<HttpSession>(core_, ServerStream(std::move(socket)))->run();
+        }
     }
     do_accept();
 }

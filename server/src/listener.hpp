@@ -1,8 +1,8 @@
 #pragma once
-// Private to server/src: accepts TCP connections on the server's address and gives each to an
-// HttpSession on its own strand.
+// Private to server/src: accepts TCP connections on the server's address and gives each, on its
+// own strand, to an HttpSession (plain only) or to a TlsDetectSession (a server with TLS).
 
-#include "asio_types.hpp"
+#include "server_stream.hpp"
 
 #include <cstdint>
 #include <memory>
@@ -22,7 +22,7 @@ public:
 
 private:
     void do_accept();
-    void on_accept(beast::error_code ec, tcp::socket socket);
+    void on_accept(beast::error_code ec, WsSocket socket);
 
     ServerCore& core_;
     tcp::acceptor acceptor_;

@@ -50,6 +50,10 @@ std::string Metrics::prometheus_text() const {
            http_requests_total);
     metric(out, "carrom_http_rate_limited_total", "counter",
            "HTTP requests refused with 429 (per-address rate limit).", http_rate_limited_total);
+    metric(out, "carrom_tls_handshakes_total", "counter", "Completed TLS handshakes.",
+           tls_handshakes_total);
+    metric(out, "carrom_tls_handshake_failures_total", "counter",
+           "TLS handshakes that failed or timed out.", tls_handshake_failures_total);
     out << "# HELP carrom_snapshot_lag_seconds Snapshot send time minus its scheduled time.\n"
         << "# TYPE carrom_snapshot_lag_seconds histogram\n";
     for (std::size_t i = 0; i < kLagBucketsMs.size(); ++i) {

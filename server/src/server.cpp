@@ -4,6 +4,7 @@
 #include "listener.hpp"
 #include "room_actor.hpp"
 #include "server_core.hpp"
+#include "tls_context.hpp"
 #include "ws_session.hpp"
 
 #include <boost/asio/executor_work_guard.hpp>
@@ -12,6 +13,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <functional>
 #include <optional>
 #include <stdexcept>
 #include <thread>
@@ -42,6 +44,13 @@ Server::~Server() {
 
 std::uint16_t Server::listen() {
     auto& core = impl_->core;
+    if (!core.settings.tls_cert.empty() || !core.settings.tls_key.empty()) {
+        auto loaded = TlsContext::load(core.settings.tls_cert, core.settings.tls_key);
+        if (auto* error = std::get_if<std::string>(&loaded)) {
+            throw TlsFileError(*error);
+        }
+        core.tls = std::get<std::shared_ptr<TlsContext>>(std::move(loaded));
+    }
     try {
         const auto address = asio::ip::make_address(core.settings.host);
         impl_->listener =
@@ -131,12 +140,46 @@ void Server::shutdown() {
     }
 }
 
+std::string tls_files_problem(const ServerSettings& settings) {
+    if (settings.tls_cert.empty() && settings.tls_key.empty()) {
+        return {};
+    }
+    auto loaded = TlsContext::load(settings.tls_cert, settings.tls_key);
+    auto* error = std::get_if<std::string>(&loaded);
+    return error != nullptr ? *error : std::string();
+}
+
+bool Server::reload_tls(std::string& result) {
+    if (!impl_->core.tls) {
+        result = "no TLS certificate to reload (no --tls-cert)";
+        return false;
+    }
+    const auto reloaded = impl_->core.tls->reload();
+    result = reloaded.text;
+    return reloaded.ok;
+}
+
 void Server::run_until_signal() {
     asio::io_context signal_ioc;
-    asio::signal_set signals(signal_ioc, SIGINT, SIGTERM);
-    signals.async_wait([](const boost::system::error_code&, int signal) {
-        spdlog::info("signal {}: shutting down", signal);
-    });
+    asio::signal_set signals(signal_ioc, SIGINT, SIGTERM, SIGHUP);
+    std::function<void(const boost::system::error_code&, int)> on_signal =
+        [&](const boost::system::error_code& ec, int signal) {
+            if (ec) {
+                return;
+            }
+            if (signal != SIGHUP) {
+                spdlog::info("signal {}: shutting down", signal);
+                return; // signal_ioc.run() returns
+            }
+            std::string result;
+            if (reload_tls(result)) {
+                spdlog::info("SIGHUP: {}", result);
+            } else {
+                spdlog::warn("SIGHUP: {}", result);
+            }
+            signals.async_wait(on_signal);
+        };
+    signals.async_wait(on_signal);
     signal_ioc.run();
     shutdown();
 }

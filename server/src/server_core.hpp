@@ -29,6 +29,7 @@
 namespace carrom::server {
 
 class RoomActor;
+class TlsContext;
 class WsSession;
 
 using SessionRegistry = Registry<RoomActor, std::weak_ptr<WsSession>>;
@@ -60,6 +61,8 @@ struct ServerCore {
     // it is stopped (Server::shutdown) and destroyed before ioc: its answers post to sessions.
     std::unique_ptr<MatchApiReader> match_reader;
     AddressRateLimiter http_limiter;
+    // The TLS certificate and key; null = plain connections only (Server::listen loads it).
+    std::shared_ptr<TlsContext> tls;
 
     // Live WebSocket sessions (for shutdown).
     std::mutex sessions_mutex;

@@ -33,29 +33,12 @@ std::size_t hard_frame_limit(std::size_t max_message_bytes) {
 // frame 4003 before its socket is closed.
 constexpr std::chrono::milliseconds kSlowKillAfter{1000};
 
-// The HTTP session's connection on a new strand of the I/O context. A socket that cannot be
-// moved (closed by the peer in the meantime) becomes a closed one: the handshake then fails.
-WsSocket adopt(asio::io_context& ioc, beast::tcp_stream stream) {
-    tcp::socket socket = stream.release_socket();
-    WsSocket adopted(asio::make_strand(ioc));
-    beast::error_code ec;
-    const tcp::endpoint local = socket.local_endpoint(ec);
-    if (ec) {
-        return adopted;
-    }
-    const auto handle = socket.release(ec);
-    if (!ec) {
-        adopted.assign(local.protocol(), handle, ec);
-    }
-    return adopted;
-}
-
 } // namespace
 
 // --- WsSession --------------------------------------------------------------------------------
 
-WsSession::WsSession(ServerCore& core, beast::tcp_stream stream)
-    : core_(core), ws_(adopt(core.ioc, std::move(stream))), hello_timer_(ws_.get_executor()),
+WsSession::WsSession(ServerCore& core, ServerStream stream)
+    : core_(core), ws_(std::move(stream)), hello_timer_(ws_.get_executor()),
       idle_timer_(ws_.get_executor()), kill_timer_(ws_.get_executor()),
       quick_timer_(ws_.get_executor()),
       queue_(core.settings.max_queue_bytes, core.settings.snapshot_backlog),
@@ -104,7 +87,7 @@ void WsSession::on_accept(beast::error_code ec) {
         return;
     }
     beast::error_code endpoint_ec;
-    const auto remote = ws_.next_layer().remote_endpoint(endpoint_ec);
+    const auto remote = ws_.next_layer().next_layer().remote_endpoint(endpoint_ec);
     address_ = endpoint_ec ? std::string() : remote.address().to_string();
     if (!core_.add_address(address_)) {
         core_.metrics.rejected_connections_total.fetch_add(1, std::memory_order_relaxed);
@@ -290,7 +273,7 @@ void WsSession::begin_close(int close_code, std::string reason,
     kill_timer_.async_wait([self = shared_from_this()](beast::error_code ec) {
         if (!ec && !self->ended_) {
             beast::error_code ignored;
-            self->ws_.next_layer().close(ignored);
+            beast::get_lowest_layer(self->ws_).close(ignored);
         }
     });
     do_write();
@@ -315,7 +298,7 @@ void WsSession::do_write() {
         reason.reason = close_reason_;
         ws_.async_close(reason, [self = shared_from_this()](beast::error_code) {
             beast::error_code ignored;
-            self->ws_.next_layer().close(ignored);
+            beast::get_lowest_layer(self->ws_).close(ignored);
         });
     }
 }
@@ -324,7 +307,7 @@ void WsSession::on_write(beast::error_code ec, std::size_t bytes) {
     queue_.finish_write();
     if (ec) {
         beast::error_code ignored;
-        ws_.next_layer().close(ignored);
+        beast::get_lowest_layer(ws_).close(ignored);
         return;
     }
     core_.metrics.messages_out_total.fetch_add(1, std::memory_order_relaxed);

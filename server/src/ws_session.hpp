@@ -6,7 +6,7 @@
 // ws_session.cpp: the connection (accept, read, dispatch, write queue, keep-alive, end);
 // ws_session_lobby.cpp: hello, create, join, quick match, entering a room.
 
-#include "asio_types.hpp"
+#include "server_stream.hpp"
 
 #include "carrom/proto/client_messages.hpp"
 #include "carrom/proto/error.hpp"
@@ -14,7 +14,6 @@
 #include "carrom/server/rate_limiter.hpp"
 #include "carrom/server/write_queue.hpp"
 
-#include <boost/asio/basic_stream_socket.hpp>
 #include <boost/asio/steady_timer.hpp>
 #include <boost/asio/strand.hpp>
 #include <boost/beast/core/flat_buffer.hpp>
@@ -34,19 +33,12 @@ namespace carrom::server {
 class RoomActor;
 struct ServerCore;
 
-// The session's socket, with its strand as a concrete executor type: every read, write and post
-// goes to the strand directly. Beast's tcp_stream carries a type-erased executor, which costs a
-// heap allocation and reference counting for each asynchronous operation (the profile of the
-// server under load showed them among its largest costs).
-using WsStrand = asio::strand<asio::io_context::executor_type>;
-using WsSocket = asio::basic_stream_socket<tcp, WsStrand>;
-
 // A close that does not finish within this is cut off (the socket is closed).
 inline constexpr std::chrono::milliseconds kCloseDeadline{3000};
 
 class WsSession final : public room::Peer, public std::enable_shared_from_this<WsSession> {
 public:
-    WsSession(ServerCore& core, beast::tcp_stream stream);
+    WsSession(ServerCore& core, ServerStream stream);
     ~WsSession() override;
 
     void run(http::request<http::string_body> request);
@@ -102,7 +94,7 @@ private:
     void end();
 
     ServerCore& core_;
-    beast::websocket::stream<WsSocket> ws_;
+    beast::websocket::stream<ServerStream> ws_;
     beast::flat_buffer buffer_;
     asio::steady_timer hello_timer_;
     asio::steady_timer idle_timer_;

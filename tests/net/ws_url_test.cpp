@@ -23,6 +23,18 @@ TEST(WsUrl, HostPortAndDefaultTarget) {
     EXPECT_EQ(url.port, 7777);
     EXPECT_EQ(url.target, "/");
     EXPECT_EQ(url.authority(), "127.0.0.1:7777");
+    EXPECT_FALSE(url.tls);
+}
+
+TEST(WsUrl, WssIsTls) {
+    const WsUrl url = parsed("wss://play.example.org:443/carrom");
+    EXPECT_TRUE(url.tls);
+    EXPECT_EQ(url.host, "play.example.org");
+    EXPECT_EQ(url.port, 443);
+    EXPECT_EQ(url.target, "/carrom");
+    EXPECT_TRUE(parsed("wss://[::1]:7777").tls);
+    EXPECT_EQ(error_of("wss://h"),
+              "The server address 'wss://h' needs a port, as in ws://127.0.0.1:7777.");
 }
 
 TEST(WsUrl, PathAndQueryAreKept) {
@@ -49,7 +61,7 @@ TEST(WsUrl, PortBounds) {
 
 TEST(WsUrl, ErrorsSayWhatIsWrong) {
     EXPECT_EQ(error_of("http://h:80"),
-              "The server address 'http://h:80' must start with ws:// (for example "
+              "The server address 'http://h:80' must start with ws:// or wss:// (for example "
               "ws://127.0.0.1:7777).");
     EXPECT_EQ(error_of("ws://h"),
               "The server address 'ws://h' needs a port, as in ws://127.0.0.1:7777.");
@@ -59,7 +71,7 @@ TEST(WsUrl, ErrorsSayWhatIsWrong) {
     EXPECT_NE(error_of("ws://h:80/#x").find("fragment"), std::string::npos);
     EXPECT_NE(error_of("ws://h:80/a b").find("path"), std::string::npos);
     EXPECT_NE(error_of("").find("must start with ws://"), std::string::npos);
-    EXPECT_NE(error_of("wss://h:443").find("must start with ws://"), std::string::npos);
+    EXPECT_NE(error_of("ws:/h:443").find("must start with ws://"), std::string::npos);
 }
 
 TEST(WsUrl, ControlCharactersAreNotEchoed) {

@@ -28,6 +28,7 @@ public:
     ChildProcess& operator=(const ChildProcess&) = delete;
 
     bool started() const { return pid_ > 0; }
+    pid_t pid() const { return pid_; } // for signals of the test's own (SIGHUP)
     // The next line on `stream` that starts with `prefix` (lines before it are kept in
     // lines(stream)); nothing if the deadline passes or the stream ends first.
     std::optional<std::string> wait_line(Stream stream, const std::string& prefix,

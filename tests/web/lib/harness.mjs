@@ -110,7 +110,9 @@ export function pageUrl(web, server, hash = '') {
   return `http://127.0.0.1:${web.port}/index.html?ws=${encodeURIComponent(server.ws)}${hash}`;
 }
 
-export async function launchBrowser(extraArgs = []) {
+// `browserEnv` replaces the browser's environment (default: this process's); a test gives
+// Chromium a HOME of its own to trust a test CA through NSS's database there.
+export async function launchBrowser(extraArgs = [], browserEnv = undefined) {
   // Imported here so that a missing `npm ci` is one clear sentence.
   let chromium;
   try {
@@ -119,7 +121,7 @@ export async function launchBrowser(extraArgs = []) {
     throw new Error('playwright-core is missing: run `npm ci` in tests/web (scripts/install-deps.sh does)');
   }
   // launch() gives every run a fresh temporary profile (user-data-dir) and removes it after.
-  return chromium.launch({ executablePath: env.chromium, headless: true, args: [...CHROMIUM_ARGS, ...extraArgs] });
+  return chromium.launch({ executablePath: env.chromium, headless: true, args: [...CHROMIUM_ARGS, ...extraArgs], env: browserEnv });
 }
 
 // Runs a test body with a deadline; stops every child and the browser, prints the outcome and

@@ -36,12 +36,15 @@ struct ConnectionOptions {
     // sentence saying so. Zero: wait forever.
     std::chrono::milliseconds silence_timeout{10000};
     std::size_t max_queued_sends = 256; // sends beyond this while the socket is slow are dropped
+    // wss://: a PEM file of certificate authorities trusted besides the system's (a private CA);
+    // empty: the system's only. The server's certificate is always verified.
+    std::string ca_file;
 };
 
 class Connection {
 public:
-    // Starts connecting to url (ws://HOST:PORT[/path]) at once; never throws. A malformed url
-    // gives a connection that is Closed with the reason in detail.
+    // Starts connecting to url (ws:// or wss://HOST:PORT[/path]) at once; never throws. A malformed
+    // url gives a connection that is Closed with the reason in detail.
     static std::unique_ptr<Connection> open(const std::string& url,
                                             const ConnectionOptions& options = {});
     virtual ~Connection() = default; // closes and joins the I/O thread

@@ -24,7 +24,9 @@ struct Metrics : room::RoomCounters {
     std::atomic<std::int64_t> cues_dropped_total{0};      // collision and aim cues dropped
     std::atomic<std::int64_t> slow_client_disconnects_total{0};
     std::atomic<std::int64_t> http_requests_total{0};
-    std::atomic<std::int64_t> http_rate_limited_total{0}; // 429 answers
+    std::atomic<std::int64_t> http_rate_limited_total{0};      // 429 answers
+    std::atomic<std::int64_t> tls_handshakes_total{0};         // completed (https, wss)
+    std::atomic<std::int64_t> tls_handshake_failures_total{0}; // refused, broken or timed out
 
     std::string prometheus_text() const;
 };

@@ -11,8 +11,20 @@
 
 #include <cstdint>
 #include <memory>
+#include <stdexcept>
+#include <string>
 
 namespace carrom::server {
+
+// settings.tls_cert and tls_key cannot be used; what() is the sentence (docs/server.md, "TLS").
+struct TlsFileError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+// Why settings.tls_cert and tls_key cannot be used (Server::listen would throw TlsFileError with
+// it); empty when they can, or when no TLS is asked for. For a check at start, before anything
+// else is logged.
+std::string tls_files_problem(const ServerSettings& settings);
 
 class Server {
 public:
@@ -27,15 +39,19 @@ public:
     Server(const Server&) = delete;
     Server& operator=(const Server&) = delete;
 
-    // Binds and listens; returns the bound port (the ephemeral one for port 0). Throws
+    // Loads the TLS certificate and key when settings name them (TlsFileError when they cannot
+    // be used), binds and listens; returns the bound port (the ephemeral one for port 0). Throws
     // std::runtime_error when the address cannot be bound.
     std::uint16_t listen();
+    // Reads the TLS certificate and key again (SIGHUP); on failure the previous ones stay. The
+    // sentence for the log; false on failure or without TLS.
+    bool reload_tls(std::string& result);
     // Runs the I/O threads in the background (settings.threads of them).
     void start();
     // Graceful stop: stop accepting, send "shutting_down" and close every connection (1012 "restarting");
     // returns once all connections closed or shutdown_grace_s passed, and the threads ended.
     void shutdown();
-    // Blocks until SIGINT or SIGTERM, then shutdown().
+    // Blocks until SIGINT or SIGTERM, then shutdown(). SIGHUP meanwhile: reload_tls().
     void run_until_signal();
 
     const Metrics& metrics() const;
