@@ -1,5 +1,7 @@
 #include "carrom/bots/skill.hpp"
 
+#include "carrom/enum_names.hpp"
+
 #include <algorithm>
 #include <numbers>
 
@@ -23,28 +25,21 @@ ExecutionNoise noise_of(SkillLevel level) {
     return {};
 }
 
+namespace {
+constexpr enum_names::Table<SkillLevel, 4> kSkillLevelNames{{
+    {SkillLevel::Perfect, "perfect"},
+    {SkillLevel::Hard, "hard"},
+    {SkillLevel::Medium, "medium"},
+    {SkillLevel::Easy, "easy"},
+}};
+} // namespace
+
 std::string_view to_string(SkillLevel level) {
-    switch (level) {
-    case SkillLevel::Perfect:
-        return "perfect";
-    case SkillLevel::Hard:
-        return "hard";
-    case SkillLevel::Medium:
-        return "medium";
-    case SkillLevel::Easy:
-        return "easy";
-    }
-    return "perfect";
+    return enum_names::name_of(kSkillLevelNames, level).value_or("perfect");
 }
 
 std::optional<SkillLevel> parse_skill_level(std::string_view text) {
-    for (const SkillLevel level :
-         {SkillLevel::Perfect, SkillLevel::Hard, SkillLevel::Medium, SkillLevel::Easy}) {
-        if (text == to_string(level)) {
-            return level;
-        }
-    }
-    return std::nullopt;
+    return enum_names::parse(kSkillLevelNames, text);
 }
 
 Shot execute_with_noise(const Shot& intended, const ExecutionNoise& noise, double max_power,

@@ -1,5 +1,7 @@
 #include "carrom/net/session_core.hpp"
 
+#include "carrom/enum_names.hpp"
+
 #include "carrom/proto/error.hpp"
 
 #include <algorithm>
@@ -189,24 +191,48 @@ void SessionCore::end_loss() {
     tries_ = 0;
 }
 
-// The names in the enumerators' order.
+namespace {
+constexpr enum_names::Table<SessionPhase, 7> kSessionPhaseNames{{
+    {SessionPhase::Connecting, "connecting"},
+    {SessionPhase::Greeting, "greeting"},
+    {SessionPhase::Lobby, "lobby"},
+    {SessionPhase::Joining, "joining"},
+    {SessionPhase::InRoom, "in_room"},
+    {SessionPhase::Reconnecting, "reconnecting"},
+    {SessionPhase::Failed, "failed"},
+}};
+
+constexpr enum_names::Table<SessionActionKind, 10> kSessionActionNames{{
+    {SessionActionKind::Connect, "connect"},
+    {SessionActionKind::SendHello, "send_hello"},
+    {SessionActionKind::SendResume, "send_resume"},
+    {SessionActionKind::SendRoomRequest, "send_room_request"},
+    {SessionActionKind::SendLeave, "send_leave"},
+    {SessionActionKind::Wait, "wait"},
+    {SessionActionKind::Resumed, "resumed"},
+    {SessionActionKind::SeatLost, "seat_lost"},
+    {SessionActionKind::Refused, "refused"},
+    {SessionActionKind::GiveUp, "give_up"},
+}};
+
+constexpr enum_names::Table<GiveUpReason, 4> kGiveUpReasonNames{{
+    {GiveUpReason::NoRetry, "no_retry"},
+    {GiveUpReason::TimeUp, "time_up"},
+    {GiveUpReason::VersionMismatch, "version_mismatch"},
+    {GiveUpReason::Replaced, "replaced"},
+}};
+} // namespace
+
 std::string_view session_phase_name(SessionPhase phase) {
-    static constexpr std::array<std::string_view, 7> kNames{
-        "connecting", "greeting", "lobby", "joining", "in_room", "reconnecting", "failed"};
-    return kNames.at(static_cast<std::size_t>(phase));
+    return enum_names::name_or_unknown(kSessionPhaseNames, phase);
 }
 
 std::string_view session_action_name(SessionActionKind kind) {
-    static constexpr std::array<std::string_view, 10> kNames{
-        "connect", "send_hello", "send_resume", "send_room_request", "send_leave",
-        "wait",    "resumed",    "seat_lost",   "refused",           "give_up"};
-    return kNames.at(static_cast<std::size_t>(kind));
+    return enum_names::name_or_unknown(kSessionActionNames, kind);
 }
 
 std::string_view give_up_reason_name(GiveUpReason reason) {
-    static constexpr std::array<std::string_view, 4> kNames{"no_retry", "time_up",
-                                                            "version_mismatch", "replaced"};
-    return kNames.at(static_cast<std::size_t>(reason));
+    return enum_names::name_or_unknown(kGiveUpReasonNames, reason);
 }
 
 } // namespace carrom::net
