@@ -1,4 +1,4 @@
-// Connections that never finish a TLS handshake harm nothing (docs/server.md, "TLS"): with
+// Connections that never finish a TLS handshake harm nothing (docs/tls.md): with
 // --tls-handshake-timeout 0.5 and --max-connections-per-address 8, TCP connections from
 // 127.0.0.2 that send nothing or stop in the middle of a ClientHello hold at most 8 sockets,
 // are closed by the server when the timeout passes, and a flood of them is closed at once beyond

@@ -1,4 +1,4 @@
-// Matches over wss (docs/server.md, "TLS"): two carrom-bot programs play a whole match through
+// Matches over wss (docs/tls.md): two carrom-bot programs play a whole match through
 // carrom-server with a certificate from the test CA while the certificate is replaced and
 // SIGHUP sent (the match goes on untouched; new connections get the new certificate), then
 // broken and SIGHUP sent (the previous one stays; /healthz says why). Then a restart of the

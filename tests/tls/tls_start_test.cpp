@@ -1,5 +1,5 @@
 // carrom-server refuses certificate and key files it cannot use at start: one line on stderr
-// naming the file and why, exit status 2 (docs/server.md, "TLS").
+// naming the file and why, exit status 2 (docs/tls.md).
 #include "tls_test_support.hpp"
 
 #include "support/command_run.hpp"

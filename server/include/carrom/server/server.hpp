@@ -16,7 +16,7 @@
 
 namespace carrom::server {
 
-// settings.tls_cert and tls_key cannot be used; what() is the sentence (docs/server.md, "TLS").
+// settings.tls_cert and tls_key cannot be used; what() is the sentence (docs/tls.md).
 struct TlsFileError : std::runtime_error {
     using std::runtime_error::runtime_error;
 };

@@ -37,7 +37,7 @@ struct ServerSettings {
     double http_burst = 20.0;               // bucket size
     std::size_t http_rate_addresses = 4096; // addresses tracked at once
     // TLS (https, wss) on the same port as plain http and ws, when both files are given (PEM;
-    // docs/server.md, "TLS"). Empty: plain only.
+    // docs/tls.md). Empty: plain only.
     std::string tls_cert;
     std::string tls_key;
     double tls_handshake_timeout_s = 5.0; // the first bytes and the whole TLS handshake
