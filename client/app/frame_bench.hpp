@@ -1,6 +1,6 @@
 #pragma once
 // --bench-frames N: the times of N frames drawn after a warm-up of 10, and their statistics as
-// one JSON line on stdout (docs/client.md "Frame time"); then the run ends (exit code 0).
+// one JSON line on stdout (docs/client-frames.md "Frame time"); then the run ends (exit code 0).
 
 #include "unattended_mode.hpp"
 

@@ -2,7 +2,7 @@
 // carrom-client --frame-log FILE: one JSON object per line for each frame drawn in a room and
 // each shot sent, stamped with the monotonic clock (CLOCK_MONOTONIC, ms), the clock of
 // carrom-bot --trace, so that scripts/network_report.py lines the client's screen up with a
-// bot's shots and the server's exact trajectory (carrom-sim --frame-error). docs/client.md,
+// bot's shots and the server's exact trajectory (carrom-sim --frame-error). docs/client-frames.md,
 // "Frame log".
 
 #include "carrom/client/client_session.hpp"

@@ -1,5 +1,5 @@
 #pragma once
-// Private to server/src: the HTTP API of the match store (docs/protocol.md, "Match API"):
+// Private to server/src: the HTTP API of the match store (docs/matches.md, "Match API"):
 // GET /matches/ID (a journal as JSON) and GET /matches?player=NAME&limit=N (a player's recent
 // matches). Boost-free: the HTTP session hands it the request target and writes its answer.
 // Reads block on the store (SQLite: a read on its reader connection): carrom-server calls it on

@@ -1,6 +1,6 @@
 #pragma once
 // `carrom-sim --frame-error FRAMES JOURNAL`: what a client drew against the exact trajectory.
-// Replays the match journal (docs/protocol.md, "Match journals") with the exact engine and reads
+// Replays the match journal (docs/matches.md, "Match journals") with the exact engine and reads
 // the client's frame log (carrom-client --frame-log, docs/client.md); for each stroke it prints
 // the error of the drawn positions at the frames' shot times (RMS, max), the frames that jumped
 // or froze, and whether the board drawn at rest after the stroke is the server's final board

@@ -7,7 +7,7 @@
 //
 // One journal holds one game. A rematch starts a new journal (its MatchCreated names the previous
 // one in rematch_of) and closes the old one with a RematchEntry naming the new one. Plain data;
-// the JSON form is in journal_json.hpp and docs/protocol.md, "Match journals".
+// the JSON form is in journal_json.hpp and docs/matches.md, "Match journals".
 
 #include "carrom/config.hpp"
 #include "carrom/enum_names.hpp"

@@ -1,5 +1,5 @@
 #pragma once
-// JSON for match journals (journal.hpp); docs/protocol.md, "Match journals", describes it:
+// JSON for match journals (journal.hpp); docs/matches.md, "Match journals", describes it:
 //   {"format": 1, "match": <created>, "entries": [<entry>, ...]}
 // Doubles are written in their shortest round-trip form, so shots and configs decode to the same
 // bits and a decoded journal replays exactly. 64-bit hashes are 16 lowercase hex digits (JSON
