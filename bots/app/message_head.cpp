@@ -138,12 +138,14 @@ private:
         if (const auto error = value.type().get(type)) {
             return error;
         }
+        const bool nests =
+            type == ondemand::json_type::array || type == ondemand::json_type::object;
+        if (nests && depth > kMaxDepth) {
+            return simdjson::DEPTH_ERROR;
+        }
         switch (type) {
         case ondemand::json_type::array: {
             ondemand::array array;
-            if (depth > kMaxDepth) {
-                return simdjson::DEPTH_ERROR;
-            }
             if (const auto error = value.get_array().get(array)) {
                 return error;
             }
@@ -158,22 +160,17 @@ private:
         }
         case ondemand::json_type::object: {
             ondemand::object object;
-            if (depth > kMaxDepth) {
-                return simdjson::DEPTH_ERROR;
-            }
-            if (const auto error = value.get_object().get(object)) {
-                return error;
-            }
-            for (auto field_result : object) {
+            auto error = value.get_object().get(object);
+            for (auto field_result = object.begin(); !error && field_result != object.end();
+                 ++field_result) {
                 ondemand::field field;
-                std::string_view key;
-                auto error = std::move(field_result).get(field);
-                if (error || (error = field.unescaped_key().get(key)) ||
-                    (error = check_value(field.value(), depth + 1))) {
-                    return error;
+                std::string_view key; // unescaped to check its escapes
+                if (!(error = std::move(*field_result).get(field)) &&
+                    !(error = field.unescaped_key().get(key))) {
+                    error = check_value(field.value(), depth + 1);
                 }
             }
-            return simdjson::SUCCESS;
+            return error;
         }
         case ondemand::json_type::number:
             return value.get_number().error();
