@@ -7,7 +7,7 @@ cd "$(dirname "$0")/.."
 
 packages=(
     build-essential cmake ninja-build pkg-config
-    libboost-dev nlohmann-json3-dev libsfml-dev
+    libboost-dev nlohmann-json3-dev libsimdjson-dev libsfml-dev
     libgtest-dev libgmock-dev googletest libbenchmark-dev
     libcli11-dev libspdlog-dev libsqlite3-dev libsqlitecpp-dev
     libssl-dev ca-certificates openssl libnss3-tools

@@ -1,10 +1,9 @@
 #pragma once
 // What carrom-load reads of a server message before it decides what to do with it: the top-level
 // "type", an event's "kind", and of a snapshot the fields its lag figures need
-// (docs/server-load.md, "What is measured"). One pass over the text checks the JSON grammar and
-// converts only those values: any key order and any whitespace read the same. (nlohmann::json's
-// SAX parser converts every number of a delta's bodies, about five times the cost of this pass;
-// a delta is most of what the load tool receives.)
+// (docs/server-load.md, "What is measured"), read with simdjson's On-Demand parser: any key order
+// and any whitespace read the same. (Not nlohmann::json, proto's reader: its parsers cost the load
+// tool 7-20 % more CPU per message; a delta is most of what it receives.)
 
 #include "carrom/proto/codec.hpp"
 
@@ -34,8 +33,10 @@ struct MessageHead {
 // Reads a server message's text up to the point where its head is known: "type", then an event's
 // "kind", a keyframe's "keyframe" (carrom-load reads nothing else of a keyframe); a delta is read
 // whole. What follows the head is not read: carrom-load decodes the messages it acts on whole with
-// proto::decode_server. Errors carry proto's codes: malformed_json (not JSON, a NUL byte, text
-// after the object), not_object, missing_type (no string "type"), bad_field (an event without a
+// proto::decode_server. Every value read up to the head is checked whole, so text that breaks the
+// JSON grammar there is refused. Errors carry proto's codes: malformed_json (not JSON, a NUL
+// byte, text after the object; simdjson's sentence, and the byte where simdjson stands when it
+// names one), not_object, missing_type (no string "type"), bad_field (an event without a
 // string "kind"; a snapshot without a boolean "keyframe"; a delta without a number "t", or with a
 // "due_ms" that is not an integer).
 proto::DecodedMessage<MessageHead> read_message_head(std::string_view text);
