@@ -12,7 +12,7 @@
 namespace carrom::proto {
 namespace {
 
-using test::expect_table;
+using carrom::test::expect_table;
 
 // The wire enums' to_string and parse overloads, as callables.
 constexpr auto kToString = [](auto value) { return to_string(value); };

@@ -14,13 +14,13 @@ namespace {
 using Json = nlohmann::json;
 
 // Decodes text and returns the error ({"", "", ""} when it decoded).
-Error error_of(std::string_view text) {
+Error scene_error_of(std::string_view text) {
     auto decoded = decode_scene_text(text);
     return decoded.ok() ? Error{} : *decoded.error;
 }
 
 void expect_error(std::string_view text, std::string_view code, std::string_view path) {
-    const Error e = error_of(text);
+    const Error e = scene_error_of(text);
     EXPECT_EQ(e.code, code) << text << "\n" << e.message;
     EXPECT_EQ(e.path, path) << text << "\n" << e.message;
     EXPECT_FALSE(e.message.empty()) << text;
@@ -56,13 +56,13 @@ TEST(SceneJsonText, NulByteIsMalformed) {
     expect_error("{\"layout\": \"standard\"}\0 garbage"s, "malformed_json", "");
     expect_error("{\"layout\": \"standard\"}\0"s, "malformed_json", "");
     expect_error("{\"layout\": \"stan\0dard\"}"s, "malformed_json", "");
-    const Error e = error_of("{\"layout\": \"standard\"}\0 x"s);
+    const Error e = scene_error_of("{\"layout\": \"standard\"}\0 x"s);
     EXPECT_NE(e.message.find("offset 22"), std::string::npos) << e.message;
 }
 
 TEST(SceneJsonText, InvalidUtf8IsMalformedAndTheMessageStaysPrintable) {
     for (std::string_view text : {"\xff", "{\"a\xff\": 1}", "{\"layout\": \"\xc3\"}"}) {
-        const Error e = error_of(text);
+        const Error e = scene_error_of(text);
         EXPECT_EQ(e.code, "malformed_json");
         for (char c : e.message) {
             EXPECT_TRUE(c >= 0x20 && c <= 0x7e) << e.message;
@@ -235,7 +235,7 @@ TEST(SceneJsonScene, EmptyBodiesIsAValidScene) {
 }
 
 TEST(SceneJsonScene, OverlapNamesTheBodyAndField) {
-    const auto e = error_of(R"({"bodies": [{"id": 4, "kind": "black", "pos": [300, 300]},
+    const auto e = scene_error_of(R"({"bodies": [{"id": 4, "kind": "black", "pos": [300, 300]},
                                            {"id": 7, "kind": "white", "pos": [320, 300]}]})");
     EXPECT_EQ(e.code, "overlap");
     EXPECT_EQ(e.path, "bodies[1].pos");
@@ -484,8 +484,8 @@ TEST(SceneJsonRoundTrip, ShotEncodesAsTheDecoderReadsIt) {
 }
 
 TEST(SceneJsonRoundTrip, EventSurvivesEncodeAndDecode) {
-    const Event event{0.123456789012345, EventKind::Cushion, 19, kCushionBottom, 2.5e3,
-                      {300.5, 547.0}};
+    const carrom::Event event{0.123456789012345, EventKind::Cushion, 19, kCushionBottom, 2.5e3,
+                              {300.5, 547.0}};
     const Json j = event_to_json(event);
     EXPECT_EQ(j["kind"], "cushion");
     const auto decoded = decode_event(Json::parse(j.dump()), "e");
@@ -499,7 +499,7 @@ TEST(SceneJsonRoundTrip, EventSurvivesEncodeAndDecode) {
 }
 
 TEST(SceneJsonRoundTrip, EventErrorsNameTheirPath) {
-    Json j = event_to_json(Event{1.0, EventKind::Stop, 3, -1, 0.0, {100, 100}});
+    Json j = event_to_json(carrom::Event{1.0, EventKind::Stop, 3, -1, 0.0, {100, 100}});
     j["kind"] = "bounce";
     auto decoded = decode_event(j, "events[2]");
     ASSERT_FALSE(decoded.ok());
@@ -517,8 +517,8 @@ TEST(SceneJsonRoundTrip, SimResultSurvivesEncodeAndDecode) {
     SimResult result;
     result.bodies = {Body{0, BodyKind::Queen, {300, 300}, {}, false},
                      Body{19, BodyKind::Striker, {57, 57}, {}, true}};
-    result.events = {Event{0.5, EventKind::Collision, 19, 0, 1234.5, {300, 332}},
-                     Event{1.5, EventKind::Pocket, 19, 0, 0.0, {57, 57}}};
+    result.events = {carrom::Event{0.5, EventKind::Collision, 19, 0, 1234.5, {300, 332}},
+                     carrom::Event{1.5, EventKind::Pocket, 19, 0, 0.0, {57, 57}}};
     result.end_time_s = 2.25;
     result.truncated = true;
     result.stats = SimStats{12, 3, 1, 40};

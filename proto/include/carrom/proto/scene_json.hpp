@@ -68,7 +68,7 @@ Decoded<ShotSpec> decode_shot(const nlohmann::json& j, const PhysicsConfig& conf
 Decoded<SceneSpec> decode_scene(const nlohmann::json& j);
 Decoded<SceneSpec> decode_scene_text(std::string_view text);
 // {"t_s", "kind", "a", "b", "impulse", "pos"}.
-Decoded<Event> decode_event(const nlohmann::json& j, const std::string& path);
+Decoded<carrom::Event> decode_event(const nlohmann::json& j, const std::string& path);
 // The output of sim_result_to_json (without the trajectory).
 Decoded<SimResult> decode_sim_result(const nlohmann::json& j);
 
@@ -79,8 +79,8 @@ nlohmann::json vec_to_json(Vec2 v); // [x, y]
 nlohmann::json body_to_json(const Body& body);
 nlohmann::json bodies_to_json(std::span<const Body> bodies);
 nlohmann::json shot_to_json(const ShotSpec& shot);
-nlohmann::json event_to_json(const Event& event);
-nlohmann::json events_to_json(std::span<const Event> events);
+nlohmann::json event_to_json(const carrom::Event& event);
+nlohmann::json events_to_json(std::span<const carrom::Event> events);
 nlohmann::json scene_to_json(const SceneSpec& scene); // {"config"?, "bodies"}
 nlohmann::json stats_to_json(const SimStats& stats);
 // Ids of the pocketed bodies, in body order.
