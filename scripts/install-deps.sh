@@ -15,6 +15,8 @@ packages=(
     python3 python3-matplotlib
     iproute2 procps
     chromium
+    # The page's engine (wasm/): emscripten's em++ (3.1.6) and acorn, which its optimiser needs.
+    emscripten node-acorn
 )
 # node and npm for the web client's tests (tests/web): Debian's, unless a node is installed
 # already (a NodeSource node brings its own npm, and Debian's npm package conflicts with it).

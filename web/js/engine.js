@@ -1,0 +1,141 @@
+// The exact engine (common/) compiled to WebAssembly (js/carrom_engine.wasm, built by
+// wasm/CMakeLists.txt), behind its C API (wasm/include/carrom/wasm/engine_api.h): a scene and a
+// shot in, the trajectory, events, final bodies and result hash out, through Float64Array views
+// of the module's memory. The module has no JavaScript glue: this file instantiates it.
+// docs/web.md, "The engine in the page".
+
+const KINDS = ['black', 'white', 'queen', 'striker'];
+const EVENT_KINDS = ['collision', 'cushion', 'pocket', 'stop'];
+const SIDES = { bottom: 0, right: 1, top: 2, left: 3 };
+const SCENE_FIELDS = 5;
+const FINAL_FIELDS = 7;
+const EVENT_FIELDS = 7;
+const MAX_BODIES = 64; // kCarromMaxBodies, the striker included
+
+export const ENGINE_URL = 'js/carrom_engine.wasm';
+
+// The module's two imports: memory growth (views are re-made on every call) and abort.
+function imports() {
+  return {
+    env: { emscripten_notify_memory_growth: () => {} },
+    wasi_snapshot_preview1: {
+      proc_exit: (code) => { throw new Error(`the engine stopped (exit ${code})`); },
+    },
+  };
+}
+
+export class Engine {
+  constructor(instance) {
+    this.api = instance.exports;
+    this.api._initialize?.();
+    this.physicsVersion = this.api.carrom_physics_version();
+  }
+
+  f64(pointer, count) {
+    return new Float64Array(this.api.memory.buffer, pointer, count);
+  }
+
+  // Writes pieces ({id, kind, x, y, pocketed}; a striker among them is ignored) into the scene.
+  writeScene(pieces) {
+    const n = Math.min(pieces.length, MAX_BODIES - 1);
+    const scene = this.f64(this.api.carrom_scene(), n * SCENE_FIELDS);
+    for (let i = 0; i < n; i += 1) {
+      const b = pieces[i];
+      scene.set([b.id, Math.max(KINDS.indexOf(b.kind), 0), b.x, b.y, b.pocketed ? 1 : 0], i * SCENE_FIELDS);
+    }
+    return n;
+  }
+
+  // Simulates the stroke of `side` ('bottom', 'right', 'top', 'left' or 0..3) with shot
+  // {x, angle, power} from the pieces at rest, the striker placed as the server's rules place it.
+  // {error: code} when the engine refuses the scene; else the stroke's summary. The trajectory
+  // stays in the engine until the next simulate(): stateAt() reads it.
+  simulate(pieces, side, shot) {
+    const n = this.writeScene(pieces);
+    const s = typeof side === 'number' ? side : SIDES[side] ?? -1;
+    if (this.api.carrom_simulate(n, s, shot.x, shot.angle, shot.power) !== 0) {
+      return { error: this.error() };
+    }
+    return {
+      error: null,
+      endTime: this.api.carrom_end_time_s(),
+      hash: this.hash(),
+      events: this.events(),
+      final: this.finalBodies(),
+    };
+  }
+
+  error() {
+    const p = this.api.carrom_error();
+    const bytes = new Uint8Array(this.api.memory.buffer, p, 64);
+    const end = bytes.indexOf(0);
+    return new TextDecoder().decode(bytes.subarray(0, end < 0 ? 64 : end));
+  }
+
+  // The stroke's ResultHash, 16 hex digits.
+  hash() {
+    const hex = (v) => (v >>> 0).toString(16).padStart(8, '0');
+    return hex(this.api.carrom_result_hash_high()) + hex(this.api.carrom_result_hash_low());
+  }
+
+  events() {
+    const n = this.api.carrom_event_count();
+    const r = this.f64(this.api.carrom_events(), n * EVENT_FIELDS);
+    const out = [];
+    for (let i = 0; i < n; i += 1) {
+      const e = r.subarray(i * EVENT_FIELDS, (i + 1) * EVENT_FIELDS);
+      out.push({ t: e[0], kind: EVENT_KINDS[e[1]], a: e[2], b: e[3], impulse: e[4], x: e[5], y: e[6] });
+    }
+    return out;
+  }
+
+  finalBodies() {
+    const n = this.api.carrom_body_count();
+    const r = this.f64(this.api.carrom_final(), n * FINAL_FIELDS);
+    const out = [];
+    for (let i = 0; i < n; i += 1) {
+      const b = r.subarray(i * FINAL_FIELDS, (i + 1) * FINAL_FIELDS);
+      out.push({ id: b[0], kind: KINDS[b[1]], x: b[2], y: b[3], vx: b[4], vy: b[5], pocketed: b[6] !== 0 });
+    }
+    return out;
+  }
+
+  // Every body of the last stroke at shot time t (s): {id, kind, x, y, pocketed}, by id with the
+  // striker last.
+  stateAt(t) {
+    const n = this.api.carrom_state_at(t);
+    const r = this.f64(this.api.carrom_frame(), n * SCENE_FIELDS);
+    const out = new Array(n);
+    for (let i = 0; i < n; i += 1) {
+      const o = i * SCENE_FIELDS;
+      out[i] = { id: r[o], kind: KINDS[r[o + 1]], x: r[o + 2], y: r[o + 3], pocketed: r[o + 4] !== 0 };
+    }
+    return out;
+  }
+
+  // For an aim assist: the first piece the striker touches ({id, t, striker: {x, y}, direction:
+  // {x, y}}), or null. Replaces the last stroke.
+  firstContact(pieces, side, shot) {
+    const n = this.writeScene(pieces);
+    const s = typeof side === 'number' ? side : SIDES[side] ?? -1;
+    const id = this.api.carrom_first_contact(n, s, shot.x, shot.angle, shot.power);
+    if (id < 0) return null;
+    const c = this.f64(this.api.carrom_contact(), 5);
+    return { id, t: c[0], striker: { x: c[1], y: c[2] }, direction: { x: c[3], y: c[4] } };
+  }
+}
+
+// Instantiates the engine from its bytes (node, tests) or its URL (the page: streamed, so the
+// module compiles while it downloads). Rejects when WebAssembly or the file is missing.
+export async function loadEngine(source = ENGINE_URL) {
+  if (typeof WebAssembly !== 'object') throw new Error('this browser has no WebAssembly');
+  let result;
+  if (typeof source === 'string') {
+    const response = await fetch(source);
+    if (!response.ok) throw new Error(`no engine at ${source} (HTTP ${response.status})`);
+    result = await WebAssembly.instantiateStreaming(response, imports());
+  } else {
+    result = await WebAssembly.instantiate(source, imports());
+  }
+  return new Engine(result.instance);
+}
