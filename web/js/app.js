@@ -8,6 +8,7 @@
 import { AimController, clampBaselineX } from './aim_controller.js';
 import { alongOf, strikerAt } from './board_geometry.js';
 import { Connection } from './connection.js';
+import { loadEngine } from './engine.js';
 import { Hud } from './hud.js';
 import { Lobby } from './lobby.js';
 import { MatchModel } from './match_model.js';
@@ -89,6 +90,20 @@ class App {
       this.joinLink(name);
     }
     requestAnimationFrame((ts) => this.frame(ts));
+    this.loadEngine();
+  }
+
+  // The exact engine for the own strokes' prediction; without it (no WebAssembly, no file) the
+  // page draws the server's snapshots only.
+  async loadEngine() {
+    const started = performance.now();
+    try {
+      this.engine = await loadEngine();
+      this.engineMs = performance.now() - started;
+      this.model.setEngine(this.engine);
+    } catch (e) {
+      this.engineError = String(e.message ?? e);
+    }
   }
 
   joinLink(name) {
@@ -245,6 +260,7 @@ class App {
     if (this.session.sendGame(proto.shoot(turn, shot.x, shot.angle, shot.power))) {
       this.shotSentTurn = turn;
       this.aim.endTurn();
+      this.model.predict({ turn, ...shot }, performance.now() / 1000);
     }
   }
 
@@ -362,6 +378,8 @@ class App {
       cues: { heard: this.model.cuesHeard, late: this.model.cues.late, merged: this.model.cuesMerged },
       muted: this.sound.muted, audio: this.sound.context ? this.sound.context.state : 'none',
       hash: window.location.hash,
+      engine: { loaded: Boolean(this.engine), ms: this.engineMs ?? null, error: this.engineError ?? null },
+      prediction: this.model.prediction ? { active: this.model.prediction.active, ...this.model.prediction.stats } : null,
     };
   }
 
