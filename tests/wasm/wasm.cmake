@@ -11,3 +11,8 @@ set_tests_properties(wasm.determinism PROPERTIES
     TIMEOUT 120
     LABELS web
     ENVIRONMENT "CARROM_ENGINE_CASES=$<TARGET_FILE:carrom-engine-cases>;CARROM_ENGINE_WASM=${CARROM_WEB_WASM}")
+add_test(NAME wasm.prediction COMMAND ${CARROM_NODE} ${CMAKE_CURRENT_SOURCE_DIR}/wasm/prediction_test.mjs)
+set_tests_properties(wasm.prediction PROPERTIES
+    TIMEOUT 60
+    LABELS web
+    ENVIRONMENT "CARROM_ENGINE_CASES=$<TARGET_FILE:carrom-engine-cases>;CARROM_ENGINE_WASM=${CARROM_WEB_WASM}")
