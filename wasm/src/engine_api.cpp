@@ -1,5 +1,7 @@
 #include "carrom/wasm/engine_api.h"
 
+#include "api_error.hpp"
+
 #include "carrom/exact_engine.hpp"
 #include "carrom/physics_version.hpp"
 #include "carrom/result_hash.hpp"
@@ -114,6 +116,10 @@ void keep_stroke(EngineApiState& s, const std::vector<carrom::Body>& bodies,
 }
 
 } // namespace
+
+void carrom::wasm::set_api_error(std::string_view code) {
+    api().error = code;
+}
 
 extern "C" {
 

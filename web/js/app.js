@@ -15,6 +15,7 @@ import { MatchModel } from './match_model.js';
 import { errorSentence } from './plain_words.js';
 import * as proto from './protocol.js';
 import { Renderer } from './renderer.js';
+import { parseReplayHash, startReplayPage } from './replay_page.js';
 import { parseRoomHash, roomHash, roomLink, showHash } from './room_link.js';
 import { teamSummaries } from './seat_panels.js';
 import { Session, SESSION_DEFAULTS } from './session.js';
@@ -112,6 +113,10 @@ class App {
   }
 
   onHash() {
+    if (parseReplayHash(window.location.hash) !== null) {
+      window.location.reload(); // the replay page replaces the game page
+      return;
+    }
     const link = parseRoomHash(window.location.hash);
     if (!link || (this.model.view.inRoom && link.code === this.model.view.code)) return;
     this.fromLink = link;
@@ -391,8 +396,11 @@ class App {
   }
 }
 
-const app = new App();
-window.carrom = Object.freeze({
+// `#/replay/ID` is the replay page (replay_page.js), without the lobby and the WebSocket.
+const replayId = parseReplayHash(window.location.hash);
+const app = replayId === null ? new App() : null;
+if (replayId !== null) startReplayPage(replayId);
+else window.carrom = Object.freeze({
   state: () => app.debugState(),
   toClient: (x, y) => app.toClient(x, y),
   frameTimes: () => app.frameLog.slice(),
@@ -400,4 +408,4 @@ window.carrom = Object.freeze({
   // A cheap look (no layout, three fields) for a caller that polls while frames are timed.
   progress: () => ({ turn: app.model.view.turn, phase: app.model.view.phase, animating: app.model.animating() }),
 });
-app.start();
+app?.start();

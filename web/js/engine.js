@@ -14,6 +14,17 @@ const MAX_BODIES = 64; // kCarromMaxBodies, the striker included
 
 export const ENGINE_URL = 'js/carrom_engine.wasm';
 
+// The journal's rule set names in the C API's order, and its rules fields in carrom_replay_config's
+// (wasm/include/carrom/wasm/replay_api.h).
+export const RULE_SETS = ['icf', 'seed', 'freestyle', 'discpool'];
+const RULES_FIELDS = ['seat_count', 'first_breaker', 'shot_clock_s', 'shot_clock_grace_s',
+  'missed_turns_to_lose', 'target_points', 'max_boards', 'queen_points', 'queen_points_limit',
+  'board_points_cap', 'break_tries'];
+const FREESTYLE_FIELDS = ['white', 'black', 'queen', 'striker_penalty', 'target'];
+const INPUT_KINDS = { stroke: 0, clock_expired: 1, forfeit: 2 };
+const PHASES = ['aiming', 'board_over', 'game_over'];
+const SIDE_NAMES = ['bottom', 'right', 'top', 'left'];
+
 // The module's two imports: memory growth (views are re-made on every call) and abort.
 function imports() {
   return {
@@ -29,6 +40,7 @@ export class Engine {
     this.api = instance.exports;
     this.api._initialize?.();
     this.physicsVersion = this.api.carrom_physics_version();
+    this.rulesVersion = this.api.carrom_rules_version();
   }
 
   f64(pointer, count) {
@@ -122,6 +134,46 @@ export class Engine {
     if (id < 0) return null;
     const c = this.f64(this.api.carrom_contact(), 5);
     return { id, t: c[0], striker: { x: c[1], y: c[2] }, direction: { x: c[3], y: c[4] } };
+  }
+
+  // The replay half: a journal's game played input by input through the rules (replay_api.h).
+  replayStart(ruleSet, rules, firstTurn) {
+    const config = this.f64(this.api.carrom_replay_config(), 16);
+    config.set([...RULES_FIELDS.map((k) => rules[k]), ...FREESTYLE_FIELDS.map((k) => rules.freestyle?.[k])]);
+    if (this.api.carrom_replay_start(RULE_SETS.indexOf(ruleSet), firstTurn) !== 0) return { error: this.error() };
+    return { error: null, result: this.replayResult() };
+  }
+
+  // kind: 'stroke', 'clock_expired' or 'forfeit'; shot {x, angle, power} for a stroke.
+  replayPlay(kind, seat, shot = { x: 0, angle: 0, power: 0 }) {
+    if (this.api.carrom_replay_play(INPUT_KINDS[kind] ?? -1, seat, shot.x, shot.angle, shot.power) !== 0) {
+      return { error: this.error() };
+    }
+    return { error: null, result: this.replayResult() };
+  }
+
+  // The state the last input left (see carrom_replay_result).
+  replayResult() {
+    const r = this.f64(this.api.carrom_replay_result(), 24);
+    const hex = (v) => (v >>> 0).toString(16).padStart(8, '0');
+    return {
+      turn: r[0], toPlay: r[1], board: r[2], phase: PHASES[r[3]],
+      scores: Array.from(r.subarray(4, 8)), dues: Array.from(r.subarray(8, 12)),
+      winner: r[12] === -2 ? null : r[12], reasonCode: r[13], boardWinner: r[14], boardPoints: r[15],
+      stateHash: hex(r[16]) + hex(r[17]),
+      sides: Array.from(r.subarray(18, 22)).filter((x) => x >= 0).map((x) => SIDE_NAMES[x]),
+    };
+  }
+
+  // The board as the rules left it (next false) or the one the next input is played on (true).
+  replayBoard(next) {
+    const r = this.f64(this.api.carrom_replay_board(next ? 1 : 0), 19 * SCENE_FIELDS);
+    const out = [];
+    for (let i = 0; i < 19; i += 1) {
+      const o = i * SCENE_FIELDS;
+      out.push({ id: r[o], kind: KINDS[r[o + 1]], x: r[o + 2], y: r[o + 3], vx: 0, vy: 0, pocketed: r[o + 4] !== 0 });
+    }
+    return out;
   }
 }
 
