@@ -13,6 +13,7 @@ import { Hud } from './hud.js';
 import { Lobby } from './lobby.js';
 import { MatchModel } from './match_model.js';
 import { errorSentence } from './plain_words.js';
+import { STRIKER_ID } from './physics_config.js';
 import * as proto from './protocol.js';
 import { Renderer } from './renderer.js';
 import { parseReplayHash, startReplayPage } from './replay_page.js';
@@ -265,7 +266,8 @@ class App {
     if (this.session.sendGame(proto.shoot(turn, shot.x, shot.angle, shot.power))) {
       this.shotSentTurn = turn;
       this.aim.endTurn();
-      this.model.predict({ turn, ...shot }, performance.now() / 1000);
+      this.releaseMs = performance.now(); // the release, on the frames' clock (first motion)
+      this.model.predict({ turn, ...shot }, this.releaseMs / 1000);
     }
   }
 
@@ -341,8 +343,10 @@ class App {
     this.updateLobby();
     document.body.classList.toggle('aiming', this.aim.phase === 'pulling' || this.aim.phase === 'sliding');
     // Frame time: from the frame's start (the rAF timestamp) to the end of this frame's work.
+    const striker = this.bodies.find((b) => b.id === STRIKER_ID);
     this.frameLog.push({
       ts, ms: performance.now() - ts, work: performance.now() - started, moving: animating, turn: v.turn,
+      sx: striker?.x, sy: striker?.y, // the striker drawn (scripts/web_first_motion.mjs)
     });
     if (this.frameLog.length > FRAME_LOG) this.frameLog.splice(0, FRAME_LOG / 10);
     requestAnimationFrame((t) => this.frame(t));
@@ -383,6 +387,7 @@ class App {
       cues: { heard: this.model.cuesHeard, late: this.model.cues.late, merged: this.model.cuesMerged },
       muted: this.sound.muted, audio: this.sound.context ? this.sound.context.state : 'none',
       hash: window.location.hash,
+      releaseMs: this.releaseMs ?? null,
       engine: { loaded: Boolean(this.engine), ms: this.engineMs ?? null, error: this.engineError ?? null },
       prediction: this.model.prediction ? { active: this.model.prediction.active, ...this.model.prediction.stats } : null,
     };

@@ -32,7 +32,8 @@ export class ShotPrediction {
     this.events = [];
     this.claimed = [];
     this.blends = new Map(); // id -> {target: {x, y}, fades: [{x, y, start}], serverPocketed, counted}
-    this.stats = { strokes: 0, corrections: 0, maxDifferencePx: 0, strokeMaxDifferencePx: 0 };
+    // simulateMs: the last stroke's simulation on release (ms), the page's cost of a prediction.
+    this.stats = { strokes: 0, corrections: 0, maxDifferencePx: 0, strokeMaxDifferencePx: 0, simulateMs: 0 };
   }
 
   // Simulates the stroke of `turn` from `board` (at rest; a striker in it is replaced) for the
@@ -40,7 +41,9 @@ export class ShotPrediction {
   // False (nothing predicted) when the engine refuses the scene: the server refuses the shot too.
   start(turn, board, side, shot, offset) {
     this.active = false;
+    const started = performance.now();
     const r = this.engine.simulate(board, side, shot);
+    this.stats.simulateMs = performance.now() - started;
     if (r.error) return false;
     Object.assign(this, {
       active: true, confirmed: false, serverDone: false, turn, offset, events: r.events,
