@@ -17,16 +17,9 @@
 import { spawn } from 'node:child_process';
 import { once } from 'node:events';
 import { createInterface } from 'node:readline';
-import { fileURLToPath } from 'node:url';
 import path from 'node:path';
 
-const root = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..');
-const args = process.argv.slice(2);
-const opt = (name, fallback) => {
-  const i = args.indexOf(name);
-  return i >= 0 ? args[i + 1] : fallback;
-};
-process.env.CARROM_SERVER = path.resolve(opt('--server', path.join(root, 'build/test/server/carrom-server')));
+const { root, args, opt } = await import('./lib/script_options.mjs');
 const strokes = Number(opt('--strokes', '6'));
 const profiles = opt('--profiles', 'lan,rtt100').split(',');
 const DELAYS = { lan: [0, 0], rtt100: [50, 10] };

@@ -15,18 +15,11 @@
 // load (no cache), the engine included, as the browser's resource timing reports it; the first
 // contentful paint (the lobby drawn) and the engine's load time (fetch, compile, instantiate).
 
-import { fileURLToPath } from 'node:url';
 import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
 
-const root = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..');
-const args = process.argv.slice(2);
-const opt = (name, fallback) => {
-  const i = args.indexOf(name);
-  return i >= 0 ? args[i + 1] : fallback;
-};
-process.env.CARROM_SERVER = path.resolve(opt('--server', process.env.CARROM_SERVER ?? path.join(root, 'build/test/server/carrom-server')));
+const { root, args, opt } = await import('./lib/script_options.mjs');
 const runs = Number(opt('--runs', '5'));
 const unthrottled = args.includes('--unthrottled');
 const muted = args.includes('--mute');

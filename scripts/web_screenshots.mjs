@@ -9,16 +9,9 @@
 // four pages (ICF rules), the right seat's view (a quarter turn: its own baseline at the
 // bottom, its partner across) aiming its first shot after the break.
 
-import { fileURLToPath } from 'node:url';
 import path from 'node:path';
 
-const root = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..');
-const args = process.argv.slice(2);
-const opt = (name, fallback) => {
-  const i = args.indexOf(name);
-  return i >= 0 ? args[i + 1] : fallback;
-};
-process.env.CARROM_SERVER = path.resolve(opt('--server', process.env.CARROM_SERVER ?? path.join(root, 'build/test/server/carrom-server')));
+const { root, args, opt } = await import('./lib/script_options.mjs');
 const out = path.resolve(opt('--out', path.join(root, 'docs/img')));
 const only = opt('--only', 'all');
 const wanted = (name) => only === 'all' || only === name;

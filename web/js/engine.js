@@ -11,6 +11,7 @@ const SCENE_FIELDS = 5;
 const FINAL_FIELDS = 7;
 const EVENT_FIELDS = 7;
 const MAX_BODIES = 64; // kCarromMaxBodies, the striker included
+const COIN_COUNT = 19; // the pieces of carrom_replay_board (kCoinCount)
 
 export const ENGINE_URL = 'js/carrom_engine.wasm';
 
@@ -90,39 +91,30 @@ export class Engine {
     return hex(this.api.carrom_result_hash_high()) + hex(this.api.carrom_result_hash_low());
   }
 
-  events() {
-    const n = this.api.carrom_event_count();
-    const r = this.f64(this.api.carrom_events(), n * EVENT_FIELDS);
-    const out = [];
-    for (let i = 0; i < n; i += 1) {
-      const e = r.subarray(i * EVENT_FIELDS, (i + 1) * EVENT_FIELDS);
-      out.push({ t: e[0], kind: EVENT_KINDS[e[1]], a: e[2], b: e[3], impulse: e[4], x: e[5], y: e[6] });
-    }
+  // `count` records of `fields` doubles at `pointer`, each made into an object by make(record).
+  records(pointer, count, fields, make) {
+    const r = this.f64(pointer, count * fields);
+    const out = new Array(count);
+    for (let i = 0; i < count; i += 1) out[i] = make(r.subarray(i * fields, (i + 1) * fields));
     return out;
   }
 
+  events() {
+    return this.records(this.api.carrom_events(), this.api.carrom_event_count(), EVENT_FIELDS,
+      (e) => ({ t: e[0], kind: EVENT_KINDS[e[1]], a: e[2], b: e[3], impulse: e[4], x: e[5], y: e[6] }));
+  }
+
   finalBodies() {
-    const n = this.api.carrom_body_count();
-    const r = this.f64(this.api.carrom_final(), n * FINAL_FIELDS);
-    const out = [];
-    for (let i = 0; i < n; i += 1) {
-      const b = r.subarray(i * FINAL_FIELDS, (i + 1) * FINAL_FIELDS);
-      out.push({ id: b[0], kind: KINDS[b[1]], x: b[2], y: b[3], vx: b[4], vy: b[5], pocketed: b[6] !== 0 });
-    }
-    return out;
+    return this.records(this.api.carrom_final(), this.api.carrom_body_count(), FINAL_FIELDS,
+      (b) => ({ id: b[0], kind: KINDS[b[1]], x: b[2], y: b[3], vx: b[4], vy: b[5], pocketed: b[6] !== 0 }));
   }
 
   // Every body of the last stroke at shot time t (s): {id, kind, x, y, pocketed}, by id with the
   // striker last.
   stateAt(t) {
     const n = this.api.carrom_state_at(t);
-    const r = this.f64(this.api.carrom_frame(), n * SCENE_FIELDS);
-    const out = new Array(n);
-    for (let i = 0; i < n; i += 1) {
-      const o = i * SCENE_FIELDS;
-      out[i] = { id: r[o], kind: KINDS[r[o + 1]], x: r[o + 2], y: r[o + 3], pocketed: r[o + 4] !== 0 };
-    }
-    return out;
+    return this.records(this.api.carrom_frame(), n, SCENE_FIELDS,
+      (b) => ({ id: b[0], kind: KINDS[b[1]], x: b[2], y: b[3], pocketed: b[4] !== 0 }));
   }
 
   // For an aim assist: the first piece the striker touches ({id, t, striker: {x, y}, direction:
@@ -167,13 +159,8 @@ export class Engine {
 
   // The board as the rules left it (next false) or the one the next input is played on (true).
   replayBoard(next) {
-    const r = this.f64(this.api.carrom_replay_board(next ? 1 : 0), 19 * SCENE_FIELDS);
-    const out = [];
-    for (let i = 0; i < 19; i += 1) {
-      const o = i * SCENE_FIELDS;
-      out.push({ id: r[o], kind: KINDS[r[o + 1]], x: r[o + 2], y: r[o + 3], vx: 0, vy: 0, pocketed: r[o + 4] !== 0 });
-    }
-    return out;
+    return this.records(this.api.carrom_replay_board(next ? 1 : 0), COIN_COUNT, SCENE_FIELDS,
+      (b) => ({ id: b[0], kind: KINDS[b[1]], x: b[2], y: b[3], vx: 0, vy: 0, pocketed: b[4] !== 0 }));
   }
 }
 
