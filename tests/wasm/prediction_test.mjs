@@ -2,8 +2,8 @@
 // WebAssembly engine under node, fed the server's messages as the page decodes them: the stroke
 // is drawn from the frame after the shot, an exact server is followed without corrections and
 // its sounds are not played twice, a server 5 px off is reached within the blend and counted
-// once, a refused shot returns to the board at rest. The board is the standard break's
-// (carrom-engine-cases, native).
+// once, a refused shot returns to the board at rest; the aim assist's first contact. The board
+// is the standard break's (carrom-engine-cases, native).
 //
 //   CARROM_ENGINE_CASES=... CARROM_ENGINE_WASM=... node tests/wasm/prediction_test.mjs
 import assert from 'node:assert/strict';
@@ -142,5 +142,17 @@ test('no engine: nothing is predicted', () => {
   const m = new MatchModel();
   m.handle(roomState(SHOT.turn), 0);
   assert.equal(m.predict(SHOT, 1.0), false);
+});
+test("the aim assist's first contact", () => {
+  const hit = server.firstContact(layout, 'bottom', SHOT);
+  assert.ok(hit, 'the break touches a piece');
+  const first = stroke.events.find((e) => e.kind === 'collision' && (e.a === 19 || e.b === 19));
+  assert.equal(hit.id, first.a === 19 ? first.b : first.a, 'the first piece the stroke touches');
+  assert.equal(hit.t, first.t);
+  assert.ok(Math.abs(Math.hypot(hit.direction.x, hit.direction.y) - 1) < 1e-12, 'a unit direction');
+  assert.ok(hit.direction.y < 0, 'the piece moves up the board');
+  assert.ok(Math.abs(hit.striker.x - 300) < 1e-9 && hit.striker.y < 600, 'the striker where it touches');
+  assert.equal(server.firstContact(layout, 'bottom', { x: 300, angle: Math.PI / 2, power: 1 }), null,
+    'a soft shot at the own cushion touches nothing');
 });
 console.log(`prediction: ${passed} passed`);

@@ -1,10 +1,10 @@
 // The replay page (`#/replay/ID`, web/js/replay_page.js) against a match two carrom-bot
-// processes played through a real carrom-server with a match store: the Match API's list links
-// to it, the page replays every input with the engine, each replayed outcome (scores, the seat to
-// play next) equals the journal's, the final scores and winner are the stored result's and the drawn
-// board is the replayed final board; play/pause, previous/next and 0.25x-4x work; a journal whose
-// physics version differs (rewritten in flight) is refused with its sentence.
-
+// processes played through a real carrom-server with a match store: the Match API's list and
+// the lobby's "My matches" link to it, the page replays every input with the engine, each
+// replayed outcome (scores, the seat to play next) equals the journal's, the final scores and
+// winner are the stored result's and the drawn board is the replayed final board; play/pause,
+// previous/next and 0.25x-4x work; a journal whose physics version differs (rewritten in
+// flight) is refused with its sentence.
 import { mkdtempSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
@@ -55,7 +55,11 @@ run('web.replay_page', 180000, async (t) => {
         await sleep(50);
       }
     };
-    await page.goto(`${base}${listed.replay}`);
+    // The lobby's "My matches" lists it; its link opens the replay page.
+    await page.goto(`${base}/`);
+    await page.fill('#name', 'Alpha');
+    await page.click('#my-matches summary');
+    await page.click(`#my-matches a[href="${listed.replay.slice(1)}"]`);
     await page.waitForFunction(() => window.carrom?.replay !== undefined);
     const loaded = await waitFor('the replay loaded', (s) => s.loaded || s.error);
     check(!loaded.error, `the replay loaded: ${loaded.error}`);

@@ -12,6 +12,7 @@ import { loadEngine } from './engine.js';
 import { Hud } from './hud.js';
 import { Lobby } from './lobby.js';
 import { MatchModel } from './match_model.js';
+import { MyMatches } from './my_matches.js';
 import { errorSentence } from './plain_words.js';
 import { STRIKER_ID } from './physics_config.js';
 import * as proto from './protocol.js';
@@ -57,6 +58,7 @@ class App {
       onRefused: (error, request) => this.onRefused(error, request),
     }, SESSION_DEFAULTS, Connection);
     this.lobby = new Lobby(storage('localStorage'), (name, request) => this.request(name, request));
+    this.myMatches = new MyMatches(this.lobby.form, () => this.lobby.storedName());
     this.hud = new Hud({
       rematch: () => this.rematch(),
       lobby: () => this.toLobby(),

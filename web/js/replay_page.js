@@ -20,11 +20,12 @@ export function replayHash(id) {
   return `#/replay/${id}`;
 }
 
-// The Match API of the page's server: its own origin, or the `ws` query parameter's host.
-function matchUrl(id) {
+// A Match API address on the page's server (its own origin, or the `ws` query parameter's host):
+// path is `matches/ID` or `matches?player=...`.
+export function matchApiUrl(path) {
   const ws = new URLSearchParams(window.location.search).get('ws');
   const base = ws ? ws.replace(/^ws/, 'http') : `${window.location.origin}/`;
-  return new URL(`matches/${encodeURIComponent(id)}`, base).toString();
+  return new URL(path, base).toString();
 }
 
 function element(tag, props = {}, children = []) {
@@ -87,7 +88,7 @@ class ReplayPage {
     requestAnimationFrame((ts) => this.frame(ts));
     try {
       const started = performance.now();
-      const [engine, answer] = await Promise.all([loadEngine(), fetch(matchUrl(this.id))]);
+      const [engine, answer] = await Promise.all([loadEngine(), fetch(matchApiUrl(`matches/${encodeURIComponent(this.id)}`))]);
       this.engineMs = performance.now() - started;
       const body = await answer.json().catch(() => null);
       if (!answer.ok) {
