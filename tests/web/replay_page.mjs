@@ -4,7 +4,7 @@
 // replayed outcome (scores, the seat to play next) equals the journal's, the final scores and
 // winner are the stored result's and the drawn board is the replayed final board; play/pause,
 // previous/next and 0.25x-4x work; a journal whose physics version differs (rewritten in
-// flight) is refused with its sentence.
+// flight) is refused with its sentence, and a page without the engine says it has none.
 import { mkdtempSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
@@ -115,6 +115,13 @@ run('web.replay_page', 180000, async (t) => {
     const refused = await other.evaluate(() => window.carrom.replay().error);
     check(/played with physics version \d+; this page runs version \d+/.test(refused), `the refusal: ${refused}`);
     check((await other.textContent('#replay-status')) === refused, 'the refusal is shown');
+    // A page without the engine (an empty module, as a build without emscripten embeds): said so.
+    const bare = await context.newPage();
+    await bare.route('**/*.wasm', (route) => route.fulfill({ status: 200, contentType: 'application/wasm', body: '' }));
+    await bare.goto(`${base}${listed.replay}`);
+    await bare.waitForFunction(() => window.carrom?.replay().error);
+    const none = await bare.evaluate(() => window.carrom.replay().error);
+    check(/^This page has no engine to replay matches with/.test(none), `without the engine: ${none}`);
     console.log(`match ${listed.id}: ${done.strokes} strokes, ${done.inputs} inputs replayed, scores ${listed.scores}, `
       + `${loaded.bitDifferences} inputs not bit-identical to the server's, engine and journal in ${loaded.engineMs.toFixed(0)} ms`);
   } finally {

@@ -94,12 +94,12 @@ class App {
       this.joinLink(name);
     }
     requestAnimationFrame((ts) => this.frame(ts));
-    this.loadEngine();
+    this.startEngine();
   }
 
   // The exact engine for the own strokes' prediction; without it (no WebAssembly, no file) the
   // page draws the server's snapshots only.
-  async loadEngine() {
+  async startEngine() {
     const started = performance.now();
     try {
       this.engine = await loadEngine();

@@ -54,13 +54,12 @@ export class ReplayModel {
     let t = 0;
     for (const [entry, e] of journal.entries.entries()) {
       if (!OUTCOME_TYPES.includes(e.type)) continue; // membership: no state change
-      const sides = m.turns.length > 0 ? m.turns[m.turns.length - 1].result.sides : started.result.sides;
       const stroke = e.type === 'stroke';
       const shot = stroke ? { x: e.shot.x, angle: e.shot.angle, power: e.shot.power } : undefined;
       const played = engine.replayPlay(e.type, e.seat, shot);
       if (played.error) return { error: `The rules refuse entry ${entry} of this match (${played.error}).` };
       const turn = {
-        entry, stroke, seat: e.seat, side: sides[e.seat], shot, before: board,
+        entry, stroke, seat: e.seat, side: started.result.sides[e.seat], shot, before: board,
         result: played.result, after: engine.replayBoard(false),
         // Bit for bit (the state hash) and as a player sees it (scores, the seat to play next).
         sameBits: played.result.stateHash === e.outcome?.state_hash,

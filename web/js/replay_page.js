@@ -88,7 +88,14 @@ class ReplayPage {
     requestAnimationFrame((ts) => this.frame(ts));
     try {
       const started = performance.now();
-      const [engine, answer] = await Promise.all([loadEngine(), fetch(matchApiUrl(`matches/${encodeURIComponent(this.id)}`))]);
+      const [engine, answer] = await Promise.all([
+        loadEngine().catch(() => null),
+        fetch(matchApiUrl(`matches/${encodeURIComponent(this.id)}`)),
+      ]);
+      if (!engine) {
+        this.fail('This page has no engine to replay matches with (its server was built without WebAssembly, or the browser has none).');
+        return;
+      }
       this.engineMs = performance.now() - started;
       const body = await answer.json().catch(() => null);
       if (!answer.ok) {
