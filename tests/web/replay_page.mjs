@@ -102,6 +102,9 @@ run('web.replay_page', 180000, async (t) => {
       (d) => d.id === x.id && d.x === x.x && d.y === x.y)), 'the drawn board is the replayed final board');
     const status = await page.textContent('#replay-status');
     check(status.includes(`Stroke ${done.strokes} / ${done.strokes}`), `the bar counts the strokes: ${status}`);
+    const said = await page.textContent('#replay-event');
+    const winner = listed.players[listed.result.winner_team];
+    check(said.includes(`${winner} wins the game`), `the bar says the last stroke's end: ${said}`);
 
     // A journal of another physics version: refused with one sentence.
     const other = await context.newPage();

@@ -8,6 +8,7 @@
 import { makeBoardGeometry, PHYSICS } from './board_geometry.js';
 import { loadEngine } from './engine.js';
 import { Renderer } from './renderer.js';
+import { gameEndSentence, pocketList } from './plain_words.js';
 import { ReplayModel } from './replay_model.js';
 
 // {id} of a `#/replay/ID` address (ID as the Match API accepts it), or null.
@@ -58,6 +59,7 @@ class ReplayPage {
     this.bar = element('div', { id: 'replay-bar' }, [
       element('div', { id: 'replay-players' }),
       element('div', { id: 'replay-status' }),
+      element('div', { id: 'replay-event' }),
       element('div', { className: 'buttons' }, [
         button('replay-prev', 'Previous', () => this.model?.previousTurn()),
         button('replay-play', 'Pause', () => this.model?.togglePlay()),
@@ -152,7 +154,39 @@ class ReplayPage {
     }
     if (m.mismatches > 0) status += ` · ${m.mismatches} inputs replay differently from the record`;
     this.setText('replay-status', status);
+    this.setText('replay-event', this.eventText());
     this.setText('replay-play', m.playing ? 'Pause' : 'Play');
+  }
+
+  // What the input shown did, once its motion is over, in the game's words: the pocketed pieces,
+  // fouls, a board's or the game's end (as the journal recorded them).
+  eventText() {
+    const m = this.model;
+    if (m.turns.length === 0) return '';
+    const turn = m.turns[m.turnAt(m.time)];
+    if (m.time < turn.rest) return '';
+    const entry = m.journal.entries[turn.entry];
+    const o = entry.outcome;
+    const seats = m.journal.match.seats;
+    const who = seats[entry.seat]?.name ?? `Seat ${entry.seat + 1}`;
+    const doubles = seats.length === 4;
+    const parts = [];
+    if (entry.type === 'stroke') {
+      const kinds = o.pocketed.map((id) => turn.before.find((b) => b.id === id)?.kind ?? 'black');
+      parts.push(`${who} pocketed ${pocketList(kinds)}`);
+    } else {
+      parts.push(entry.type === 'forfeit' ? `${who} forfeited` : `${who} ran out of time`);
+    }
+    if (o.fouls.length > 0) parts.push(`foul: ${o.fouls.join(', ').replaceAll('_', ' ')}`);
+    if (o.board_end) {
+      parts.push(o.board_end.winner_team === null ? `board ${o.board_end.board} ends, no winner`
+        : `board ${o.board_end.board} to ${this.teamName(o.board_end.winner_team)} (+${o.board_end.points})`);
+    }
+    if (o.game_end) {
+      const w = o.game_end.winner_team ?? -1;
+      parts.push(gameEndSentence(w, false, w >= 0 ? this.teamName(w) : '', o.game_end.reason, true, doubles));
+    }
+    return parts.join(' · ');
   }
 
   frame(ts) {
