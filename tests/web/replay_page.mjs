@@ -82,6 +82,14 @@ run('web.replay_page', 180000, async (t) => {
     check(back.time < second.time, `Previous goes back (${second.time} -> ${back.time})`);
     await page.keyboard.press('+');
     check((await look()).speed === 0.5, 'the + key is faster');
+    await page.keyboard.press('ArrowUp');
+    check((await look()).speed === 1, 'Up is faster');
+    await page.keyboard.press('ArrowDown');
+    check((await look()).speed === 0.5, 'Down is slower');
+    await page.keyboard.press('Home');
+    const home = await look();
+    check(home.time < 0.5 && home.playing, `Home plays from the start (${home.time})`);
+    await page.keyboard.press(' ');
 
     // To the last input, then play to the end at 4x.
     for (let i = 0; i < loaded.inputs + 1; i += 1) await page.keyboard.press('ArrowRight');

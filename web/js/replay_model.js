@@ -136,6 +136,11 @@ export class ReplayModel {
     if (this.finished()) this.playing = false;
   }
 
+  restart() {
+    this.time = 0;
+    this.playing = true;
+  }
+
   seek(time) {
     this.time = Math.min(Math.max(time, 0), this.duration);
   }

@@ -1,7 +1,8 @@
 // The replay page: `#/replay/ID` plays the stored match ID (the Match API's GET /matches/ID,
 // docs/matches.md) back with the engine: the board drawn as in a game (seat 0's view), a bar with
 // the players and their scores, board and stroke, and the controls of carrom-client --replay:
-// play/pause (Space), previous/next stroke (Left/Right arrows), slower/faster 0.25x-4x (-/+).
+// play/pause (Space), previous/next stroke (Left/Right arrows), slower/faster 0.25x-4x (-/+,
+// Down/Up), from the start (Home).
 // A journal of another physics or rules version is refused with one sentence. The lobby and the
 // WebSocket are not used. window.carrom.replay() is its debug hook.
 
@@ -75,6 +76,7 @@ class ReplayPage {
       const keys = {
         ' ': () => m.togglePlay(), ArrowLeft: () => m.previousTurn(), ArrowRight: () => m.nextTurn(),
         '-': () => m.slower(), '+': () => m.faster(), '=': () => m.faster(),
+        ArrowUp: () => m.faster(), ArrowDown: () => m.slower(), Home: () => m.restart(),
       };
       if (keys[e.key]) {
         keys[e.key]();
