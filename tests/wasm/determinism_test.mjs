@@ -12,7 +12,7 @@
 // prediction's correction limit (0.5 px, docs/client.md) or pockets another set of pieces.
 import { execFileSync } from 'node:child_process';
 import { readFileSync } from 'node:fs';
-import { loadEngine } from '../../web/js/engine.js';
+import { FREESTYLE_FIELDS, loadEngine, RULES_FIELDS } from '../../web/js/engine.js';
 
 const count = process.argv[2] ?? '1000';
 const casesTool = process.env.CARROM_ENGINE_CASES;
@@ -26,6 +26,7 @@ const CORRECTION_PX = 0.5;
 const lines = execFileSync(casesTool, [count, '1'], { maxBuffer: 1 << 28 }).toString().trim().split('\n');
 const engine = await loadEngine(readFileSync(wasmPath));
 let identical = 0;
+const sameBits = []; // per case: the wasm result has the native one's hash
 let sameEvents = 0;
 let largest = 0;
 let largestCase = -1;
@@ -41,6 +42,7 @@ lines.forEach((line, i) => {
     failures.push(`case ${i}: the engine refused it (${r.error})`);
     return;
   }
+  sameBits.push(r.hash === c.hash);
   if (r.hash === c.hash) identical += 1;
   if (r.events.length === c.events) sameEvents += 1;
   let worst = 0;
@@ -60,9 +62,56 @@ lines.forEach((line, i) => {
   if (i === 0 && r.hash !== c.hash) failures.push(`the standard break differs: ${r.hash} vs ${c.hash}`);
 });
 const ms = performance.now() - started;
+
+// The same games replayed from their start through the rules in wasm (carrom_replay_*), as the
+// replay page does: each board a stroke is played on, against the native game's. Until a
+// stroke's result differs in some bit, every board must be the native game's bit for bit; after
+// it the difference grows with each stroke (counted, not failed: the page says so).
+const replay = await loadEngine(readFileSync(wasmPath));
+let boards = 0;
+let sameBoards = 0;
+let drift = 0;
+let otherPocketing = 0;
+let refused = 0;
+let diverged = false;
+let exactUntilDifference = 0;
+for (const [k, line] of lines.slice(1).entries()) {
+  const c = JSON.parse(line);
+  if (c.rules) {
+    diverged = false;
+    const rules = Object.fromEntries(RULES_FIELDS.map((k, i) => [k, c.rules[i]]));
+    rules.freestyle = Object.fromEntries(FREESTYLE_FIELDS.map((k, i) => [k, c.rules[RULES_FIELDS.length + i]]));
+    const started = replay.replayStart('icf', rules, 0);
+    if (started.error) failures.push(`game ${c.game}: the rules refuse its config (${started.error})`);
+  }
+  const board = replay.replayBoard(true);
+  boards += 1;
+  let same = true;
+  for (const [id, , x, y, pocketed] of c.bodies) {
+    const b = board.find((p) => p.id === id);
+    if (b.pocketed !== (pocketed === 1)) {
+      otherPocketing += same ? 1 : 0;
+      same = false;
+    } else if (!b.pocketed && (b.x !== x || b.y !== y)) {
+      drift = Math.max(drift, Math.hypot(b.x - x, b.y - y));
+      same = false;
+    }
+  }
+  if (same) sameBoards += 1;
+  if (!diverged && !same) failures.push(`case ${k + 1}: the rules' replay left another board than the native game before any stroke differed`);
+  if (!diverged) exactUntilDifference += 1;
+  if (!sameBits[k + 1]) diverged = true;
+  const played = replay.replayPlay('stroke', c.seat, { x: c.shot[0], angle: c.shot[1], power: c.shot[2] });
+  if (played.error) refused += 1;
+}
+
 console.log(`determinism: ${lines.length} cases (the standard break and ${lines.length - 1} random shots), `
   + `${identical} bit-identical, ${sameEvents} with the same event count, largest final position `
   + `difference ${largest.toExponential(3)} px (case ${largestCase}); wasm ${(ms / lines.length).toFixed(2)} ms a case`);
+console.log(`replayed through the rules: ${boards} strokes of ${JSON.parse(lines[lines.length - 1]).game + 1} games, `
+  + `${sameBoards} played on the native game's board bit for bit (${exactUntilDifference} before a stroke differed, all of them), `
+  + `largest difference ${drift.toExponential(3)} px; ${otherPocketing} boards with another piece pocketed, `
+  + `${refused} strokes refused by the replayed game's rules`);
 if (failures.length > 0) {
   console.error(failures.slice(0, 20).join('\n'));
   process.exit(1);

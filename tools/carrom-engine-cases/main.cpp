@@ -8,9 +8,12 @@
 //
 //   carrom-engine-cases [COUNT] [SEED]     (defaults 1000 and 1)
 //
-// A line: {"side": S, "shot": [x, angle, power], "bodies": [[id, kind, x, y, pocketed], ...],
-// "hash": "16 hex digits" (the ResultHash), "events": N, "end": T,
-// "final": [[id, x, y, pocketed], ...]}. Doubles in %.17g, which JSON.parse reads back exactly.
+// A line: {"game": G, "seat": S, "side": S, "shot": [x, angle, power], "bodies": [[id, kind, x, y,
+// pocketed], ...], "hash": "16 hex digits" (the ResultHash), "events": N, "end": T,
+// "final": [[id, x, y, pocketed], ...]}; the first line of each game (G = 0, 1, ...; -1 for the
+// standard break) also has "rules": its RulesConfig in carrom_replay_config's order (icf, first
+// turn 0), so that the game can be replayed through the rules. Doubles in %.17g, which
+// JSON.parse reads back exactly.
 
 #include "carrom/exact_engine.hpp"
 #include "carrom/rules/match.hpp"
@@ -33,8 +36,26 @@ void print_double(double x) {
 }
 
 // One case: the pieces into carrom_scene, simulated, the inputs and outputs printed.
+// Which game and seat a case comes from; rules: set on a game's first case.
+struct CaseTag {
+    long game = -1;
+    int seat = 0;
+    const carrom::rules::RulesConfig* rules = nullptr;
+};
+
+void print_rules(const carrom::rules::RulesConfig& r) {
+    std::printf(", \"rules\": [%d, %d, ", r.seat_count, r.first_breaker);
+    print_double(r.shot_clock_s);
+    std::printf(", ");
+    print_double(r.shot_clock_grace_s);
+    std::printf(", %d, %d, %d, %d, %d, %d, %d, %d, %d, %d, %d, %d]", r.missed_turns_to_lose,
+                r.target_points, r.max_boards, r.queen_points, r.queen_points_limit,
+                r.board_points_cap, r.break_tries, r.freestyle.white, r.freestyle.black,
+                r.freestyle.queen, r.freestyle.striker_penalty, r.freestyle.target);
+}
+
 bool write_case(std::span<const carrom::Body> pieces, carrom::rules::Side side,
-                const carrom::Shot& shot) {
+                const carrom::Shot& shot, const CaseTag& tag) {
     double* scene = carrom_scene();
     for (std::size_t i = 0; i < pieces.size(); ++i) {
         const carrom::Body& b = pieces[i];
@@ -52,7 +73,11 @@ bool write_case(std::span<const carrom::Body> pieces, carrom::rules::Side side,
                      carrom_error());
         return false;
     }
-    std::printf("{\"side\": %d, \"shot\": [", side_index);
+    std::printf("{\"game\": %ld, \"seat\": %d", tag.game, tag.seat);
+    if (tag.rules != nullptr) {
+        print_rules(*tag.rules);
+    }
+    std::printf(", \"side\": %d, \"shot\": [", side_index);
     print_double(shot.x_px);
     std::printf(", ");
     print_double(shot.angle_rad);
@@ -104,12 +129,14 @@ int main(int argc, char** argv) {
     carrom::rules::MatchState state = fresh();
     const carrom::Shot standard_break{physics.centre().x, -std::numbers::pi / 2.0,
                                       physics.max_power};
-    if (!write_case(state.bodies, carrom::rules::Side::Bottom, standard_break)) {
+    if (!write_case(state.bodies, carrom::rules::Side::Bottom, standard_break, {})) {
         return 1;
     }
     std::mt19937_64 random(seed);
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     carrom::ExactEngine engine(physics);
+    long game = 0;
+    bool new_game = true;
     for (long i = 0; i < count; ++i) {
         const int seat = state.turn_seat;
         const auto side = state.seats[static_cast<std::size_t>(seat)].side;
@@ -121,7 +148,9 @@ int main(int argc, char** argv) {
         const double angle = up + (unit(random) - 0.5) * (160.0 / 180.0) * std::numbers::pi;
         const double power = (0.1 + 0.9 * unit(random)) * physics.max_power;
         const auto shot = carrom::rules::nearest_legal_shot(state, seat, {x, angle, power});
-        if (!shot || !write_case(state.bodies, side, *shot)) {
+        const CaseTag tag{game, seat, new_game ? &rules_config : nullptr};
+        new_game = false;
+        if (!shot || !write_case(state.bodies, side, *shot, tag)) {
             return 1;
         }
         carrom::rules::PlayResult played = carrom::rules::play_shot(state, seat, *shot, engine);
@@ -135,6 +164,8 @@ int main(int argc, char** argv) {
             state = carrom::rules::start_next_board(state);
         } else if (state.phase == carrom::rules::Phase::GameOver) {
             state = fresh();
+            ++game;
+            new_game = true;
         }
     }
     return 0;

@@ -18,10 +18,10 @@ export const ENGINE_URL = 'js/carrom_engine.wasm';
 // The journal's rule set names in the C API's order, and its rules fields in carrom_replay_config's
 // (wasm/include/carrom/wasm/replay_api.h).
 export const RULE_SETS = ['icf', 'seed', 'freestyle', 'discpool'];
-const RULES_FIELDS = ['seat_count', 'first_breaker', 'shot_clock_s', 'shot_clock_grace_s',
+export const RULES_FIELDS = ['seat_count', 'first_breaker', 'shot_clock_s', 'shot_clock_grace_s',
   'missed_turns_to_lose', 'target_points', 'max_boards', 'queen_points', 'queen_points_limit',
   'board_points_cap', 'break_tries'];
-const FREESTYLE_FIELDS = ['white', 'black', 'queen', 'striker_penalty', 'target'];
+export const FREESTYLE_FIELDS = ['white', 'black', 'queen', 'striker_penalty', 'target'];
 const INPUT_KINDS = { stroke: 0, clock_expired: 1, forfeit: 2 };
 const PHASES = ['aiming', 'board_over', 'game_over'];
 const SIDE_NAMES = ['bottom', 'right', 'top', 'left'];
