@@ -68,13 +68,10 @@ const ms = performance.now() - started;
 // stroke's result differs in some bit, every board must be the native game's bit for bit; after
 // it the difference grows with each stroke (counted, not failed: the page says so).
 const replay = await loadEngine(readFileSync(wasmPath));
-let boards = 0;
-let sameBoards = 0;
-let drift = 0;
-let otherPocketing = 0;
-let refused = 0;
+// boards compared, boards bit for bit the native ones (and before the first differing stroke),
+// the largest difference (px), boards with another piece pocketed, strokes the rules refused.
+const tally = { boards: 0, sameBoards: 0, exactUntilDifference: 0, drift: 0, otherPocketing: 0, refused: 0 };
 let diverged = false;
-let exactUntilDifference = 0;
 for (const [k, line] of lines.slice(1).entries()) {
   const c = JSON.parse(line);
   if (c.rules) {
@@ -85,33 +82,33 @@ for (const [k, line] of lines.slice(1).entries()) {
     if (started.error) failures.push(`game ${c.game}: the rules refuse its config (${started.error})`);
   }
   const board = replay.replayBoard(true);
-  boards += 1;
+  tally.boards += 1;
   let same = true;
   for (const [id, , x, y, pocketed] of c.bodies) {
     const b = board.find((p) => p.id === id);
     if (b.pocketed !== (pocketed === 1)) {
-      otherPocketing += same ? 1 : 0;
+      tally.otherPocketing += same ? 1 : 0;
       same = false;
     } else if (!b.pocketed && (b.x !== x || b.y !== y)) {
-      drift = Math.max(drift, Math.hypot(b.x - x, b.y - y));
+      tally.drift = Math.max(tally.drift, Math.hypot(b.x - x, b.y - y));
       same = false;
     }
   }
-  if (same) sameBoards += 1;
+  if (same) tally.sameBoards += 1;
   if (!diverged && !same) failures.push(`case ${k + 1}: the rules' replay left another board than the native game before any stroke differed`);
-  if (!diverged) exactUntilDifference += 1;
+  if (!diverged) tally.exactUntilDifference += 1;
   if (!sameBits[k + 1]) diverged = true;
   const played = replay.replayPlay('stroke', c.seat, { x: c.shot[0], angle: c.shot[1], power: c.shot[2] });
-  if (played.error) refused += 1;
+  if (played.error) tally.refused += 1;
 }
 
 console.log(`determinism: ${lines.length} cases (the standard break and ${lines.length - 1} random shots), `
   + `${identical} bit-identical, ${sameEvents} with the same event count, largest final position `
   + `difference ${largest.toExponential(3)} px (case ${largestCase}); wasm ${(ms / lines.length).toFixed(2)} ms a case`);
-console.log(`replayed through the rules: ${boards} strokes of ${JSON.parse(lines[lines.length - 1]).game + 1} games, `
-  + `${sameBoards} played on the native game's board bit for bit (${exactUntilDifference} before a stroke differed, all of them), `
-  + `largest difference ${drift.toExponential(3)} px; ${otherPocketing} boards with another piece pocketed, `
-  + `${refused} strokes refused by the replayed game's rules`);
+console.log(`replayed through the rules: ${tally.boards} strokes of ${JSON.parse(lines[lines.length - 1]).game + 1} games, `
+  + `${tally.sameBoards} played on the native game's board bit for bit (${tally.exactUntilDifference} before a stroke differed, all of them), `
+  + `largest difference ${tally.drift.toExponential(3)} px; ${tally.otherPocketing} boards with another piece pocketed, `
+  + `${tally.refused} strokes refused by the replayed game's rules`);
 if (failures.length > 0) {
   console.error(failures.slice(0, 20).join('\n'));
   process.exit(1);
