@@ -57,7 +57,7 @@ constexpr AtanPoint kAtanTable[] = {
 // atan(t) for |t| < 7/16, split as t + tail.
 double atan_series_tail(double t) {
     const double z = t * t;
-    return (z * t) * bits::horner(kAtanTail, z);
+    return (z * t) * bits::polynomial(kAtanTail, z);
 }
 
 // atan(t + t_lo) for t >= 0 (t may be +inf) and |t_lo| <= ulp(t).

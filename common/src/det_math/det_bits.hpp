@@ -1,6 +1,7 @@
 #pragma once
 // Bit-level helpers of det_math (carrom/det_math.hpp): pure functions on doubles.
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 
@@ -65,13 +66,30 @@ constexpr double inv_factorial(int n) {
     return 1.0 / f;
 }
 
-// Horner's scheme: c[0] + z*(c[1] + z*(c[2] + ...)), left to right as written (no fusion).
-template <std::size_t N> constexpr double horner(const double (&c)[N], double z) {
-    double p = c[N - 1];
-    for (std::size_t i = N - 1; i-- > 0;) {
-        p = c[i] + z * p;
+// c[0] + c[1]*z + c[2]*z^2 + ... by Estrin's scheme: pairs c[2i] + z*c[2i+1], then the same
+// on the pairs in z^2, and so on; a fixed order of operations (no fusion), so the result is the
+// same bits everywhere, with a dependency chain of log2(N) steps instead of N.
+template <std::size_t N> constexpr double estrin(const std::array<double, N>& c, double z) {
+    if constexpr (N == 1) {
+        return c[0];
+    } else {
+        std::array<double, (N + 1) / 2> pairs{};
+        for (std::size_t i = 0; i < N / 2; ++i) {
+            pairs[i] = c[2 * i] + z * c[2 * i + 1];
+        }
+        if constexpr (N % 2 == 1) {
+            pairs[N / 2] = c[N - 1];
+        }
+        return estrin(pairs, z * z);
     }
-    return p;
+}
+
+template <std::size_t N> constexpr double polynomial(const double (&c)[N], double z) {
+    std::array<double, N> coefficients{};
+    for (std::size_t i = 0; i < N; ++i) {
+        coefficients[i] = c[i];
+    }
+    return estrin(coefficients, z);
 }
 
 // a*b = hi + lo exactly (Dekker's product with Veltkamp's split) for |a|, |b| below 2^995 and

@@ -43,7 +43,7 @@ Ln2Reduction reduce_by_ln2(double x) {
 
 // r^2 * (exp(r) - 1 - r) / r^2, the part of exp(r) - 1 beyond r.
 double exp_beyond_linear(double r) {
-    return (r * r) * bits::horner(kExpTail, r);
+    return (r * r) * bits::polynomial(kExpTail, r);
 }
 
 // exp(r + c) for |r| <= 0.35 and tiny c, in [0.7, 1.42].

@@ -27,7 +27,7 @@ constexpr double kAtanhTail[] = {2.0 / 3.0,  2.0 / 5.0,  2.0 / 7.0,  2.0 / 9.0,
 double log_reduced(int k, double f, double c) {
     const double s = f / (2.0 + f);
     const double z = s * s;
-    const double tail = z * bits::horner(kAtanhTail, z);
+    const double tail = z * bits::polynomial(kAtanhTail, z);
     const double half_f_squared = 0.5 * f * f;
     const double dk = k;
     return dk * kLogLn2Hi +

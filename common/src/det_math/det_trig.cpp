@@ -33,7 +33,7 @@ constexpr double kCosTail[] = {inv_factorial(4),   -inv_factorial(6),  inv_facto
 double sin_reduced(double y, double ylo) {
     const double z = y * y;
     const double y_cubed = z * y;
-    const double series = -inv_factorial(3) + z * bits::horner(kSinTail, z);
+    const double series = -inv_factorial(3) + z * bits::polynomial(kSinTail, z);
     return y + (y_cubed * series + ylo * (1.0 - 0.5 * z));
 }
 
@@ -45,7 +45,7 @@ double cos_reduced(double y, double ylo) {
     const double half_z = 0.5 * z;
     const double w = 1.0 - half_z;
     const double w_error = (1.0 - w) - half_z;
-    return w + (w_error + (z * z * bits::horner(kCosTail, z) - (0.5 * y_squared.lo + y * ylo)));
+    return w + (w_error + (z * z * bits::polynomial(kCosTail, z) - (0.5 * y_squared.lo + y * ylo)));
 }
 
 // x = quadrant*pi/2 + y + ylo (quadrant taken mod 4) for |x| < kTrigReductionLimit.
