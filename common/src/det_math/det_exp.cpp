@@ -2,7 +2,7 @@
 // |r| <= ln2/2 (ln2 split in two parts so that k*ln2_hi is exact), the Taylor series of
 // exp(r) - 1 - r to degree 14 (truncation below 2^-62 relative), and the result scaled by 2^k.
 // The roundings that matter are kept as exact sums (two-sum) so that only the last addition
-// rounds: within 1 ulp of exp(x). docs/decisions/006-deterministic-math.md.
+// rounds. docs/decisions/006-deterministic-math.md.
 
 #include "carrom/det_math.hpp"
 #include "det_bits.hpp"
