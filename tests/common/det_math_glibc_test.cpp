@@ -49,24 +49,13 @@ std::uint64_t max_ulps_log_uniform(const std::function<double(double)>& det_f,
                     [&](double e) { return libm_f(std::exp2(e)); }, low_exponent, high_exponent);
 }
 
-double libm_exp(double x) {
-    return std::exp(x);
-}
-double libm_expm1(double x) {
-    return std::expm1(x);
-}
-double libm_log(double x) {
-    return std::log(x);
-}
-double libm_log1p(double x) {
-    return std::log1p(x);
-}
-double libm_sin(double x) {
-    return std::sin(x);
-}
-double libm_cos(double x) {
-    return std::cos(x);
-}
+// glibc's functions (the standard library's are not addressable).
+const auto libm_exp = [](double x) { return std::exp(x); };
+const auto libm_expm1 = [](double x) { return std::expm1(x); };
+const auto libm_log = [](double x) { return std::log(x); };
+const auto libm_log1p = [](double x) { return std::log1p(x); };
+const auto libm_sin = [](double x) { return std::sin(x); };
+const auto libm_cos = [](double x) { return std::cos(x); };
 
 TEST(DetMathGlibc, ExpWithinOneUlp) {
     EXPECT_LE(max_ulps(det::exp, libm_exp, -2.0, 0.0), 1u); // damping factors exp(-k*dt)
