@@ -8,6 +8,7 @@ import test from 'node:test';
 import { AimController, checkPlacement, clampBaselineX, powerFromDrag } from '../../web/js/aim_controller.js';
 import { makeBoardGeometry, nearestPocket, PHYSICS } from '../../web/js/board_geometry.js';
 import { hermite } from '../../web/js/hermite.js';
+import { HudLog } from '../../web/js/hud_log.js';
 import { InterpolationBuffer, INTERPOLATION_DEFAULTS, travelFactor } from '../../web/js/interpolation_buffer.js';
 import { applyLimits, OPTION_RANGES } from '../../web/js/lobby.js';
 import { MatchModel } from '../../web/js/match_model.js';
@@ -691,4 +692,17 @@ test('the model gives room_state motion to the buffer and the playout clock', ()
   assert.equal(m.buffer.config.dampingPerS, K);
   assert.equal(m.buffer.everyChangeSent, false);
   assert.equal(m.playout.config.intervalFactor, 2);
+});
+
+test('the HUD log never shows one line twice (client/src/hud_log.cpp)', () => {
+  const log = new HudLog(5, 6);
+  log.post('Your turn', 'info', 0);
+  log.post('Asha pocketed 1 white coin', 'good', 1);
+  log.post('Your turn', 'info', 2);
+  assert.deepEqual(log.visible(2).map((l) => l.text), ['Asha pocketed 1 white coin', 'Your turn']);
+  assert.deepEqual(log.visible(8).map((l) => l.text), ['Your turn']);
+  const later = new HudLog(5, 6);
+  later.post('Your turn', 'info', 0);
+  later.post('Your turn', 'info', 7);
+  assert.equal(later.lines.length, 2);
 });
