@@ -109,16 +109,17 @@ void AppWindow::draw(double now) {
         const bool playing =
             v.you >= 0 && (v.phase == proto::Phase::Aiming || v.phase == proto::Phase::Moving);
         const double tips_h =
-            menus_.draw_tips(window_, hud_.texts(), layout_.side, playing, v.rule_set);
+            menus_.draw_tips(window_, blitter_, hud_.texts(), layout_.side, playing, v.rule_set);
         const double bar_w = menus_.layout_bar(hud_.texts(), layout_.bottom_bar);
+        Sketch bar_buttons;
+        menus_.sketch_bar(bar_buttons);
         // While the link is lost the card over the board has the details; the bar its title.
         const bool linked = phase == SessionPhase::InRoom || phase == SessionPhase::Joining;
         const ReconnectText card =
             reconnect_text(phase, session_.reconnect_info(now), session_.status_text());
         ConnectionLine line{linked ? session_.status_text() : card.title, linked,
                             session_.rtt_ms()};
-        hud_.draw(window_, blitter_, layout_, model_, line, now, tips_h, bar_w);
-        menus_.draw_bar(window_, hud_.texts());
+        hud_.draw(window_, blitter_, layout_, model_, line, now, tips_h, bar_w, bar_buttons);
         if (model_.view().phase == proto::Phase::GameOver) {
             game_over_.draw(window_, blitter_, hud_.texts(), layout_.board,
                             game_over_text(model_.view(), rematch_asked_));
@@ -127,7 +128,7 @@ void AppWindow::draw(double now) {
             phase == SessionPhase::Connecting || phase == SessionPhase::Greeting) {
             reconnect_panel_.draw(window_, hud_.texts(), layout_.board, card);
         }
-        menus_.draw_dialog(window_, hud_.texts(), layout_.board, band);
+        menus_.draw_dialog(window_, blitter_, hud_.texts(), layout_.board, band);
         return;
     }
     window_.clear(BoardPainter::kMargin);
@@ -153,7 +154,7 @@ void AppWindow::draw(double now) {
                           session_.status_text());
         break;
     }
-    menus_.draw_dialog(window_, hud_.texts(), layout_.board, band);
+    menus_.draw_dialog(window_, blitter_, hud_.texts(), layout_.board, band);
 }
 
 } // namespace carrom::client::app

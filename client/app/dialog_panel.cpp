@@ -16,8 +16,22 @@ const sf::Color kChosenButton(154, 90, 32);
 
 } // namespace
 
-double DialogPanel::draw(sf::RenderTarget& target, TextCache& texts, const Rect& area,
-                         const Dialog& dialog, bool at_top) {
+double DialogPanel::draw(sf::RenderTarget& target, Blitter& blitter, TextCache& texts,
+                         const Rect& area, const Dialog& dialog, bool at_top) {
+    const bool same = made_for_ && made_for_->dialog == dialog && made_for_->at_top == at_top &&
+                      made_for_->area.x == area.x && made_for_->area.y == area.y &&
+                      made_for_->area.w == area.w && made_for_->area.h == area.h;
+    if (!same) {
+        card_h_ = sketch(texts, area, dialog, at_top);
+        made_for_ = MadeFor{area, dialog, at_top};
+    }
+    layer_.draw_overlay(target, blitter, texts, sketch_);
+    return card_h_;
+}
+
+double DialogPanel::sketch(TextCache& texts, const Rect& area, const Dialog& dialog, bool at_top) {
+    sketch_ = Sketch{};
+    Sketch& s = sketch_;
     // A card over the board scales with the board; the side area's card is small and keeps its
     // buttons in one row at its right, so that it fits a side area 56 px high.
     const double scale_h = at_top ? 300.0 : area.h;
@@ -63,18 +77,17 @@ double DialogPanel::draw(sf::RenderTarget& target, TextCache& texts, const Rect&
                              : Rect{std::round(area.x + (area.w - w) / 2.0),
                                     std::round(area.y + (area.h - h) / 2.0), w, h};
     if (!at_top) {
-        draw_panel(target, area, kDialogVeil);
+        s.panel(area, kDialogVeil);
     }
-    draw_panel(target, card, kDialogCard, kGold, 2.0f);
+    s.panel(card, kDialogCard, kGold, 2.0f);
     const auto cx = static_cast<float>(card.x + card.w / 2.0);
     double y = at_top ? card.y + (card.h - text_h) / 2.0 : card.y + pad;
     if (!dialog.title.empty()) {
-        texts.draw(target, dialog.title, title_size, cx, f(y + title_h / 2.0), kGold,
-                   Align::Centre);
+        s.text(dialog.title, title_size, cx, f(y + title_h / 2.0), kGold, Align::Centre);
         y += title_h;
     }
     for (const std::string& line : lines) {
-        texts.draw(target, line, body_size, f(card.x + pad), f(y + line_h / 2.0), kText);
+        s.text(line, body_size, f(card.x + pad), f(y + line_h / 2.0), kText);
         y += line_h;
     }
     y = at_top ? card.y + (card.h - button_h) / 2.0 : y + gap;
@@ -89,9 +102,9 @@ double DialogPanel::draw(sf::RenderTarget& target, TextCache& texts, const Rect&
         for (const std::size_t i : row) {
             const Rect r{std::round(x), std::round(y), widths[i], button_h};
             const bool chosen = static_cast<int>(i) == dialog.chosen;
-            draw_panel(target, r, chosen ? kChosenButton : kButton, kGold, chosen ? 2.5f : 1.5f);
-            texts.draw(target, dialog.buttons[i], label_size, f(r.x + r.w / 2.0),
-                       f(r.y + r.h / 2.0), kText, Align::Centre);
+            s.panel(r, chosen ? kChosenButton : kButton, kGold, chosen ? 2.5f : 1.5f);
+            s.text(dialog.buttons[i], label_size, f(r.x + r.w / 2.0), f(r.y + r.h / 2.0), kText,
+                   Align::Centre);
             buttons_[i] = r;
             x += widths[i] + gap;
         }

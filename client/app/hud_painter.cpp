@@ -72,15 +72,16 @@ std::string queen_text(const MatchModel& model) {
 
 void HudPainter::draw(sf::RenderTarget& target, Blitter& blitter, const ScreenLayout& layout,
                       const MatchModel& model, const ConnectionLine& connection, double local_s,
-                      double side_taken, double bar_taken) {
+                      double side_taken, double bar_taken, const Sketch& bar_buttons) {
     top_.draw(target, blitter, texts_, layout.top_bar, kBar,
               top_bar(layout.top_bar, model, local_s));
     if (layout.seat_bar.h > 0.0) {
         seat_.draw(target, blitter, texts_, layout.seat_bar, kBar,
                    seat_bar(layout.seat_bar, model, local_s));
     }
-    bottom_.draw(target, blitter, texts_, layout.bottom_bar, kBar,
-                 bottom_bar(layout.bottom_bar, model, connection, bar_taken));
+    Sketch bottom = bottom_bar(layout.bottom_bar, model, connection, bar_taken);
+    bottom.items.insert(bottom.items.end(), bar_buttons.items.begin(), bar_buttons.items.end());
+    bottom_.draw(target, blitter, texts_, layout.bottom_bar, kBar, bottom);
     Sketch over_board;
     const Rect& side = layout.side;
     const double gap = side_taken > 0.0 ? 6.0 : 0.0;
@@ -291,7 +292,7 @@ void HudPainter::sketch_messages(Sketch& sk, const Rect& side, const MatchModel&
     std::vector<std::pair<std::vector<std::string>, Tone>> wrapped;
     double total = 0.0;
     for (const HudLine& line : lines) {
-        wrapped.emplace_back(wrap_text(texts_, line.text, size, side.w - 2.0 * pad), line.tone);
+        wrapped.emplace_back(this->wrapped(line.text, size, side.w - 2.0 * pad), line.tone);
         total += static_cast<double>(wrapped.back().first.size()) * line_h + 4.0;
     }
     double y = side.y + std::min(0.0, side.h - total);
@@ -311,6 +312,19 @@ void HudPainter::sketch_messages(Sketch& sk, const Rect& side, const MatchModel&
         }
         y += h + 4.0;
     }
+}
+
+const std::vector<std::string>& HudPainter::wrapped(const std::string& text, unsigned size,
+                                                    double width) {
+    if (width != wrapped_width_ || wrapped_.size() > 64) {
+        wrapped_.clear();
+        wrapped_width_ = width;
+    }
+    auto it = wrapped_.find(text);
+    if (it == wrapped_.end()) {
+        it = wrapped_.emplace(text, wrap_text(texts_, text, size, width)).first;
+    }
+    return it->second;
 }
 
 void HudPainter::sketch_room_code(Sketch& sk, const Rect& board, const MatchModel& model) const {

@@ -14,6 +14,7 @@
 
 #include <SFML/Graphics.hpp>
 
+#include <map>
 #include <optional>
 #include <string>
 #include <utility>
@@ -36,7 +37,7 @@ public:
     // the bottom bar its buttons use.
     void draw(sf::RenderTarget& target, Blitter& blitter, const ScreenLayout& layout,
               const MatchModel& model, const ConnectionLine& connection, double local_s,
-              double side_taken = 0.0, double bar_taken = 0.0);
+              double side_taken = 0.0, double bar_taken = 0.0, const Sketch& bar_buttons = {});
     // How often the bars and the messages were painted into their textures.
     long bar_repaints() const {
         return top_.repaints() + seat_.repaints() + bottom_.repaints() + over_board_.repaints();
@@ -58,6 +59,8 @@ private:
                        float y) const;
     Sketch bottom_bar(const Rect& area, const MatchModel& model, const ConnectionLine& connection,
                       double bar_taken);
+    // The message rows of `text` at `width` (wrapped once per text and width).
+    const std::vector<std::string>& wrapped(const std::string& text, unsigned size, double width);
     void sketch_messages(Sketch& s, const Rect& side, const MatchModel& model, double local_s);
     void sketch_room_code(Sketch& s, const Rect& board, const MatchModel& model) const;
 
@@ -67,6 +70,8 @@ private:
     CachedLayer bottom_;
     CachedLayer over_board_;
     std::vector<std::pair<std::string, Rect>> messages_;
+    std::map<std::string, std::vector<std::string>> wrapped_; // at wrapped_width_
+    double wrapped_width_ = 0.0;
 };
 
 } // namespace carrom::client::app

@@ -184,18 +184,18 @@ double MatchMenus::layout_bar(TextCache& texts, const Rect& bar) {
     return bar.x + bar.w - x;
 }
 
-void MatchMenus::draw_bar(sf::RenderTarget& target, TextCache& texts) const {
+void MatchMenus::sketch_bar(Sketch& sketch) const {
     const std::vector<std::string> labels = bar_labels(settings_.muted);
     for (std::size_t i = 0; i < bar_.size(); ++i) {
         const Rect& r = bar_[i];
-        draw_panel(target, r, kButton, kGold, 1.0f);
-        texts.draw(target, labels[i], static_cast<unsigned>(std::lround(r.h * 0.5)),
-                   f(r.x + r.w / 2.0), f(r.y + r.h / 2.0), kText, Align::Centre);
+        sketch.panel(r, kButton, kGold, 1.0f);
+        sketch.text(labels[i], static_cast<unsigned>(std::lround(r.h * 0.5)), f(r.x + r.w / 2.0),
+                    f(r.y + r.h / 2.0), kText, Align::Centre);
     }
 }
 
-void MatchMenus::draw_dialog(sf::RenderTarget& target, TextCache& texts, const Rect& board,
-                             const Rect& band) {
+void MatchMenus::draw_dialog(sf::RenderTarget& target, Blitter& blitter, TextCache& texts,
+                             const Rect& board, const Rect& band) {
     Dialog d;
     const Rect* area = &band;
     switch (open_) {
@@ -238,11 +238,11 @@ void MatchMenus::draw_dialog(sf::RenderTarget& target, TextCache& texts, const R
                      "Reduced motion", "Close"};
         break;
     }
-    dialog_.draw(target, texts, *area, d, false);
+    dialog_.draw(target, blitter, texts, *area, d, false);
 }
 
-double MatchMenus::draw_tips(sf::RenderTarget& target, TextCache& texts, const Rect& side,
-                             bool playing, proto::RuleSet rule_set) {
+double MatchMenus::draw_tips(sf::RenderTarget& target, Blitter& blitter, TextCache& texts,
+                             const Rect& side, bool playing, proto::RuleSet rule_set) {
     tips_shown_ = playing && !settings_.coached && side.w > 0.0 && side.h > 0.0;
     if (!tips_shown_) {
         tips_.hide();
@@ -251,7 +251,7 @@ double MatchMenus::draw_tips(sf::RenderTarget& target, TextCache& texts, const R
     Dialog d;
     d.lines = {walkthrough_steps(rule_set)[static_cast<std::size_t>(tip_step_)]};
     d.buttons = {tip_step_ + 1 < kTipSteps ? "Next" : "Got it", "Skip"};
-    return tips_.draw(target, texts, side, d, true);
+    return tips_.draw(target, blitter, texts, side, d, true);
 }
 
 } // namespace carrom::client::app

@@ -40,14 +40,15 @@ public:
 
     // Lays out the bottom bar's buttons (right-aligned in `bar`); returns their total width.
     double layout_bar(TextCache& texts, const Rect& bar);
-    void draw_bar(sf::RenderTarget& target, TextCache& texts) const;
+    // The buttons as laid out, for the bottom bar's sketch (the HUD paints them with the bar).
+    void sketch_bar(Sketch& sketch) const;
     // The open dialog: the question over the board, the rules and settings over `band` (the
     // window between the bars).
-    void draw_dialog(sf::RenderTarget& target, TextCache& texts, const Rect& board,
-                     const Rect& band);
+    void draw_dialog(sf::RenderTarget& target, Blitter& blitter, TextCache& texts,
+                     const Rect& board, const Rect& band);
     // The tips card at the top of `side` while `playing` and not yet seen; its height (0: none).
-    double draw_tips(sf::RenderTarget& target, TextCache& texts, const Rect& side, bool playing,
-                     proto::RuleSet rule_set);
+    double draw_tips(sf::RenderTarget& target, Blitter& blitter, TextCache& texts, const Rect& side,
+                     bool playing, proto::RuleSet rule_set);
 
     const Settings& settings() const { return settings_; }
     const std::string& settings_problem() const { return problem_; }
