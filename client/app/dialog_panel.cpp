@@ -51,11 +51,31 @@ double DialogPanel::sketch(TextCache& texts, const Rect& area, const Dialog& dia
         all_w += widths.back() + gap;
     }
     const double text_w = at_top ? w - 2 * pad - all_w : w - 2 * pad;
-    std::vector<std::string> lines;
+    // Several sentences: each a bulleted paragraph, its later rows indented under its text, a
+    // little space between paragraphs; an empty sentence is a wider space.
+    struct Row {
+        std::string text;
+        double x = 0.0; // from the card's text edge
+        double gap_before = 0.0;
+    };
+    const bool bullets = dialog.lines.size() > 1;
+    const double indent = bullets ? std::round(static_cast<double>(body_size) * 1.2) : 0.0;
+    std::vector<Row> lines;
+    double text_h = 0.0;
+    double gap_next = 0.0;
     for (const std::string& sentence : dialog.lines) {
-        for (std::string& l : wrap_text(texts, sentence, body_size, text_w)) {
-            lines.push_back(std::move(l));
+        if (sentence.empty()) {
+            gap_next += line_h * 0.5;
+            continue;
         }
+        bool first = true;
+        for (std::string& l : wrap_text(texts, sentence, body_size, text_w - indent)) {
+            lines.push_back({first && bullets ? "\xe2\x80\xa2" : "", 0.0, first ? gap_next : 0.0});
+            lines.push_back({std::move(l), indent, 0.0});
+            text_h += line_h + (first ? gap_next : 0.0);
+            first = false;
+        }
+        gap_next = bullets ? line_h * 0.25 : 0.0;
     }
     // Over the board the buttons flow into rows that fit the card, each row centred.
     std::vector<std::vector<std::size_t>> rows;
@@ -69,7 +89,6 @@ double DialogPanel::sketch(TextCache& texts, const Rect& area, const Dialog& dia
         rows.back().push_back(i);
     }
     const double title_h = dialog.title.empty() ? 0.0 : std::round(title_size * 1.5);
-    const double text_h = line_h * static_cast<double>(lines.size());
     const double rows_h = static_cast<double>(rows.size()) * (button_h + gap);
     const double h = at_top ? std::round(2 * pad + std::max(text_h, button_h))
                             : std::round(pad + title_h + text_h + gap + rows_h + pad * 0.4);
@@ -86,8 +105,14 @@ double DialogPanel::sketch(TextCache& texts, const Rect& area, const Dialog& dia
         s.text(dialog.title, title_size, cx, f(y + title_h / 2.0), kGold, Align::Centre);
         y += title_h;
     }
-    for (const std::string& line : lines) {
-        s.text(line, body_size, f(card.x + pad), f(y + line_h / 2.0), kText);
+    // Rows come in pairs: the bullet (or nothing), then the text.
+    for (std::size_t i = 0; i + 1 < lines.size(); i += 2) {
+        y += lines[i].gap_before;
+        if (!lines[i].text.empty()) {
+            s.text(lines[i].text, body_size, f(card.x + pad), f(y + line_h / 2.0), kGold);
+        }
+        s.text(lines[i + 1].text, body_size, f(card.x + pad + lines[i + 1].x), f(y + line_h / 2.0),
+               kText);
         y += line_h;
     }
     y = at_top ? card.y + (card.h - button_h) / 2.0 : y + gap;
