@@ -7,40 +7,12 @@
 // show and can be skipped; Leave asks first and Stay keeps the match; the reconnecting card dims
 // the board, says how long the seat is held and leaves the bottom bar whole.
 
-import net from 'node:net';
-
 import { check, launchBrowser, pageUrl, run, sleep, startServer, startWebServer } from './lib/harness.mjs';
 import { Player } from './lib/player.mjs';
+import { relay } from './lib/relay.mjs';
 
 const PHONE = { viewport: { width: 390, height: 844 }, deviceScaleFactor: 3, isMobile: true, hasTouch: true };
 const DESK = { viewport: { width: 1000, height: 800 } };
-
-// Relays 127.0.0.1:port to the server; cut() closes every relayed connection and refuses new ones
-// until open() (a server out of reach).
-async function relay(target) {
-  const sockets = new Set();
-  let refusing = false;
-  const server = net.createServer((client) => {
-    if (refusing) {
-      client.destroy();
-      return;
-    }
-    const upstream = net.connect(target, '127.0.0.1');
-    for (const [a, b] of [[client, upstream], [upstream, client]]) {
-      sockets.add(a);
-      a.on('close', () => { sockets.delete(a); b.destroy(); });
-      a.on('error', () => b.destroy());
-      a.pipe(b);
-    }
-  });
-  await new Promise((r) => { server.listen(0, '127.0.0.1', r); });
-  return {
-    ws: `ws://127.0.0.1:${server.address().port}/`,
-    cut: () => { refusing = true; for (const s of sockets) s.destroy(); },
-    open: () => { refusing = false; },
-    close: () => server.close(),
-  };
-}
 
 // Rects (client px) of what the layout checks look at.
 function layoutRects(page) {
@@ -200,6 +172,7 @@ run('web.first_game_ui', 150000, async (t) => {
   check(rects.board.w >= 600, `the board stays large (${rects.board.w})`);
   checkMessages(rects, 'desktop');
 
+  cut.refuse(true);
   cut.cut();
   await desk.waitFor('reconnecting', (st) => st.session.phase !== 'in_room', 15000);
   await d.waitForFunction(() => !document.getElementById('notice').hidden, null, { timeout: 15000 });
@@ -217,7 +190,7 @@ run('web.first_game_ui', 150000, async (t) => {
   check(card.dimmed.startsWith('brightness'), `the board is dimmed (${card.dimmed})`);
   check(card.cut.length === 0, `bottom bar items cut: ${card.cut.join(', ')}`);
   check(card.barH < 60, `the bottom bar keeps one line (${card.barH} px)`);
-  cut.open();
+  cut.refuse(false);
   await desk.waitFor('back in the room', (st) => st.session.phase === 'in_room', 20000);
   check(!(await d.isVisible('#notice')), 'the card goes once the seat is back');
   cut.close();

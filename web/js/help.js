@@ -4,6 +4,7 @@
 // how_to_play.js's.
 
 import { controlsHelp, howToPlay, walkthroughSteps } from './how_to_play.js';
+import { RULE_SETS } from './protocol.js';
 
 const $ = (id) => document.getElementById(id);
 const COACHED_KEY = 'carrom.coached'; // '1' once the tips were seen to the end or skipped
@@ -21,6 +22,7 @@ export class Help {
     this.storage = storage;
     this.sheet = $('rules');
     this.ruleSet = $('rules-set');
+    this.ruleSet.replaceChildren(...RULE_SETS.map((r) => new Option(howToPlay(r).title, r)));
     this.ruleSet.addEventListener('change', () => this.fill());
     $('rules-close').addEventListener('click', () => this.show(false));
     $('coach-again').addEventListener('click', () => {
@@ -32,6 +34,7 @@ export class Help {
     $('coach-skip').addEventListener('click', () => this.finish());
     this.coach = $('coach');
     this.coachText = $('coach-text');
+    this.nextButton = $('coach-next');
     this.step = 0;
     fillList($('rules-controls'), controlsHelp());
     this.fill();
@@ -72,8 +75,13 @@ export class Help {
     const show = inMatch && !this.coached();
     if (this.coach.hidden === show) this.coach.hidden = !show;
     if (!show) return;
-    const text = walkthroughSteps(ruleSet)[this.step];
+    if (this.stepsFor !== ruleSet) {
+      this.steps = walkthroughSteps(ruleSet); // made once per rule set, not every frame
+      this.stepsFor = ruleSet;
+    }
+    const text = this.steps[this.step];
     if (this.coachText.textContent !== text) this.coachText.textContent = text;
-    $('coach-next').textContent = this.step === 3 ? 'Got it' : 'Next';
+    const next = this.step === 3 ? 'Got it' : 'Next';
+    if (this.nextButton.textContent !== next) this.nextButton.textContent = next;
   }
 }

@@ -54,8 +54,10 @@ export class Hud {
     this.el.rematch.addEventListener('click', () => actions.rematch());
     $('to-lobby').addEventListener('click', () => actions.lobby());
     this.el.leave.addEventListener('click', () => actions.leave());
-    $('help').addEventListener('click', () => actions.help());
-    $('settings-open').addEventListener('click', () => actions.settings());
+    this.el.help = $('help');
+    this.el.settings = $('settings-open');
+    this.el.help.addEventListener('click', () => actions.help());
+    this.el.settings.addEventListener('click', () => actions.settings());
     this.el.leaveAsk = $('leave-ask');
     this.el.leaveAskText = $('leave-ask-text');
     this.el.wrap = $('board-wrap');
@@ -217,8 +219,8 @@ export class Hud {
     setText(e.conn, conn);
     setClass(e.conn, 'alert', !['in_room', 'lobby', 'joining', 'idle'].includes(session.phase));
     setHidden(e.leave, !v.inRoom);
-    setHidden($('help'), !v.inRoom);
-    setHidden($('settings-open'), !v.inRoom);
+    setHidden(e.help, !v.inRoom);
+    setHidden(e.settings, !v.inRoom);
     if (!v.inRoom) setHidden(e.leaveAsk, true);
     setHidden(e.cancel, !ui.pulling);
     setText(e.mute, ui.muted ? 'Sound: off' : 'Sound: on');
