@@ -10,7 +10,7 @@
 namespace carrom::client::app {
 namespace {
 const sf::Color kButtonEdge{236, 184, 64};
-const sf::Color kField{240, 228, 200};
+const sf::Color kLobbyField{240, 228, 200};
 } // namespace
 
 Rect LobbyView::control_rect(Control c, const Rect& area) const {
@@ -200,7 +200,7 @@ void LobbyView::draw(sf::RenderTarget& target, const Rect& area, const std::stri
             const bool doubles = seats_ == 4;
             const bool chosen = (c == kSingles && !doubles) || (c == kDoubles && doubles);
             const bool mode = c == kSingles || c == kDoubles;
-            const sf::Color fill = field             ? kField
+            const sf::Color fill = field             ? kLobbyField
                                    : mode && !chosen ? sf::Color(52, 34, 22)
                                                      : kButton;
             draw_panel(target, r, fill, mode && !chosen ? sf::Color(150, 110, 60) : kButtonEdge,

@@ -11,16 +11,16 @@
 namespace carrom::client::app {
 namespace {
 
-constexpr std::array<proto::RuleSet, 4> kRuleSets{
+constexpr std::array<proto::RuleSet, 4> kMenuRuleSets{
     proto::RuleSet::Icf, proto::RuleSet::Seed, proto::RuleSet::Freestyle, proto::RuleSet::DiscPool};
 constexpr int kTipSteps = 4;
 constexpr int kVolumeStep = 10; // percent
 
-std::vector<std::string> bar_labels(bool muted) {
+std::vector<std::string> menu_bar_labels(bool muted) {
     return {"Rules", "Settings", muted ? "Sound: off" : "Sound: on", "Leave"};
 }
 
-bool key(const sf::Event& e, sf::Keyboard::Key k) {
+bool key_pressed(const sf::Event& e, sf::Keyboard::Key k) {
     return e.type == sf::Event::KeyPressed && e.key.code == k;
 }
 
@@ -68,9 +68,11 @@ MatchMenus::Outcome MatchMenus::dialog_event(const sf::Event& e) {
     const std::optional<int> button = dialog_.clicked(e);
     switch (open_) {
     case Open::Leave:
-        if (key(e, sf::Keyboard::Escape) || key(e, sf::Keyboard::N) || button == 0) {
+        if (key_pressed(e, sf::Keyboard::Escape) || key_pressed(e, sf::Keyboard::N) ||
+            button == 0) {
             open_ = Open::None;
-        } else if (key(e, sf::Keyboard::Enter) || key(e, sf::Keyboard::Y) || button == 1) {
+        } else if (key_pressed(e, sf::Keyboard::Enter) || key_pressed(e, sf::Keyboard::Y) ||
+                   button == 1) {
             open_ = Open::None;
             out.leave = true;
         }
@@ -84,8 +86,8 @@ MatchMenus::Outcome MatchMenus::dialog_event(const sf::Event& e) {
             change(next);
             tip_step_ = 0;
             open_ = Open::None;
-        } else if (button == 5 || key(e, sf::Keyboard::Escape) || key(e, sf::Keyboard::H) ||
-                   key(e, sf::Keyboard::F1)) {
+        } else if (button == 5 || key_pressed(e, sf::Keyboard::Escape) ||
+                   key_pressed(e, sf::Keyboard::H) || key_pressed(e, sf::Keyboard::F1)) {
             open_ = Open::None;
         }
         break;
@@ -95,11 +97,11 @@ MatchMenus::Outcome MatchMenus::dialog_event(const sf::Event& e) {
             next.volume = std::max(next.volume - kVolumeStep, 0);
         } else if (button == 1) {
             next.volume = std::min(next.volume + kVolumeStep, 100);
-        } else if (button == 2 || key(e, sf::Keyboard::M)) {
+        } else if (button == 2 || key_pressed(e, sf::Keyboard::M)) {
             next.muted = !next.muted;
         } else if (button == 3) {
             next.reduced_motion = !next.reduced_motion;
-        } else if (button == 4 || key(e, sf::Keyboard::Escape)) {
+        } else if (button == 4 || key_pressed(e, sf::Keyboard::Escape)) {
             open_ = Open::None;
         }
         if (!(next == settings_)) {
@@ -133,7 +135,7 @@ MatchMenus::Outcome MatchMenus::on_event(const sf::Event& e, bool in_room,
         }
     }
     if (!in_room) {
-        if (key(e, sf::Keyboard::F1)) {
+        if (key_pressed(e, sf::Keyboard::F1)) {
             open_ = Open::Rules; // at the tab last shown (the lobby's choice when its button)
             out.used = true;
         }
@@ -148,18 +150,18 @@ MatchMenus::Outcome MatchMenus::on_event(const sf::Event& e, bool in_room,
             }
         }
     }
-    if (bar == 0 || key(e, sf::Keyboard::H) || key(e, sf::Keyboard::F1)) {
+    if (bar == 0 || key_pressed(e, sf::Keyboard::H) || key_pressed(e, sf::Keyboard::F1)) {
         open_rules(rule_set);
         out.used = true;
     } else if (bar == 1) {
         open_ = Open::Settings;
         out.used = true;
-    } else if (bar == 2 || key(e, sf::Keyboard::M)) {
+    } else if (bar == 2 || key_pressed(e, sf::Keyboard::M)) {
         Settings next = settings_;
         next.muted = !next.muted;
         change(next);
         out.used = true;
-    } else if (bar == 3 || key(e, sf::Keyboard::L)) {
+    } else if (bar == 3 || key_pressed(e, sf::Keyboard::L)) {
         out.want_leave = true;
         out.used = true;
     }
@@ -172,7 +174,7 @@ double MatchMenus::layout_bar(TextCache& texts, const Rect& bar) {
     const double gap = 6.0;
     bar_.clear();
     double x = bar.x + bar.w - gap;
-    std::vector<std::string> labels = bar_labels(settings_.muted);
+    std::vector<std::string> labels = menu_bar_labels(settings_.muted);
     std::vector<Rect> rects(labels.size());
     for (std::size_t i = labels.size(); i-- > 0;) {
         const double w = std::round(static_cast<double>(texts.width(labels[i], size)) + h * 0.8);
@@ -185,7 +187,7 @@ double MatchMenus::layout_bar(TextCache& texts, const Rect& bar) {
 }
 
 void MatchMenus::sketch_bar(Sketch& sketch) const {
-    const std::vector<std::string> labels = bar_labels(settings_.muted);
+    const std::vector<std::string> labels = menu_bar_labels(settings_.muted);
     for (std::size_t i = 0; i < bar_.size(); ++i) {
         const Rect& r = bar_[i];
         sketch.panel(r, kButton, kGold, 1.0f);
@@ -209,7 +211,7 @@ void MatchMenus::draw_dialog(sf::RenderTarget& target, Blitter& blitter, TextCac
         area = &board;
         break;
     case Open::Rules: {
-        const proto::RuleSet rule_set = kRuleSets[static_cast<std::size_t>(rules_tab_)];
+        const proto::RuleSet rule_set = kMenuRuleSets[static_cast<std::size_t>(rules_tab_)];
         const HowToPlay h = how_to_play(rule_set);
         d.title = "How to play: " + h.title;
         d.lines = h.rules;
@@ -218,7 +220,7 @@ void MatchMenus::draw_dialog(sf::RenderTarget& target, Blitter& blitter, TextCac
             d.lines.push_back(c);
         }
         d.lines.emplace_back("Keys: H rules, M sound on or off, L leave, Escape closes this.");
-        for (const proto::RuleSet r : kRuleSets) {
+        for (const proto::RuleSet r : kMenuRuleSets) {
             d.buttons.push_back(how_to_play(r).title);
         }
         d.buttons.emplace_back("First-game tips again");
