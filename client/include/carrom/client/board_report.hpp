@@ -16,9 +16,9 @@ namespace carrom::client {
 struct ReportContext {
     double window_w = 0.0; // window px
     double window_h = 0.0;
-    int shots_seen = 0;          // shot results received so far
-    std::optional<Rect> overlay; // window px covered by the messages and the room code
-    PredictionStats prediction;  // the own strokes predicted and the server's corrections
+    int shots_seen = 0;           // shot results received so far
+    std::optional<Rect> overlay;  // window px covered by the messages and the room code
+    PredictionStats prediction;   // the own strokes predicted and the server's corrections
     std::string ui_json = "null"; // the window's menus and side area, a JSON value ("ui")
 };
 
