@@ -5,7 +5,9 @@
 //
 // web-aim.png: 900 x 900, a game against a server bot, the break being aimed (the pull, the
 // guide and the power ring). web-phone.png: 390 x 844 at 2 device px per CSS px, touch, the
-// board after the break against a server bot. web-doubles-side.png: 900 x 900, a doubles game of
+// board after the break against a server bot (the first-game tips skipped, the log under the
+// board). web-rules.png: the same phone, How to play opened from the match (freestyle).
+// web-doubles-side.png: 900 x 900, a doubles game of
 // four pages (ICF rules), the right seat's view (a quarter turn: its own baseline at the
 // bottom, its partner across) aiming its first shot after the break. web-replay.png: 900 x 900,
 // the replay page (#/replay/ID) of a game the page played against a server bot (freestyle to
@@ -142,6 +144,9 @@ run('web_screenshots', 300000, async (t) => {
   s = await phone.waitFor('our break', (st) => st.inRoom && st.myTurn && !st.animating && st.aim.phase === 'idle');
   await phone.shoot(breakShot(s.aim.y));
   await phone.waitFor('the break over', (st, turn) => st.turn !== turn && !st.animating, 30000, s.turn);
+  await phone.press('#coach-skip');
   await phone.page.screenshot({ path: path.join(out, 'web-phone.png') });
-  console.log(`saved ${path.join(out, 'web-aim.png')} and ${path.join(out, 'web-phone.png')}`);
+  await phone.press('#help');
+  await phone.page.screenshot({ path: path.join(out, 'web-rules.png') });
+  console.log(`saved ${['web-aim.png', 'web-phone.png', 'web-rules.png'].map((f) => path.join(out, f)).join(', ')}`);
 });

@@ -7,6 +7,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace carrom::client::app {
 
@@ -44,6 +45,10 @@ struct AppOptions {
     double replay_at_s = -1.0;
     // Non-empty: write each frame drawn in a room and each shot sent there (frame_log.hpp).
     std::string frame_log_path;
+    // The settings file (settings_file.hpp); empty: $XDG_CONFIG_HOME/carrom/settings.json.
+    std::string settings_path;
+    // --input: keys and clicks to give the window unattended (input_script_mode.hpp).
+    std::vector<std::string> input_script;
 };
 
 // Runs until the window closes; returns the process exit code.

@@ -18,6 +18,7 @@
 #include "game_over_panel.hpp"
 #include "hud_painter.hpp"
 #include "lobby_view.hpp"
+#include "match_menus.hpp"
 #include "reconnect_panel.hpp"
 #include "sound_player.hpp"
 #include "unattended_mode.hpp"
@@ -42,6 +43,12 @@ private:
     void handle_event(const sf::Event& e);
     void handle_match_input(const sf::Event& e);
     void handle_game_over_input(const sf::Event& e);
+    // The menus' share of an event (match_menus.hpp); true when it was theirs.
+    bool handle_menu_input(const sf::Event& e);
+    // Leave pressed: asks first while our game runs (leaving forfeits it), else leaves.
+    void want_leave();
+    // What the menus and the side area show, as JSON for the screenshot report.
+    std::string ui_json() const;
     void back_to_lobby();
     void update(double now);
     void sync_aim(double now);
@@ -52,6 +59,8 @@ private:
     // Hands the frame just drawn (number `frame`) to the unattended mode; its exit code when it
     // ends the run.
     std::optional<int> unattended_frame(int frame);
+    // Where the lobby is drawn: the board's square without a side area.
+    Rect lobby_area() const { return make_layout(window_.getSize().x, window_.getSize().y).board; }
     ScreenMapping mapping() const {
         return make_mapping(layout_.board, physics_.board_size_px, model_.view_side());
     }
@@ -67,6 +76,7 @@ private:
     BoardPainter board_painter_;
     HudPainter hud_;
     LobbyView lobby_;
+    MatchMenus menus_;
     GameOverPanel game_over_;
     ReconnectPanel reconnect_panel_;
     SoundPlayer sound_;

@@ -43,7 +43,14 @@ void AppWindow::draw_aim() {
                               static_cast<unsigned>(std::max(12.0, m.length_to_screen(11.0))),
                               f(label.x), f(label.y), sf::Color::White, Align::Centre);
         }
-        board_painter_.draw_striker(window_, blitter_, m, s, 1.0, !aim_.placement().legal);
+        std::optional<std::pair<Vec2, double>> blocking;
+        for (const RenderedBody& b : bodies_) {
+            if (b.id == aim_.placement().blocking_id) {
+                blocking = std::pair{b.pos_px, physics_.radius(b.kind)};
+            }
+        }
+        board_painter_.draw_striker(window_, blitter_, m, s, 1.0, !aim_.placement().legal,
+                                    blocking);
         aim_striker_drawn_ = s;
         if (!aim_.placement().legal) {
             const Vec2 label =
@@ -98,13 +105,21 @@ void AppWindow::draw(double now) {
         board_painter_.draw_board(window_, blitter_, m, band);
         board_painter_.draw_pieces(window_, blitter_, m, bodies_);
         draw_aim();
+        const MatchView& v = model_.view();
+        const bool playing =
+            v.you >= 0 && (v.phase == proto::Phase::Aiming || v.phase == proto::Phase::Moving);
+        const double tips_h =
+            menus_.draw_tips(window_, blitter_, hud_.texts(), layout_.side, playing, v.rule_set);
+        const double bar_w = menus_.layout_bar(hud_.texts(), layout_.bottom_bar);
+        Sketch bar_buttons;
+        menus_.sketch_bar(bar_buttons);
         // While the link is lost the card over the board has the details; the bar its title.
         const bool linked = phase == SessionPhase::InRoom || phase == SessionPhase::Joining;
         const ReconnectText card =
             reconnect_text(phase, session_.reconnect_info(now), session_.status_text());
         ConnectionLine line{linked ? session_.status_text() : card.title, linked,
                             session_.rtt_ms()};
-        hud_.draw(window_, blitter_, layout_, model_, line, now);
+        hud_.draw(window_, blitter_, layout_, model_, line, now, tips_h, bar_w, bar_buttons);
         if (model_.view().phase == proto::Phase::GameOver) {
             game_over_.draw(window_, blitter_, hud_.texts(), layout_.board,
                             game_over_text(model_.view(), rematch_asked_));
@@ -113,6 +128,7 @@ void AppWindow::draw(double now) {
             phase == SessionPhase::Connecting || phase == SessionPhase::Greeting) {
             reconnect_panel_.draw(window_, hud_.texts(), layout_.board, card);
         }
+        menus_.draw_dialog(window_, blitter_, hud_.texts(), layout_.board, band);
         return;
     }
     window_.clear(BoardPainter::kMargin);
@@ -125,10 +141,10 @@ void AppWindow::draw(double now) {
     }
     switch (phase) {
     case SessionPhase::Lobby:
-        lobby_.draw(window_, layout_.board, options_.name, session_.status_text(), error, true);
+        lobby_.draw(window_, lobby_area(), session_.status_text(), error, true);
         break;
     case SessionPhase::Joining:
-        lobby_.draw(window_, layout_.board, options_.name, session_.status_text(), error, false);
+        lobby_.draw(window_, lobby_area(), session_.status_text(), error, false);
         break;
     case SessionPhase::Failed:
         draw_status_panel("Cannot connect", session_.status_text());
@@ -138,6 +154,7 @@ void AppWindow::draw(double now) {
                           session_.status_text());
         break;
     }
+    menus_.draw_dialog(window_, blitter_, hud_.texts(), layout_.board, band);
 }
 
 } // namespace carrom::client::app

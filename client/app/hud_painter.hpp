@@ -1,10 +1,11 @@
 #pragma once
 // The HUD: seats with names, scores, dues and the coins each has left to pocket along the top;
 // whose turn, the shot clock and the queen in the middle; room, rule set, connection and round trip
-// along the bottom; recent messages over the board; the room code large while the room waits for a
-// player. Doubles: the seats at the left, across and right of the turned board along the top, our
-// own seat (the bottom one) in the seat bar below the board between the turn and the queen; the
-// partner marked, partners showing their team's score.
+// along the bottom (up to the buttons at its right, match_menus.hpp); recent messages in the side
+// area beside or under the board (never over it), newest last, below the first-game tips; the room
+// code large while the room waits for a player. Doubles: the seats at the left, across and right of
+// the turned board along the top, our own seat (the bottom one) in the seat bar below the board
+// between the turn and the queen; the partner marked, partners showing their team's score.
 
 #include "cached_layer.hpp"
 #include "carrom/client/match_model.hpp"
@@ -13,8 +14,11 @@
 
 #include <SFML/Graphics.hpp>
 
+#include <map>
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace carrom::client::app {
 
@@ -29,15 +33,20 @@ struct ConnectionLine {
 class HudPainter {
 public:
     explicit HudPainter(const sf::Font& font) : texts_(font) {}
+    // side_taken: the px at the top of layout.side the tips use; bar_taken: the px at the right of
+    // the bottom bar its buttons use.
     void draw(sf::RenderTarget& target, Blitter& blitter, const ScreenLayout& layout,
-              const MatchModel& model, const ConnectionLine& connection, double local_s);
+              const MatchModel& model, const ConnectionLine& connection, double local_s,
+              double side_taken = 0.0, double bar_taken = 0.0, const Sketch& bar_buttons = {});
     // How often the bars and the messages were painted into their textures.
     long bar_repaints() const {
         return top_.repaints() + seat_.repaints() + bottom_.repaints() + over_board_.repaints();
     }
     TextCache& texts() { return texts_; }
-    // The part of the board the last draw covered with messages or the room code, if any.
+    // The part of the window the last draw covered with messages or the room code, if any.
     const std::optional<Rect>& overlay_area() const { return over_board_.last_overlay(); }
+    // Each message line as last drawn: its text and window px.
+    const std::vector<std::pair<std::string, Rect>>& message_rects() const { return messages_; }
 
 private:
     Sketch top_bar(const Rect& area, const MatchModel& model, double local_s) const;
@@ -48,9 +57,11 @@ private:
     void sketch_centre(Sketch& s, const Rect& area, const MatchModel& model, double local_s) const;
     void sketch_status(Sketch& s, const Rect& area, const MatchModel& model, double local_s,
                        float y) const;
-    Sketch bottom_bar(const Rect& area, const MatchModel& model,
-                      const ConnectionLine& connection) const;
-    void sketch_messages(Sketch& s, const Rect& board, const MatchModel& model, double local_s);
+    Sketch bottom_bar(const Rect& area, const MatchModel& model, const ConnectionLine& connection,
+                      double bar_taken);
+    // The message rows of `text` at `width` (wrapped once per text and width).
+    const std::vector<std::string>& wrapped(const std::string& text, unsigned size, double width);
+    void sketch_messages(Sketch& s, const Rect& side, const MatchModel& model, double local_s);
     void sketch_room_code(Sketch& s, const Rect& board, const MatchModel& model) const;
 
     TextCache texts_;
@@ -58,6 +69,9 @@ private:
     CachedLayer seat_;
     CachedLayer bottom_;
     CachedLayer over_board_;
+    std::vector<std::pair<std::string, Rect>> messages_;
+    std::map<std::string, std::vector<std::string>> wrapped_; // at wrapped_width_
+    double wrapped_width_ = 0.0;
 };
 
 } // namespace carrom::client::app

@@ -92,6 +92,13 @@ int main(int argc, char** argv) {
     cli.add_option("--frame-log", options.frame_log_path,
                    "Write each frame drawn in a room (positions, shot time, playout state) and "
                    "each shot sent as JSON lines to this file (docs/client.md)");
+    cli.add_option("--settings", options.settings_path,
+                   "The settings file (volume, mute, reduced motion; default "
+                   "$XDG_CONFIG_HOME/carrom/settings.json)");
+    cli.add_option("--input", options.input_script,
+                   "Keys and clicks to give the window unattended, e.g. l,Escape or bar:3,dialog:0 "
+                   "(docs/client.md)")
+        ->delimiter(',');
     std::string replay;
     auto* replay_opt = cli.add_option(
         "--replay", replay,

@@ -235,7 +235,7 @@ int ReplayView::run() {
     window_.setFramerateLimit(144);
     const sf::Vector2u size = window_.getSize();
     window_.setView(sf::View(sf::FloatRect(0.0f, 0.0f, f(size.x), f(size.y))));
-    layout_ = make_layout(size.x, size.y, seat_count());
+    layout_ = make_layout(size.x, size.y, seat_count(), true);
     unattended_ = make_replay_unattended_mode(options_);
     using Clock = std::chrono::steady_clock;
     const auto started = Clock::now();

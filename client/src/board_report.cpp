@@ -49,6 +49,7 @@ std::string board_report_json(const MatchView& view, const std::vector<RenderedB
     } else {
         j["overlay"] = nullptr;
     }
+    j["ui"] = nlohmann::json::parse(context.ui_json, nullptr, false);
     return j.dump();
 }
 

@@ -287,8 +287,9 @@ test('the server\'s due per seat of a team makes one line per stroke', () => {
   }, 12);
   m.handle({ type: 'event', kind: 'due', seat: 3, owed: 2 }, 12); // another stroke: a line
   m.handle({ type: 'event', kind: 'due', seat: 0, owed: 2 }, 12); // the other team: a line
-  assert.deepEqual(lines(), ['Ravi & Dev owe 1 due', 'Ravi & Dev owe 2 dues', 'Ravi & Dev owe 2 dues',
-    'Asha & Chitra owe 2 dues']);
+  // Said again in the next stroke: the line still shown moves to the newest place (no line twice).
+  assert.deepEqual(lines(), ['Ravi & Dev owe 1 due', 'Ravi & Dev owe 2 dues', 'Asha & Chitra owe 2 dues']);
+  assert.equal(m.log.lines.find((l) => l.text === 'Ravi & Dev owe 2 dues').posted, 12);
   assert.deepEqual(m.view.seats.map((s) => s.dues), [2, 2, 2, 2]);
 });
 

@@ -16,6 +16,7 @@ import { MatchModel } from '../../web/js/match_model.js';
 import {
   countWords, errorSentence, pocketList, queenSentence, ruleSetName,
 } from '../../web/js/plain_words.js';
+import { controlsHelp, howToPlay, walkthroughSteps } from '../../web/js/how_to_play.js';
 import { PLAYOUT_DEFAULTS, PlayoutClock } from '../../web/js/playout_clock.js';
 import { decodeServer } from '../../web/js/protocol.js';
 import { ScreenMapping } from '../../web/js/screen_mapping.js';
@@ -221,5 +222,7 @@ test('words: words.json', () => {
     queen: input.queen.map(([state, seat, name]) => queenSentence({ state, seat }, name)),
     errors: input.errors.map(([code, message]) => errorSentence({ code, message })),
     rule_sets: input.rule_sets.map((r) => ruleSetName(r)),
+    how_to_play: input.rule_sets.map((r) => ({ ...howToPlay(r), walkthrough: walkthroughSteps(r) })),
+    controls: controlsHelp(),
   }, 'words.json');
 });

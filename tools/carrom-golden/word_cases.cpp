@@ -1,5 +1,6 @@
 #include "carrom/golden/word_cases.hpp"
 
+#include "carrom/client/how_to_play.hpp"
 #include "carrom/client/plain_words.hpp"
 #include "carrom/golden/golden_json.hpp"
 #include "carrom/proto/error.hpp"
@@ -38,7 +39,13 @@ nlohmann::json replay_words(const nlohmann::json& input) {
         proto::RuleSet rule_set = proto::RuleSet::Icf;
         proto::parse(r.get<std::string>(), rule_set);
         out["rule_sets"].push_back(client::rule_set_name(rule_set));
+        const client::HowToPlay h = client::how_to_play(rule_set);
+        out["how_to_play"].push_back({{"title", h.title},
+                                      {"rules", h.rules},
+                                      {"foul", h.foul},
+                                      {"walkthrough", client::walkthrough_steps(rule_set)}});
     }
+    out["controls"] = client::controls_help();
     return out;
 }
 

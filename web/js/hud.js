@@ -36,7 +36,8 @@ function queenText(model) {
 }
 
 export class Hud {
-  // actions: {rematch(), lobby(), retry(), cancelAim(), toggleMute(), copyLink()}
+  // actions: {rematch(), lobby(), leave(), retry(), cancelAim(), toggleMute(), help(), settings(),
+  // copyLink()}
   constructor(actions) {
     this.el = {
       top: $('top-bar'), seats: [$('seat-left'), $('seat-right')], status: $('status-line'),
@@ -52,7 +53,14 @@ export class Hud {
     this.messagesKey = '';
     this.el.rematch.addEventListener('click', () => actions.rematch());
     $('to-lobby').addEventListener('click', () => actions.lobby());
-    this.el.leave.addEventListener('click', () => actions.lobby());
+    this.el.leave.addEventListener('click', () => actions.leave());
+    this.el.help = $('help');
+    this.el.settings = $('settings-open');
+    this.el.help.addEventListener('click', () => actions.help());
+    this.el.settings.addEventListener('click', () => actions.settings());
+    this.el.leaveAsk = $('leave-ask');
+    this.el.leaveAskText = $('leave-ask-text');
+    this.el.wrap = $('board-wrap');
     this.el.retry.addEventListener('click', () => actions.retry());
     this.el.cancel.addEventListener('click', () => actions.cancelAim());
     this.el.mute.addEventListener('click', () => actions.toggleMute());
@@ -158,6 +166,19 @@ export class Hud {
     return { text, tone };
   }
 
+  // The question before leaving a running game: `consequence` is what leaving costs; null hides it.
+  askLeave(consequence) {
+    setHidden(this.el.leaveAsk, consequence === null);
+    if (consequence !== null) {
+      setText(this.el.leaveAskText, consequence);
+      $('leave-stay').focus();
+    }
+  }
+
+  leaveAsked() {
+    return !this.el.leaveAsk.hidden;
+  }
+
   // Everything the HUD shows, from the model and the session, at local time `now`.
   update(model, session, ui, now) {
     const v = model.view;
@@ -190,13 +211,19 @@ export class Hud {
       setText(e.room, '');
       setText(e.coins, '');
     }
-    let conn = session.status;
+    // While the link is lost the card over the board has the details; the bar its title, so that
+    // the bar keeps one short line.
+    const lost = v.inRoom && ['reconnecting', 'failed', 'connecting', 'greeting'].includes(session.phase);
+    let conn = lost ? (session.phase === 'failed' ? 'Disconnected' : 'Reconnecting...') : session.status;
     if (session.rttMs !== null && session.phase === 'in_room') conn += ` · RTT ${Math.round(session.rttMs)} ms`;
     const p = model.prediction?.stats;
     if (p && p.strokes > 0 && session.phase === 'in_room') conn += ` · predicted ${p.strokes}, corrected ${p.corrections}`;
     setText(e.conn, conn);
     setClass(e.conn, 'alert', !['in_room', 'lobby', 'joining', 'idle'].includes(session.phase));
     setHidden(e.leave, !v.inRoom);
+    setHidden(e.help, !v.inRoom);
+    setHidden(e.settings, !v.inRoom);
+    if (!v.inRoom) setHidden(e.leaveAsk, true);
     setHidden(e.cancel, !ui.pulling);
     setText(e.mute, ui.muted ? 'Sound: off' : 'Sound: on');
     e.mute.setAttribute('aria-pressed', ui.muted ? 'false' : 'true');
@@ -222,9 +249,17 @@ export class Hud {
       setText(e.rematch, v.rematchAsked ? 'Rematch asked…' : 'Rematch');
     }
     setHidden(e.notice, !trouble);
+    setClass(e.wrap, 'dimmed', trouble);
     if (trouble) {
       setText(e.noticeTitle, session.phase === 'failed' ? 'Disconnected' : 'Reconnecting');
-      setText(e.noticeText, session.status);
+      let text = session.status;
+      // The server holds the seat for its grace period: the tries go on that long (docs/protocol.md,
+      // "Resume"), the countdown in whole seconds.
+      const held = session.seatHeldForS(now);
+      if (session.phase !== 'failed' && held !== null) {
+        text += ` Your seat is held; giving up in ${Math.ceil(held)} s.`;
+      }
+      setText(e.noticeText, text);
       setHidden(e.retry, session.phase !== 'failed');
     }
   }

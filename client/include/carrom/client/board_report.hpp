@@ -16,9 +16,10 @@ namespace carrom::client {
 struct ReportContext {
     double window_w = 0.0; // window px
     double window_h = 0.0;
-    int shots_seen = 0;          // shot results received so far
-    std::optional<Rect> overlay; // window px covered by messages drawn over the board
-    PredictionStats prediction;  // the own strokes predicted and the server's corrections
+    int shots_seen = 0;           // shot results received so far
+    std::optional<Rect> overlay;  // window px covered by the messages and the room code
+    PredictionStats prediction;   // the own strokes predicted and the server's corrections
+    std::string ui_json = "null"; // the window's menus and side area, a JSON value ("ui")
 };
 
 // One JSON object (one line): {"room", "you", "turn", "phase", "flipped" (the view is turned half
@@ -27,7 +28,9 @@ struct ReportContext {
 // "kind", "x", "y" (board px), "screen_x", "screen_y" (window px), "scale", "alpha"}] in drawing
 // order (id -1: the striker being placed), "overlay" {x, y, w, h} or null, "prediction"
 // {"strokes", "corrections", "max_difference_px"} (the own strokes predicted, the bodies the
-// server corrected, the largest difference seen)}.
+// server corrected, the largest difference seen), "ui" (ReportContext::ui_json: the match
+// window's "open" dialog, "tip", "rules_tab", "settings", "side", "messages" [{"text", x, y, w,
+// h}], "bar_buttons", "leave_text")}.
 std::string board_report_json(const MatchView& view, const std::vector<RenderedBody>& bodies,
                               const ScreenMapping& mapping, const ReportContext& context);
 
