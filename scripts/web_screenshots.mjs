@@ -1,13 +1,17 @@
 #!/usr/bin/env node
 // The web client's pictures in docs/img, made the way a player sees them:
 //
-//   node scripts/web_screenshots.mjs [--server PATH] [--out docs/img] [--only singles|doubles]
+//   node scripts/web_screenshots.mjs [--server PATH] [--out docs/img] [--only singles|doubles|texts]
 //
 // web-aim.png: 900 x 900, a game against a server bot, the break being aimed (the pull, the
 // guide and the power ring). web-phone.png: 390 x 844 at 2 device px per CSS px, touch, the
 // board after the break against a server bot. web-doubles-side.png: 900 x 900, a doubles game of
 // four pages (ICF rules), the right seat's view (a quarter turn: its own baseline at the
-// bottom, its partner across) aiming its first shot after the break.
+// bottom, its partner across) aiming its first shot after the break. The texts a newcomer reads
+// (900 x 900, against server bots): web-foul.png, the break sent into a pocket (the striker
+// pocketed, the break missed: warnings and the due it cost); web-game-over-loser.png, three
+// missed 1 s shot clocks; web-game-over-winner.png, the opponent left (no rematch);
+// web-board-summary.png, the card after the first of two ICF boards against a hard bot.
 
 import { fileURLToPath } from 'node:url';
 import path from 'node:path';
@@ -74,7 +78,68 @@ async function doublesPicture(t, web, server, file) {
   await ravi.page.mouse.up();
 }
 
-run('web_screenshots', 120000, async (t) => {
+// The texts pictures (see the top); each from a fresh page.
+async function textsPictures(t) {
+  const view = { viewport: { width: 900, height: 900 } };
+  const open = async (server, name) => Player.open(await t.browser.newContext(view), name,
+    pageUrl(await startWebServer(server), server), t.errors);
+  const shot = async (p, name) => {
+    await p.page.screenshot({ path: path.join(out, name) });
+    console.log(`saved ${path.join(out, name)}`);
+  };
+
+  const calm = await startServer(['--shot-clock', '0', '--time-scale', '4', '--bot-think-ms', '100', '--bot-seed', '3']);
+  let a = await open(calm, 'foul');
+  await a.fillLobby({ name: 'Asha', ruleSet: 'icf', botLevel: 'easy' });
+  await a.press('#play-bot');
+  let s = await a.waitFor('our break', (st) => st.inRoom && st.myTurn && !st.animating && st.aim.phase === 'idle');
+  // From the left end of the baseline into the bottom-left pocket (57, 543), touching no coin.
+  const pocket = s.aim.side === 'bottom' ? { x: 57, y: 543 } : { x: 57, y: 57 };
+  await a.shoot({ x: 113, angle: Math.atan2(pocket.y - s.aim.striker.y, pocket.x - 113), power: 7 });
+  await a.waitFor('the foul said', (st) => st.log.some((l) => l.text.startsWith('Foul by')) && !st.animating, 30000);
+  await shot(a, 'web-foul.png');
+
+  const quick = await startServer(['--shot-clock', '1', '--bot-shot-clock', '1', '--time-scale', '8', '--bot-think-ms', '50']);
+  a = await open(quick, 'loser');
+  await a.fillLobby({ name: 'Asha', botLevel: 'easy' });
+  await a.press('#play-bot');
+  await a.waitFor('the game over', (st) => st.phase === 'game_over' && !st.animating && st.gameEnd !== null, 60000);
+  await shot(a, 'web-game-over-loser.png');
+
+  const friends = await startServer(['--shot-clock', '0', '--no-bots']);
+  a = await open(friends, 'winner');
+  await a.fillLobby({ name: 'Asha' });
+  await a.press('#create');
+  const { code } = await a.waitFor('the room', (st) => st.inRoom && st.phase === 'waiting');
+  const b = await open(friends, 'leaver');
+  await b.fillLobby({ name: 'Ravi', code });
+  await b.press('#join');
+  await a.waitFor('Ravi seated', (st) => st.phase === 'aiming');
+  await b.press('#leave');
+  await a.waitFor('the forfeit', (st) => st.phase === 'game_over' && !st.seats[1].occupied);
+  await shot(a, 'web-game-over-winner.png');
+
+  const boards = await startServer(['--shot-clock', '0', '--time-scale', '16', '--bot-think-ms', '20', '--bot-seed', '3']);
+  a = await open(boards, 'boards');
+  await a.fillLobby({ name: 'Asha', ruleSet: 'icf', targetPoints: 99, boards: 2, botLevel: 'hard' });
+  await a.press('#play-bot');
+  let shots = 0;
+  for (;;) {
+    s = await a.state();
+    if (s.boardSummary !== null && s.boardNumber === 2) break;
+    if (s.inRoom && s.myTurn && !s.animating && s.aim.phase === 'idle') {
+      await a.shoot(s.shots === 0 ? breakShot(s.aim.side) : chooseShot(s.board, s.aim.side, shots));
+      shots += 1;
+      await a.waitFor('the shot result', (st) => st.turn !== st.shotSentTurn || st.boardSummary !== null, 30000);
+    } else {
+      await new Promise((r) => { setTimeout(r, 50); });
+    }
+  }
+  await a.waitFor('the card drawn', (st) => !st.animating && st.boardSummary !== null);
+  await shot(a, 'web-board-summary.png');
+}
+
+run('web_screenshots', 300000, async (t) => {
   const server = await startServer(['--shot-clock', '30', '--bot-think-ms', '100']);
   const web = await startWebServer(server);
   t.browser = await launchBrowser();
@@ -84,6 +149,7 @@ run('web_screenshots', 120000, async (t) => {
     await doublesPicture(t, web, server, file);
     console.log(`saved ${file}`);
   }
+  if (wanted('texts')) await textsPictures(t);
   if (!wanted('singles')) return;
   const desk = await Player.open(await t.browser.newContext({ viewport: { width: 900, height: 900 } }), 'desktop', pageUrl(web, server), t.errors);
   await desk.fillLobby({ name: 'Asha', ruleSet: 'icf', botLevel: 'easy' });

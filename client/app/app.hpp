@@ -29,6 +29,8 @@ struct AppOptions {
     // With a screenshot: also wait until this many shot results have arrived and the board is
     // drawn at rest again.
     int after_shots = 0;
+    bool board_summary_shot =
+        false;               // --board-summary: the screenshot waits for the card between boards
     std::string report_path; // with a screenshot: what it shows as JSON (board_report.hpp)
     double timeout_s = 0.0;  // > 0: exit with code 3 if still running after this many seconds
     int bench_frames = 0;    // > 0: render that many demo frames and print frame times as JSON

@@ -54,6 +54,9 @@ void AppWindow::handle_event(const sf::Event& e) {
         }
         return;
     }
+    if (model_.board_summary_shown(clock_.now()) && BoardSummaryPanel::dismisses(e)) {
+        model_.dismiss_board_summary(); // the card between boards; the event still plays on
+    }
     if (model_.view().in_room && model_.view().phase == proto::Phase::GameOver) {
         handle_game_over_input(e);
     } else if (model_.view().in_room) {
@@ -183,6 +186,9 @@ void AppWindow::update(double now) {
     bodies_ = model_.render(now);
     sync_aim(now);
     announce_room();
+    if (model_.countdown_tick(now)) {
+        sound_.play(SoundCue{0.0, SoundKind::Click, 0.7}); // the shot clock's last seconds
+    }
     for (const SoundCue& cue : model_.take_sounds()) {
         sound_.play(cue);
     }
@@ -275,7 +281,8 @@ std::optional<int> AppWindow::unattended_frame(int frame) {
         shown_,
         board_painter_.repaints(),
         hud_.bar_repaints(),
-        unattended_input_};
+        unattended_input_,
+        model_.board_summary_shown(clock_.now())};
     unattended_->on_frame(f);
     return unattended_->done();
 }

@@ -92,7 +92,7 @@ Sketch GameOverPanel::sketch(TextCache& texts, const Rect& b, const GameOverText
     }
     y += waiting.empty() ? 0.0 : line_h * 0.4;
     // The buttons: [Rematch (R)] [Lobby (L)] for a player, [Lobby (L)] for a spectator.
-    const bool player = text.can_rematch || !text.waiting.empty();
+    const bool player = (text.can_rematch || !text.waiting.empty()) && !text.opponent_left;
     const double gap = std::round(pad * 0.8);
     const double button_w = std::round(player ? (w - 2 * pad - gap) / 2.0 : (w - 2 * pad) / 2.0);
     const unsigned label_size = static_cast<unsigned>(std::lround(button_h * 0.42));

@@ -1,6 +1,7 @@
 #pragma once
-// --screenshot PATH (--frames N, --after-shots K, --report FILE): after N frames, and once K shot
-// results have arrived and the board is drawn at rest again, saves the window as a PNG and,
+// --screenshot PATH (--frames N, --after-shots K, --board-summary, --report FILE): after N frames,
+// once K shot results have arrived and the board is drawn at rest again (and with
+// --board-summary once the card between two boards is drawn), saves the window as a PNG and,
 // with --report, what it shows as JSON (board_report.hpp); then ends the run (exit code 0, or 1
 // when a file cannot be written).
 
@@ -15,7 +16,8 @@ class ScreenshotMode final : public UnattendedMode {
 public:
     explicit ScreenshotMode(const AppOptions& options)
         : path_(options.screenshot_path), report_path_(options.report_path),
-          frames_(options.frames), after_shots_(options.after_shots) {}
+          frames_(options.frames), after_shots_(options.after_shots),
+          board_summary_(options.board_summary_shot) {}
     void on_frame(UnattendedFrame& frame) override;
     std::optional<int> done() const override { return done_; }
 
@@ -27,6 +29,7 @@ private:
     std::string report_path_; // empty: no report
     int frames_;
     int after_shots_;
+    bool board_summary_; // wait for the card between two boards
     std::optional<int> done_;
 };
 

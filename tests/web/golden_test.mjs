@@ -14,7 +14,8 @@ import { HudLog } from '../../web/js/hud_log.js';
 import { InterpolationBuffer } from '../../web/js/interpolation_buffer.js';
 import { MatchModel } from '../../web/js/match_model.js';
 import {
-  countWords, errorSentence, pocketList, queenSentence, ruleSetName,
+  coinsLeftText, countWords, duesSentence, errorSentence, forfeitSentence, foulCost, foulSentence, pocketList,
+  queenSentence, ruleSetName, strokePoints, targetWords,
 } from '../../web/js/plain_words.js';
 import { PLAYOUT_DEFAULTS, PlayoutClock } from '../../web/js/playout_clock.js';
 import { decodeServer } from '../../web/js/protocol.js';
@@ -221,5 +222,14 @@ test('words: words.json', () => {
     queen: input.queen.map(([state, seat, name]) => queenSentence({ state, seat }, name)),
     errors: input.errors.map(([code, message]) => errorSentence({ code, message })),
     rule_sets: input.rule_sets.map((r) => ruleSetName(r)),
+    targets: input.targets.map(([ruleSet, points]) => targetWords(ruleSet, points)),
+    coins_left: input.coins_left.map(([white, black, queen, ruleSet, colour]) => coinsLeftText(
+      { white, black, queen: queen ? 1 : 0 }, ruleSet, colour)),
+    fouls: input.fouls.map(([name, message]) => foulSentence(name, message)),
+    costs: input.costs.map(([kinds, points]) => foulCost(kinds, points)),
+    stroke_points: input.stroke_points.map((p) => strokePoints(p)),
+    dues: input.dues.map(([who, plural, owed]) => duesSentence(who, plural, owed)),
+    forfeits: input.forfeits.map(([leaver, reason, winner, plural]) => forfeitSentence(
+      leaver, reason, winner, plural)),
   }, 'words.json');
 });

@@ -16,7 +16,8 @@ run('web.lobby_paths', 120000, async (t) => {
   const b = await Player.open(await t.browser.newContext(VIEW), 'Ravi', pageUrl(web, server), t.errors);
 
   await a.press('#quick');
-  check((await a.page.textContent('#lobby-error')).startsWith('Enter a name first'), 'a name is required');
+  check((await a.page.textContent('#lobby-error'))
+    === 'Type your name first: 1 to 24 letters (accented letters count twice).', 'a name is required, in plain words');
   check((await a.state()).session.phase === 'idle', 'nothing was sent without a name');
 
   // Quick match: the two pages are paired.
