@@ -124,7 +124,7 @@ std::string target_words(proto::RuleSet rule_set, int target_points) {
     switch (rule_set) {
     case proto::RuleSet::Icf:
     case proto::RuleSet::Seed:
-        return "to " + points + ", scored when a board ends";
+        return "to " + std::to_string(target_points) + ", scored at board end";
     case proto::RuleSet::Freestyle:
         return "first to " + points;
     case proto::RuleSet::DiscPool:

@@ -180,6 +180,6 @@ test('the shot clock ticks once a second in its last 5 s, on our own turn only',
   assert.deepEqual(ticks, [5, 4, 3, 2, 1]);
   const theirs = modelOf(singles({ to_play: 1, shot_clock_deadline_ms: 1000000000 + 20000 }));
   assert.equal(theirs.countdownTick(27), null);
-  assert.equal(targetWords('icf', 25), 'to 25 points, scored when a board ends');
+  assert.equal(targetWords('icf', 25), 'to 25, scored at board end');
   assert.equal(coinsLeftText({ white: 9, black: 9, queen: 1 }, 'icf', 'white'), '9 white + queen left');
 });

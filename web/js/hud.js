@@ -202,10 +202,8 @@ export class Hud {
       if (v.spectators > 0) room += ` · ${countWords(v.spectators, 'spectator', 'spectators')}`;
       if (v.you < 0) room += ' · spectating';
       setText(e.room, room);
-      const c = model.coinsLeft();
-      let coins = `Left: ${c.white} white, ${c.black} black`;
-      if (v.queen.state !== 'none') coins += c.queen > 0 ? ', queen' : '';
-      setText(e.coins, coins);
+      // What is left to pocket is said per seat (the seat boxes), as the desktop client does.
+      setText(e.coins, '');
     } else {
       setText(e.room, '');
       setText(e.coins, '');

@@ -123,11 +123,11 @@ export function ruleSetName(ruleSet) {
   }[ruleSet] ?? 'Unknown rules';
 }
 
-// The game's target for the HUD: "to 25 points, scored when a board ends" (icf, seed: a board's
+// The game's target for the HUD: "to 25, scored at board end" (icf, seed: a board's
 // points come when it ends), "first to 40 points" (freestyle), "to 25 points" (discpool).
 export function targetWords(ruleSet, targetPoints) {
   const points = countWords(targetPoints, 'point', 'points');
-  if (ruleSet === 'icf' || ruleSet === 'seed') return `to ${points}, scored when a board ends`;
+  if (ruleSet === 'icf' || ruleSet === 'seed') return `to ${targetPoints}, scored at board end`;
   if (ruleSet === 'freestyle') return `first to ${points}`;
   return `to ${points}`;
 }

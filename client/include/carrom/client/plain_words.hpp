@@ -23,7 +23,7 @@ std::string coins_left_text(const SeatCoins& coins);
 // An error from the server, said for a player (falls back to the server's own sentence).
 std::string error_sentence(const proto::Error& error);
 std::string rule_set_name(proto::RuleSet rule_set);
-// The game's target for the HUD: "to 25 points, scored when a board ends" (icf, seed: a board's
+// The game's target for the HUD: "to 25, scored at board end" (icf, seed: a board's
 // points come when it ends, so the score stays 0 while coins go in), "first to 40 points"
 // (freestyle: every stroke scores), "to 25 points" (discpool).
 std::string target_words(proto::RuleSet rule_set, int target_points);
