@@ -42,8 +42,8 @@ public:
 
 private:
     static std::vector<std::string> argv(std::vector<std::string> args) {
-        std::vector<std::string> out{CARROM_SERVER_PATH, "--host",      "127.0.0.1", "--port", "0",
-                                     "--log-level",      "warn",        "--data",    "none"};
+        std::vector<std::string> out{CARROM_SERVER_PATH, "--host", "127.0.0.1", "--port", "0",
+                                     "--log-level",      "warn",   "--data",    "none"};
         out.insert(out.end(), args.begin(), args.end());
         return out;
     }
@@ -52,15 +52,15 @@ private:
 };
 
 // carrom-client with args; its exit code and the JSON it wrote to `json` (null if none).
-struct Run {
+struct ClientRun {
     int exit = -1;
     nlohmann::json written;
     std::string log;
 };
 
-Run run_client(const std::vector<std::string>& args, const std::string& json,
-               std::chrono::seconds limit) {
-    Run r;
+ClientRun run_client(const std::vector<std::string>& args, const std::string& json,
+                     std::chrono::seconds limit) {
+    ClientRun r;
     ChildProcess client(client_argv(args), {client_asan_options()});
     r.exit = client.wait_exit(Clock::now() + limit).value_or(-1);
     for (const auto stream : {ChildProcess::Stream::Out, ChildProcess::Stream::Err}) {
@@ -86,8 +86,8 @@ std::string tone_of(const nlohmann::json& said, const std::string& text) {
 std::string texts(const nlohmann::json& said) {
     std::string out;
     for (const auto& line : said) {
-        out += line.at("text").get<std::string>() + " [" + line.at("tone").get<std::string>() +
-               "]\n";
+        out +=
+            line.at("text").get<std::string>() + " [" + line.at("tone").get<std::string>() + "]\n";
     }
     return out;
 }
@@ -98,10 +98,10 @@ TEST(PlayerTexts, ThreeMissedClocksAgainstABotAreCountedAndLoseTheGame) {
     ASSERT_FALSE(server.url().empty());
     test_support::TempDir dir("carrom-texts-clock");
     const std::string json = dir.file("final.json");
-    const Run r = run_client({"--url", server.url(), "--name", "Asha", "--vs-bot", "easy", "--mute",
-                              "--width", "700", "--height", "700", "--final-state", json,
-                              "--timeout", "50"},
-                             json, 60s);
+    const ClientRun r =
+        run_client({"--url", server.url(), "--name", "Asha", "--vs-bot", "easy", "--mute",
+                    "--width", "700", "--height", "700", "--final-state", json, "--timeout", "50"},
+                   json, 60s);
     ASSERT_EQ(r.exit, 0) << r.log;
     const nlohmann::json& said = r.written.at("said");
     const std::string miss = "Foul by Asha: The shot clock ran out; the turn passes. ";
@@ -111,8 +111,8 @@ TEST(PlayerTexts, ThreeMissedClocksAgainstABotAreCountedAndLoseTheGame) {
     EXPECT_EQ(tone_of(said, "Foul by Asha: Too many turns were missed in a row: the game is lost."),
               "foul");
     for (const auto& line : said) {
-        EXPECT_FALSE(line.at("tone") == "good" && line.at("text").get<std::string>().find(
-                                                      "Foul") != std::string::npos);
+        EXPECT_FALSE(line.at("tone") == "good" &&
+                     line.at("text").get<std::string>().find("Foul") != std::string::npos);
     }
     const nlohmann::json& over = r.written.at("game_over");
     EXPECT_EQ(over.at("title"), "You lost");
@@ -144,10 +144,10 @@ TEST(PlayerTexts, AnOpponentWhoLeavesIsNamedAndNoRematchIsOffered) {
         }
     }
     ASSERT_FALSE(code.empty());
-    ChildProcess client(client_argv({"--url", server.url(), "--name", "Asha", "--join", code,
-                                     "--mute", "--width", "700", "--height", "700",
-                                     "--final-state", json, "--timeout", "30"}),
-                        {client_asan_options()});
+    ChildProcess client(
+        client_argv({"--url", server.url(), "--name", "Asha", "--join", code, "--mute", "--width",
+                     "700", "--height", "700", "--final-state", json, "--timeout", "30"}),
+        {client_asan_options()});
     std::optional<int> exit;
     while (!exit && Clock::now() < deadline) {
         ravi->wait(20ms);
@@ -179,25 +179,28 @@ TEST(PlayerTexts, AnOpponentWhoLeavesIsNamedAndNoRematchIsOffered) {
 TEST(PlayerTexts, TheCardBetweenTwoBoardsNamesTheWinnerPointsAndNewColour) {
     Server server({"--shot-clock", "0", "--time-scale", "25"});
     ASSERT_FALSE(server.url().empty());
-    ChildProcess bot({CARROM_BOT_PATH, "--url", server.url(), "--name", "Ravi", "--create",
-                      "--rule-set", "icf", "--boards", "2", "--target-points", "99", "--strategy",
-                      "greedy", "--level", "hard", "--think-ms", "20", "--timeout", "150"});
+    ChildProcess bot({CARROM_BOT_PATH, "--url",    server.url(),      "--name",
+                      "Ravi",          "--create", "--rule-set",      "icf",
+                      "--boards",      "2",        "--target-points", "99",
+                      "--strategy",    "greedy",   "--level",         "hard",
+                      "--think-ms",    "20",       "--timeout",       "150"});
     const std::string prefix = "room ";
     const auto line = bot.wait_line(ChildProcess::Stream::Err, prefix, Clock::now() + 15s);
     ASSERT_TRUE(line);
     test_support::TempDir dir("carrom-texts-board");
     const std::string png = dir.file("card.png");
     const std::string json = dir.file("card.json");
-    const Run r = run_client({"--url", server.url(), "--name", "Asha", "--join",
-                              line->substr(prefix.size()), "--autoplay", "hard", "--mute",
-                              "--width", "700", "--height", "700", "--screenshot", png,
-                              "--report", json, "--board-summary", "--timeout", "140"},
-                             json, 150s);
+    const ClientRun r = run_client(
+        {"--url",      server.url(),   "--name", "Asha",     "--join", line->substr(prefix.size()),
+         "--autoplay", "hard",         "--mute", "--width",  "700",    "--height",
+         "700",        "--screenshot", png,      "--report", json,     "--board-summary",
+         "--timeout",  "140"},
+        json, 150s);
     ASSERT_EQ(r.exit, 0) << r.log;
     const nlohmann::json& card = r.written.at("board_summary");
     ASSERT_TRUE(card.is_object()) << r.written.dump();
-    EXPECT_TRUE(std::regex_match(card.at("title").get<std::string>(),
-                                 std::regex("(You|Ravi) won board 1")))
+    EXPECT_TRUE(
+        std::regex_match(card.at("title").get<std::string>(), std::regex("(You|Ravi) won board 1")))
         << card.at("title");
     EXPECT_TRUE(std::regex_match(card.at("points").get<std::string>(),
                                  std::regex(R"(\+\d+ points?\. Score: you \d+, Ravi \d+)")))
@@ -213,11 +216,11 @@ TEST(PlayerTexts, DoublesBotsHaveNamesOfTheirOwn) {
     test_support::TempDir dir("carrom-texts-doubles");
     const std::string png = dir.file("doubles.png");
     const std::string json = dir.file("doubles.json");
-    const Run r = run_client({"--url", server.url(), "--name", "Asha", "--vs-bot", "easy",
-                              "--seats", "4", "--mute", "--width", "700", "--height", "700",
-                              "--screenshot", png, "--report", json, "--frames",
-                              "30", "--timeout", "30"},
-                             json, 40s);
+    const ClientRun r = run_client(
+        {"--url", server.url(), "--name",  "Asha",     "--vs-bot", "easy",      "--seats",
+         "4",     "--mute",     "--width", "700",      "--height", "700",       "--screenshot",
+         png,     "--report",   json,      "--frames", "30",       "--timeout", "30"},
+        json, 40s);
     ASSERT_EQ(r.exit, 0) << r.log;
     const nlohmann::json& names = r.written.at("names");
     ASSERT_EQ(names.size(), 4u) << r.written.dump();
@@ -232,7 +235,7 @@ TEST(PlayerTexts, DoublesBotsHaveNamesOfTheirOwn) {
 }
 
 TEST(PlayerTexts, AnEmptyNameIsRefusedInPlainWords) {
-    const Run r = run_client({"--name", " ", "--url", "ws://127.0.0.1:9"}, {}, 20s);
+    const ClientRun r = run_client({"--name", " ", "--url", "ws://127.0.0.1:9"}, {}, 20s);
     EXPECT_EQ(r.exit, 2);
     EXPECT_NE(r.log.find("--name: type a name of 1 to 24 letters (accented letters count twice), "
                          "not only spaces"),

@@ -45,7 +45,9 @@ run('web.lobby_paths', 120000, async (t) => {
   check((await a.state()).hash === '', 'the address no longer names the room');
   const over = await b.waitFor('the game over', (s) => s.phase === 'game_over' && s.gameEnd !== null);
   check(over.gameEnd.sentence === 'You win the game (the opponent left)', over.gameEnd.sentence);
-  check((await b.page.textContent('#game-over-result')) === over.gameEnd.sentence, 'the reason is on screen');
+  check((await b.page.textContent('#game-over-result')) === 'You won!', 'the winner reads it from their side');
+  check((await b.page.textContent('#game-over-reason')) === 'Asha left the game.', 'the reason is on screen');
+  check(!(await b.page.isVisible('#rematch')), 'no rematch once the opponent left');
   await b.press('#to-lobby');
   await b.waitFor('the lobby', (s) => !s.inRoom);
 
