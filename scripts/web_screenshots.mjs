@@ -8,8 +8,8 @@
 // board after the break against a server bot. web-doubles-side.png: 900 x 900, a doubles game of
 // four pages (ICF rules), the right seat's view (a quarter turn: its own baseline at the
 // bottom, its partner across) aiming its first shot after the break. The texts a newcomer reads
-// (900 x 900, against server bots): web-foul.png, the break sent into a pocket (the striker
-// pocketed, the break missed: warnings and the due it cost); web-game-over-loser.png, three
+// (900 x 900, against server bots): web-foul.png, the striker sent into a pocket after the
+// break (warnings, and what it cost); web-game-over-loser.png, three
 // missed 1 s shot clocks; web-game-over-winner.png, the opponent left (no rematch);
 // web-board-summary.png, the card after the first of two ICF boards against a hard bot.
 
@@ -93,10 +93,25 @@ async function textsPictures(t) {
   await a.fillLobby({ name: 'Asha', ruleSet: 'icf', botLevel: 'easy' });
   await a.press('#play-bot');
   let s = await a.waitFor('our break', (st) => st.inRoom && st.myTurn && !st.animating && st.aim.phase === 'idle');
-  // From the left end of the baseline into the bottom-left pocket (57, 543), touching no coin.
-  const pocket = s.aim.side === 'bottom' ? { x: 57, y: 543 } : { x: 57, y: 57 };
-  await a.shoot({ x: 113, angle: Math.atan2(pocket.y - s.aim.striker.y, pocket.x - 113), power: 7 });
-  await a.waitFor('the foul said', (st) => st.log.some((l) => l.text.startsWith('Foul by')) && !st.animating, 30000);
+  await a.shoot(breakShot(s.aim.side));
+  s = await a.waitFor('our next turn', (st, turn) => st.turn !== turn && st.myTurn && !st.animating
+    && st.aim.phase === 'idle', 60000, s.turn);
+  // The striker straight into a bottom pocket, from the first place on the baseline with a
+  // clear way there (no piece within 32 px of the path).
+  const pieces = s.board.filter((b) => !b.pocketed && b.kind !== 'striker');
+  const gap = (x, px) => Math.min(...pieces.map((b) => {
+    const [dx, dy] = [px - x, 543 - 520];
+    const k = Math.max(0, Math.min(1, ((b.x - x) * dx + (b.y - 520) * dy) / (dx * dx + dy * dy)));
+    return Math.hypot(b.x - x - k * dx, b.y - 520 - k * dy);
+  }));
+  let aimAt = null;
+  for (let x = 113; x <= 487 && !aimAt; x += 2) {
+    for (const px of [57, 543]) if (!aimAt && gap(x, px) > 32) aimAt = { x, px };
+  }
+  const dist = Math.hypot(aimAt.px - aimAt.x, 23);
+  await a.shoot({ x: aimAt.x, angle: Math.atan2(543 - 520, aimAt.px - aimAt.x), power: Math.min(25, 5 + dist / 20) });
+  // As soon as the foul is said (the server's bot plays its turn at once).
+  await a.waitFor('the foul said', (st) => st.log.some((l) => l.text.startsWith('Foul by Asha: The striker')), 30000);
   await shot(a, 'web-foul.png');
 
   const quick = await startServer(['--shot-clock', '1', '--bot-shot-clock', '1', '--time-scale', '8', '--bot-think-ms', '50']);

@@ -78,6 +78,8 @@ int main(int argc, char** argv) {
         ->check(CLI::Range(0, 1000));
     cli.add_flag("--board-summary", options.board_summary_shot,
                  "With --screenshot: wait for the card between two boards, then save it");
+    cli.add_flag("--game-over", options.game_over_shot,
+                 "With --screenshot: wait for the game-over panel, then save it");
     cli.add_option("--report", options.report_path,
                    "With --screenshot: write what the picture shows (room, turn, pieces) as JSON");
     cli.add_option("--timeout", options.timeout_s,

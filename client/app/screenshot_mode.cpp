@@ -15,7 +15,8 @@ void ScreenshotMode::on_frame(UnattendedFrame& frame) {
 }
 
 bool ScreenshotMode::due(const UnattendedFrame& frame) const {
-    if (frame.number < frames_ || (board_summary_ && !frame.board_summary)) {
+    if (frame.number < frames_ || (board_summary_ && !frame.board_summary) ||
+        (game_over_ && !frame.at_end)) {
         return false;
     }
     return after_shots_ <= 0 || (frame.shots_seen >= after_shots_ && !frame.model.animating());
