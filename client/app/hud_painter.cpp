@@ -246,9 +246,13 @@ Sketch HudPainter::bottom_bar(const Rect& area, const MatchModel& model,
     const MatchView& v = model.view();
     const float mid = static_cast<float>(area.y + area.h / 2.0);
     const unsigned size = text_size(area.h, 0.48);
-    std::string left = "Room " + v.code + "  \xc2\xb7  " + rule_set_name(v.rule_set) + " " +
-                       target_words(v.rule_set, v.options.target_points) + "  \xc2\xb7  Board " +
-                       std::to_string(v.board_number);
+    // A replay's status line is long (turn, speed, the end's reason): its room line names the
+    // rule set and the board only.
+    std::string left = connection.replay
+                           ? rule_set_name(v.rule_set)
+                           : "Room " + v.code + "  \xc2\xb7  " + rule_set_name(v.rule_set) + " " +
+                                 target_words(v.rule_set, v.options.target_points);
+    left += "  \xc2\xb7  Board " + std::to_string(v.board_number);
     if (v.spectators > 0) {
         left += "  \xc2\xb7  " + count_words(v.spectators, "spectator", "spectators");
     }

@@ -164,13 +164,13 @@ void ReplayView::sync_hud(double now) {
 std::string ReplayView::status() const {
     // Every input is a turn: strokes, shot clock expiries and forfeits.
     std::string text = "Replay  \xc2\xb7  Turn " + std::to_string(replay_.turn_number()) + " / " +
-                       std::to_string(replay_.turns().size()) + "  \xc2\xb7  " +
-                       speed_text(replay_.speed());
-    if (replay_.finished()) {
+                       std::to_string(replay_.turns().size()) + "  \xc2\xb7  ";
+    if (replay_.finished()) { // the reason instead of the speed
         const MatchView& v = hud_model_.view();
-        text += v.result ? "  \xc2\xb7  End: " + game_over_text(v, false).reason
-                         : std::string("  \xc2\xb7  End");
-    } else if (!replay_.playing()) {
+        return text + (v.result ? "End: " + game_over_text(v, false).reason : std::string("End"));
+    }
+    text += speed_text(replay_.speed());
+    if (!replay_.playing()) {
         text += "  \xc2\xb7  Paused";
     }
     return text;
