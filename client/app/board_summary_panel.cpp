@@ -18,10 +18,8 @@ Sketch BoardSummaryPanel::sketch(const Rect& b, const BoardSummaryText& text) co
     const double w = std::round(std::min(b.w * 0.8, 620.0));
     const int lines = 2 + (text.colours.empty() ? 0 : 1);
     const double h = pad + title_h + line_h * lines + pad;
-    const Rect panel{std::round(b.x + (b.w - w) / 2.0), std::round(b.y + (b.h - h) / 2.0), w,
-                     std::round(h)};
     Sketch s;
-    s.panel(panel, fill, kGold, 2.0f);
+    const Rect panel = s.centred_panel(b, w, h, fill, kGold, 2.0f);
     const auto cx = static_cast<float>(panel.x + panel.w / 2.0);
     double y = panel.y + pad;
     s.text(text.title, title_size, cx, static_cast<float>(y + title_h / 2.0), kGold, Align::Centre);
@@ -40,14 +38,9 @@ Sketch BoardSummaryPanel::sketch(const Rect& b, const BoardSummaryText& text) co
 
 void BoardSummaryPanel::draw(sf::RenderTarget& target, Blitter& blitter, TextCache& texts,
                              const Rect& board, const BoardSummaryText& text) {
-    const bool same_board = board.x == sketch_board_.x && board.y == sketch_board_.y &&
-                            board.w == sketch_board_.w && board.h == sketch_board_.h;
-    if (!same_board || sketch_text_ != text) {
-        sketch_ = sketch(board, text);
-        sketch_board_ = board;
-        sketch_text_ = text;
-    }
-    layer_.draw_overlay(target, blitter, texts, sketch_);
+    const Sketch& s = sketch_.get(
+        board, text, [this](const Rect& b, const BoardSummaryText& t) { return sketch(b, t); });
+    layer_.draw_overlay(target, blitter, texts, s);
 }
 
 bool BoardSummaryPanel::dismisses(const sf::Event& e) {

@@ -6,14 +6,13 @@
 
 #include "blitter.hpp"
 #include "cached_layer.hpp"
+#include "cached_sketch.hpp"
 #include "carrom/client/board_summary_text.hpp"
 #include "carrom/client/screen_mapping.hpp"
 #include "sketch.hpp"
 #include "text.hpp"
 
 #include <SFML/Graphics.hpp>
-
-#include <optional>
 
 namespace carrom::client::app {
 
@@ -29,9 +28,7 @@ private:
     Sketch sketch(const Rect& board, const BoardSummaryText& text) const;
 
     CachedLayer layer_;
-    Sketch sketch_;
-    Rect sketch_board_;
-    std::optional<BoardSummaryText> sketch_text_;
+    CachedSketch<BoardSummaryText> sketch_;
 };
 
 } // namespace carrom::client::app
