@@ -29,9 +29,9 @@ using Clock = std::chrono::steady_clock;
 using namespace std::chrono_literals;
 
 // A carrom-server on an ephemeral port; url() is empty if it did not start.
-class Server {
+class TextsServer {
 public:
-    explicit Server(std::vector<std::string> args) : process_(argv(std::move(args))) {
+    explicit TextsServer(std::vector<std::string> args) : process_(argv(std::move(args))) {
         const std::string prefix = "listening on 127.0.0.1:";
         if (const auto line =
                 process_.wait_line(ChildProcess::Stream::Out, prefix, Clock::now() + 15s)) {
@@ -52,15 +52,15 @@ private:
 };
 
 // carrom-client with args; its exit code and the JSON it wrote to `json` (null if none).
-struct ClientRun {
+struct TextsRun {
     int exit = -1;
     nlohmann::json written;
     std::string log;
 };
 
-ClientRun run_client(const std::vector<std::string>& args, const std::string& json,
-                     std::chrono::seconds limit) {
-    ClientRun r;
+TextsRun run_texts_client(const std::vector<std::string>& args, const std::string& json,
+                          std::chrono::seconds limit) {
+    TextsRun r;
     ChildProcess client(client_argv(args), {client_asan_options()});
     r.exit = client.wait_exit(Clock::now() + limit).value_or(-1);
     for (const auto stream : {ChildProcess::Stream::Out, ChildProcess::Stream::Err}) {
@@ -83,7 +83,7 @@ std::string tone_of(const nlohmann::json& said, const std::string& text) {
     return "";
 }
 
-std::string texts(const nlohmann::json& said) {
+std::string said_lines(const nlohmann::json& said) {
     std::string out;
     for (const auto& line : said) {
         out +=
@@ -93,20 +93,20 @@ std::string texts(const nlohmann::json& said) {
 }
 
 TEST(PlayerTexts, ThreeMissedClocksAgainstABotAreCountedAndLoseTheGame) {
-    Server server({"--shot-clock", "1", "--bot-shot-clock", "1", "--time-scale", "8",
-                   "--bot-think-ms", "50"});
+    TextsServer server({"--shot-clock", "1", "--bot-shot-clock", "1", "--time-scale", "8",
+                        "--bot-think-ms", "50"});
     ASSERT_FALSE(server.url().empty());
     test_support::TempDir dir("carrom-texts-clock");
     const std::string json = dir.file("final.json");
-    const ClientRun r =
-        run_client({"--url", server.url(), "--name", "Asha", "--vs-bot", "easy", "--mute",
-                    "--width", "700", "--height", "700", "--final-state", json, "--timeout", "50"},
-                   json, 60s);
+    const TextsRun r = run_texts_client({"--url", server.url(), "--name", "Asha", "--vs-bot",
+                                         "easy", "--mute", "--width", "700", "--height", "700",
+                                         "--final-state", json, "--timeout", "50"},
+                                        json, 60s);
     ASSERT_EQ(r.exit, 0) << r.log;
     const nlohmann::json& said = r.written.at("said");
     const std::string miss = "Foul by Asha: The shot clock ran out; the turn passes. ";
     EXPECT_EQ(tone_of(said, miss + "2 more missed turns in a row lose the game."), "foul")
-        << texts(said);
+        << said_lines(said);
     EXPECT_EQ(tone_of(said, miss + "One more missed turn in a row loses the game."), "foul");
     EXPECT_EQ(tone_of(said, "Foul by Asha: Too many turns were missed in a row: the game is lost."),
               "foul");
@@ -124,7 +124,7 @@ TEST(PlayerTexts, ThreeMissedClocksAgainstABotAreCountedAndLoseTheGame) {
 }
 
 TEST(PlayerTexts, AnOpponentWhoLeavesIsNamedAndNoRematchIsOffered) {
-    Server server({"--shot-clock", "0", "--no-bots"});
+    TextsServer server({"--shot-clock", "0", "--no-bots"});
     ASSERT_FALSE(server.url().empty());
     auto ravi = net::Connection::open(server.url());
     ravi->send(proto::Hello{proto::kProtocolVersion, "Ravi", std::nullopt});
@@ -164,7 +164,7 @@ TEST(PlayerTexts, AnOpponentWhoLeavesIsNamedAndNoRematchIsOffered) {
     std::ifstream in(json);
     const nlohmann::json written = nlohmann::json::parse(in, nullptr, false);
     const nlohmann::json& said = written.at("said");
-    EXPECT_EQ(tone_of(said, "Ravi left the match: you win by forfeit"), "good") << texts(said);
+    EXPECT_EQ(tone_of(said, "Ravi left the match: you win by forfeit"), "good") << said_lines(said);
     for (const auto& line : said) {
         EXPECT_EQ(line.at("text").get<std::string>().find("A player forfeited"), std::string::npos);
     }
@@ -177,7 +177,7 @@ TEST(PlayerTexts, AnOpponentWhoLeavesIsNamedAndNoRematchIsOffered) {
 }
 
 TEST(PlayerTexts, TheCardBetweenTwoBoardsNamesTheWinnerPointsAndNewColour) {
-    Server server({"--shot-clock", "0", "--time-scale", "25"});
+    TextsServer server({"--shot-clock", "0", "--time-scale", "25"});
     ASSERT_FALSE(server.url().empty());
     ChildProcess bot({CARROM_BOT_PATH, "--url",    server.url(),      "--name",
                       "Ravi",          "--create", "--rule-set",      "icf",
@@ -190,7 +190,7 @@ TEST(PlayerTexts, TheCardBetweenTwoBoardsNamesTheWinnerPointsAndNewColour) {
     test_support::TempDir dir("carrom-texts-board");
     const std::string png = dir.file("card.png");
     const std::string json = dir.file("card.json");
-    const ClientRun r = run_client(
+    const TextsRun r = run_texts_client(
         {"--url",      server.url(),   "--name", "Asha",     "--join", line->substr(prefix.size()),
          "--autoplay", "hard",         "--mute", "--width",  "700",    "--height",
          "700",        "--screenshot", png,      "--report", json,     "--board-summary",
@@ -211,12 +211,12 @@ TEST(PlayerTexts, TheCardBetweenTwoBoardsNamesTheWinnerPointsAndNewColour) {
 }
 
 TEST(PlayerTexts, DoublesBotsHaveNamesOfTheirOwn) {
-    Server server({"--shot-clock", "0", "--time-scale", "25", "--bot-think-ms", "20"});
+    TextsServer server({"--shot-clock", "0", "--time-scale", "25", "--bot-think-ms", "20"});
     ASSERT_FALSE(server.url().empty());
     test_support::TempDir dir("carrom-texts-doubles");
     const std::string png = dir.file("doubles.png");
     const std::string json = dir.file("doubles.json");
-    const ClientRun r = run_client(
+    const TextsRun r = run_texts_client(
         {"--url", server.url(), "--name",  "Asha",     "--vs-bot", "easy",      "--seats",
          "4",     "--mute",     "--width", "700",      "--height", "700",       "--screenshot",
          png,     "--report",   json,      "--frames", "30",       "--timeout", "30"},
@@ -235,7 +235,7 @@ TEST(PlayerTexts, DoublesBotsHaveNamesOfTheirOwn) {
 }
 
 TEST(PlayerTexts, AnEmptyNameIsRefusedInPlainWords) {
-    const ClientRun r = run_client({"--name", " ", "--url", "ws://127.0.0.1:9"}, {}, 20s);
+    const TextsRun r = run_texts_client({"--name", " ", "--url", "ws://127.0.0.1:9"}, {}, 20s);
     EXPECT_EQ(r.exit, 2);
     EXPECT_NE(r.log.find("--name: type a name of 1 to 24 letters (accented letters count twice), "
                          "not only spaces"),
