@@ -30,6 +30,10 @@ struct AppOptions {
     // With a screenshot: also wait until this many shot results have arrived and the board is
     // drawn at rest again.
     int after_shots = 0;
+    // With a screenshot: wait for the card between two boards (--board-summary), for the
+    // game-over panel (--game-over).
+    bool board_summary_shot = false;
+    bool game_over_shot = false;
     std::string report_path; // with a screenshot: what it shows as JSON (board_report.hpp)
     double timeout_s = 0.0;  // > 0: exit with code 3 if still running after this many seconds
     int bench_frames = 0;    // > 0: render that many demo frames and print frame times as JSON

@@ -85,6 +85,9 @@ void AppWindow::handle_event(const sf::Event& e) {
         }
         return;
     }
+    if (model_.board_summary_shown(clock_.now()) && BoardSummaryPanel::dismisses(e)) {
+        model_.dismiss_board_summary(); // the card between boards; the event still plays on
+    }
     if (model_.view().in_room && model_.view().phase == proto::Phase::GameOver) {
         handle_game_over_input(e);
     } else if (model_.view().in_room) {
@@ -246,6 +249,10 @@ void AppWindow::update(double now) {
     sync_aim(now);
     announce_room();
     const Settings& settings = menus_.settings();
+    if (model_.countdown_tick(now)) {
+        // the shot clock's last seconds
+        sound_.play(SoundCue{0.0, SoundKind::Click, 0.7}, settings.volume / 100.0, settings.muted);
+    }
     for (const SoundCue& cue : model_.take_sounds()) {
         sound_.play(cue, settings.volume / 100.0, settings.muted);
     }
@@ -339,6 +346,7 @@ std::optional<int> AppWindow::unattended_frame(int frame) {
         board_painter_.repaints(),
         hud_.bar_repaints(),
         unattended_input_,
+        model_.board_summary_shown(clock_.now()),
         ui_json()};
     unattended_->on_frame(f);
     return unattended_->done();

@@ -7,6 +7,7 @@
 #include "app.hpp"
 #include "blitter.hpp"
 #include "board_painter.hpp"
+#include "board_summary_panel.hpp"
 #include "carrom/client/aim_controller.hpp"
 #include "carrom/client/board_geometry.hpp"
 #include "carrom/client/client_session.hpp"
@@ -78,6 +79,7 @@ private:
     LobbyView lobby_;
     MatchMenus menus_;
     GameOverPanel game_over_;
+    BoardSummaryPanel board_summary_;
     ReconnectPanel reconnect_panel_;
     SoundPlayer sound_;
     ClientSession session_;

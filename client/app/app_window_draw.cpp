@@ -1,5 +1,6 @@
 #include "app_window.hpp"
 
+#include "carrom/client/board_summary_text.hpp"
 #include "carrom/client/game_over_text.hpp"
 #include "carrom/client/reconnect_text.hpp"
 #include "draw_util.hpp"
@@ -123,6 +124,10 @@ void AppWindow::draw(double now) {
         if (model_.view().phase == proto::Phase::GameOver) {
             game_over_.draw(window_, blitter_, hud_.texts(), layout_.board,
                             game_over_text(model_.view(), rematch_asked_));
+        }
+        if (model_.board_summary_shown(now)) {
+            board_summary_.draw(window_, blitter_, hud_.texts(), layout_.board,
+                                board_summary_text(model_.view()));
         }
         if (phase == SessionPhase::Reconnecting || phase == SessionPhase::Failed ||
             phase == SessionPhase::Connecting || phase == SessionPhase::Greeting) {

@@ -159,11 +159,13 @@ void HudPainter::sketch_seat(Sketch& sk, const Rect& area, const MatchModel& mod
                           : s.colour == proto::Colour::Black ? BodyKind::Black
                                                              : BodyKind::Striker;
     const PieceLook look = piece_look(kind);
-    sk.disc({coin_x, mid}, coin_r, look.rim);
-    sk.disc({coin_x, mid}, coin_r * 0.85, look.fill);
+    if (s.colour != proto::Colour::None) { // freestyle: no colours, no dot
+        sk.disc({coin_x, mid}, coin_r, look.rim);
+        sk.disc({coin_x, mid}, coin_r * 0.85, look.fill);
+    }
     const unsigned name_size = text_size(inner.h, 0.34);
     const unsigned score_size = text_size(inner.h, 0.62);
-    std::string name = s.occupied ? s.name : "(empty seat)";
+    std::string name = s.occupied ? s.name : "Free seat";
     if (s.occupied && !s.connected) {
         name += " (away)";
     }
@@ -237,8 +239,9 @@ void HudPainter::sketch_status(Sketch& sk, const Rect& area, const MatchModel& m
     }
     if (const auto left = model.shot_clock_left_s(local_s)) {
         const int secs = static_cast<int>(std::ceil(*left));
-        status += "  " + std::to_string(secs) + " s";
-        if (*left < 5.0) {
+        const bool hurry = *left <= MatchModel::kCountdownS;
+        status += "  " + std::to_string(secs) + (hurry && model.my_turn() ? " s left!" : " s");
+        if (hurry) {
             colour = kAlert;
         }
     }
@@ -252,12 +255,17 @@ Sketch HudPainter::bottom_bar(const Rect& area, const MatchModel& model,
     const float mid = static_cast<float>(area.y + area.h / 2.0);
     // Smaller beside the buttons, so that the room, the rule set and the link fit one line.
     const unsigned size = text_size(area.h, bar_taken > 0.0 ? 0.4 : 0.48);
-    std::string left = "Room " + v.code + "  \xc2\xb7  " + rule_set_name(v.rule_set) +
-                       "  \xc2\xb7  Board " + std::to_string(v.board_number);
+    // A replay's status line is long (turn, speed, the end's reason): its room line names the
+    // rule set and the board only.
+    std::string left = connection.replay
+                           ? rule_set_name(v.rule_set)
+                           : "Room " + v.code + "  \xc2\xb7  " + rule_set_name(v.rule_set) + " " +
+                                 target_words(v.rule_set, v.options.target_points);
+    left += "  \xc2\xb7  Board " + std::to_string(v.board_number);
     if (v.spectators > 0) {
         left += "  \xc2\xb7  " + count_words(v.spectators, "spectator", "spectators");
     }
-    if (v.you < 0) {
+    if (v.you < 0 && !connection.replay) {
         left += "  \xc2\xb7  spectating";
     }
     sk.text(left, size, static_cast<float>(area.x + 10.0), mid, kDim);

@@ -26,6 +26,7 @@ struct ConnectionLine {
     std::string text; // "Connected", "Reconnecting (attempt 2)..."
     bool healthy = true;
     std::optional<double> rtt_ms;
+    bool replay = false; // a replay's: the room line says only the rule set and the board
 };
 
 // The bars are sketched every frame (cheap, plain data) but painted into their textures only

@@ -79,8 +79,10 @@ class App {
       help: () => this.help.open(this.model.view.ruleSet),
       settings: () => this.settings.show(true),
       copyLink: () => this.copyLink(),
+      dismissSummary: () => { this.model.dismissBoardSummary(); this.dirty = true; },
     });
     this.bodies = [];
+    this.countdownTicks = 0; // shot-clock ticks played (the debug hook reports them)
     this.aimTurn = -1; // the turn the aim was set up for
     this.shotSentTurn = -1; // the turn we already shot in (no double shots)
     this.lastAimSent = -1;
@@ -298,6 +300,11 @@ class App {
     window.addEventListener('keydown', (e) => {
       this.sound.unlock();
       if (e.target instanceof HTMLInputElement || e.target instanceof HTMLSelectElement) return;
+      if (this.model.boardSummaryShown(performance.now() / 1000)) {
+        this.model.dismissBoardSummary(); // the card between boards, then play on
+        this.dirty = true;
+        return;
+      }
       const pieces = this.model.boardNow();
       if (e.key === 'Escape' && this.hud.leaveAsked()) {
         this.hud.askLeave(null); // Escape answers Stay
@@ -383,6 +390,10 @@ class App {
     if (this.reducedMotion) this.bodies = this.bodies.filter((b) => !b.falling);
     const animating = v.inRoom && this.model.animating();
     this.syncAim(now);
+    if (v.inRoom && this.model.countdownTick(now) !== null) {
+      this.countdownTicks += 1;
+      this.sound.play({ time: 0, kind: 'click', volume: 0.7 }); // the shot clock's last seconds
+    }
     for (const cue of this.model.takeSounds()) this.sound.play(cue);
     const o = this.overlays();
     const key = [v.inRoom, this.model.version, this.aim.phase, this.aim.x, this.aim.pointer.x,
@@ -431,6 +442,9 @@ class App {
       session: { phase: this.session.phase, status: this.session.status, badFrames: this.session.badFrames() },
       inRoom: v.inRoom, code: v.code, you: v.you, ruleSet: v.ruleSet, phase: v.phase, turn: v.turn,
       toPlay: v.toPlay, winner: v.winner, gameEnd: v.gameEnd, myTurn: this.model.myTurn(),
+      log: this.model.transcript.map((l) => ({ ...l })),
+      boardSummary: v.boardSummary, countdownTicks: this.countdownTicks, options: { ...v.options },
+      boardNumber: v.boardNumber,
       animating: this.model.animating(), flipped: this.model.flipped(), turns: this.model.viewTurns(),
       panels: this.hud.panels.map((p) => ({ ...p })), teams: this.model.doubles() ? teamSummaries(v) : [],
       seats: v.seats.map((s) => ({ ...s })), queen: { ...v.queen }, aimX: v.aimX,

@@ -261,6 +261,10 @@ const SERVER_FIELDS = {
     intArray(m, 'dues'); m.queen = queen(m.queen, 'queen'); int(m, 'next_turn');
     int(m, 'next_seat'); need(isBool(m.extra_turn), 'extra_turn', 'a boolean');
     need(isBool(m.board_over) && isBool(m.game_over), 'game_over', 'a boolean');
+    for (const k of ['returned', 'points', 'fouls']) m[k] ??= []; // absent: none
+    intArray(m, 'returned'); intArray(m, 'points');
+    need(Array.isArray(m.fouls) && m.fouls.every((f) => f && isStr(f.rule) && isStr(f.message)),
+      'fouls', 'an array of {rule, message}');
   },
   error: (m) => { str(m, 'code'); str(m, 'message'); },
   pong: (m) => { int(m, 'nonce'); int(m, 'server_time_ms'); },

@@ -26,6 +26,8 @@ public:
     // Lines still shown at local_s, oldest first.
     std::vector<HudLine> visible(double local_s) const;
     const std::deque<HudLine>& all() const { return lines_; }
+    // Forgets every line (a replay that went back in time: later lines would tell the future).
+    void clear() { lines_.clear(); }
 
 private:
     std::size_t capacity_;
