@@ -162,7 +162,7 @@ async function textsPictures(t) {
   await b.fillLobby({ name: 'Ravi', code });
   await b.press('#join');
   await a.waitFor('Ravi seated', (st) => st.phase === 'aiming');
-  await b.press('#leave');
+  await b.leaveAndForfeit();
   await a.waitFor('the forfeit', (st) => st.phase === 'game_over' && !st.seats[1].occupied);
   await shot(a, 'web-game-over-winner.png');
 

@@ -93,7 +93,7 @@ void HudPainter::draw(sf::RenderTarget& target, Blitter& blitter, const ScreenLa
     over_board_.draw_overlay(target, blitter, texts_, over_board);
 }
 
-Sketch HudPainter::top_bar(const Rect& top, const MatchModel& model, double local_s) const {
+Sketch HudPainter::top_bar(const Rect& top, const MatchModel& model, double local_s) {
     Sketch s;
     if (model.view().seats.size() == 4) {
         // The seats at the left, across and right of the turned board (seat order runs
@@ -115,7 +115,7 @@ Sketch HudPainter::top_bar(const Rect& top, const MatchModel& model, double loca
     return s;
 }
 
-Sketch HudPainter::seat_bar(const Rect& area, const MatchModel& model, double local_s) const {
+Sketch HudPainter::seat_bar(const Rect& area, const MatchModel& model, double local_s) {
     Sketch s;
     const double side_w = std::round(area.w * 0.3);
     const Rect left{area.x, area.y, side_w, area.h};
@@ -141,7 +141,7 @@ Sketch HudPainter::seat_bar(const Rect& area, const MatchModel& model, double lo
 }
 
 void HudPainter::sketch_seat(Sketch& sk, const Rect& area, const MatchModel& model, int seat,
-                             bool right) const {
+                             bool right) {
     const MatchView& v = model.view();
     if (seat < 0 || static_cast<std::size_t>(seat) >= v.seats.size()) {
         return;
@@ -186,18 +186,25 @@ void HudPainter::sketch_seat(Sketch& sk, const Rect& area, const MatchModel& mod
     const float text_x = static_cast<float>(right ? coin_x - coin_r - pad : coin_x + coin_r + pad);
     const Align align = right ? Align::Right : Align::Left;
     const float name_y = sub.empty() ? mid : mid - static_cast<float>(inner.h * 0.16);
-    sk.text(name, name_size, text_x, name_y, kText, align);
+    // The name and the line below it stay between the coin and the score (a long name shrinks,
+    // then ends in "...").
+    const std::string score = std::to_string(s.score);
+    const double text_w = inner.w - (2.0 * coin_r + 3.0 * pad) -
+                          static_cast<double>(texts_.width(score, score_size)) - pad;
+    const FittedText name_fit = fitted(name, name_size, text_w);
+    sk.text(name_fit.text, name_fit.size, text_x, name_y, kText, align);
     if (!sub.empty()) {
-        sk.text(sub, text_size(inner.h, 0.26), text_x, mid + static_cast<float>(inner.h * 0.22),
+        const FittedText sub_fit = fitted(sub, text_size(inner.h, 0.26), text_w);
+        sk.text(sub_fit.text, sub_fit.size, text_x, mid + static_cast<float>(inner.h * 0.22),
                 s.dues > 0 ? kAlert : kDim, align);
     }
     const float score_x = static_cast<float>(right ? inner.x + pad : inner.x + inner.w - pad);
-    sk.text(std::to_string(s.score), score_size, score_x, mid, to_play ? kGold : kText,
+    sk.text(score, score_size, score_x, mid, to_play ? kGold : kText,
             right ? Align::Left : Align::Right);
 }
 
 void HudPainter::sketch_centre(Sketch& sk, const Rect& area, const MatchModel& model,
-                               double local_s) const {
+                               double local_s) {
     const float mid = static_cast<float>(area.y + area.h / 2.0);
     sketch_status(sk, area, model, local_s, mid - static_cast<float>(area.h * 0.14));
     sk.text(queen_text(model), text_size(area.h, 0.24), static_cast<float>(area.x + area.w / 2.0),
@@ -205,7 +212,7 @@ void HudPainter::sketch_centre(Sketch& sk, const Rect& area, const MatchModel& m
 }
 
 void HudPainter::sketch_status(Sketch& sk, const Rect& area, const MatchModel& model,
-                               double local_s, float y) const {
+                               double local_s, float y) {
     const MatchView& v = model.view();
     const float cx = static_cast<float>(area.x + area.w / 2.0);
     std::string status;
@@ -245,7 +252,25 @@ void HudPainter::sketch_status(Sketch& sk, const Rect& area, const MatchModel& m
             colour = kAlert;
         }
     }
-    sk.text(status, text_size(area.h, 0.34), cx, y, colour, Align::Centre);
+    // Within its area, a few px from each edge (a long bot name shrinks, then ends in "...").
+    const FittedText fit = fitted(status, text_size(area.h, 0.34), area.w - 16.0);
+    sk.text(fit.text, fit.size, cx, y, colour, Align::Centre);
+}
+
+const FittedText& HudPainter::fitted(const std::string& text, unsigned size, double width) {
+    if (fitted_.size() > 64) {
+        fitted_.clear();
+    }
+    const auto key = std::make_tuple(text, size, std::lround(width));
+    auto it = fitted_.find(key);
+    if (it == fitted_.end()) {
+        const unsigned min_size = std::max(10u, size * 3 / 4);
+        it = fitted_
+                 .emplace(key, texts_.fit(text, size, std::min(size, min_size),
+                                          static_cast<float>(std::max(0.0, width))))
+                 .first;
+    }
+    return it->second;
 }
 
 Sketch HudPainter::bottom_bar(const Rect& area, const MatchModel& model,

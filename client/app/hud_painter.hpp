@@ -17,6 +17,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -50,18 +51,20 @@ public:
     const std::vector<std::pair<std::string, Rect>>& message_rects() const { return messages_; }
 
 private:
-    Sketch top_bar(const Rect& area, const MatchModel& model, double local_s) const;
+    Sketch top_bar(const Rect& area, const MatchModel& model, double local_s);
     // Doubles: our seat with the turn and the queen beside it.
-    Sketch seat_bar(const Rect& area, const MatchModel& model, double local_s) const;
-    void sketch_seat(Sketch& s, const Rect& area, const MatchModel& model, int seat,
-                     bool right) const;
-    void sketch_centre(Sketch& s, const Rect& area, const MatchModel& model, double local_s) const;
+    Sketch seat_bar(const Rect& area, const MatchModel& model, double local_s);
+    void sketch_seat(Sketch& s, const Rect& area, const MatchModel& model, int seat, bool right);
+    void sketch_centre(Sketch& s, const Rect& area, const MatchModel& model, double local_s);
     void sketch_status(Sketch& s, const Rect& area, const MatchModel& model, double local_s,
-                       float y) const;
+                       float y);
     Sketch bottom_bar(const Rect& area, const MatchModel& model, const ConnectionLine& connection,
                       double bar_taken);
     // The message rows of `text` at `width` (wrapped once per text and width).
     const std::vector<std::string>& wrapped(const std::string& text, unsigned size, double width);
+    // `text` made to fit `width` px (TextCache::fit, at least 3/4 of `size`), kept per text,
+    // size and width.
+    const FittedText& fitted(const std::string& text, unsigned size, double width);
     void sketch_messages(Sketch& s, const Rect& side, const MatchModel& model, double local_s);
     void sketch_room_code(Sketch& s, const Rect& board, const MatchModel& model) const;
 
@@ -73,6 +76,7 @@ private:
     std::vector<std::pair<std::string, Rect>> messages_;
     std::map<std::string, std::vector<std::string>> wrapped_; // at wrapped_width_
     double wrapped_width_ = 0.0;
+    std::map<std::tuple<std::string, unsigned, long>, FittedText> fitted_; // key width in px
 };
 
 } // namespace carrom::client::app

@@ -306,8 +306,7 @@ void MatchModel::on_event(const proto::Event& m, double local_s) {
                        view_.deadline_ms = e.deadline_ms;
                        view_.phase = proto::Phase::Aiming;
                        view_.aim_x_px.reset();
-                       say(e.seat == view_.you ? "Your turn" : seat_name(e.seat) + " to play",
-                           Tone::Info, local_s);
+                       // Not said: the status line names the seat to play ("Your turn").
                    },
                    [&](const proto::BoardEndEvent& e) { on_board_end(e, local_s); },
                    [&](const proto::GameEndEvent& e) {

@@ -40,9 +40,7 @@ run('web.lobby_paths', 120000, async (t) => {
 
   // Leave asks first (the game would be forfeited); Leave again: back to the lobby; the opponent
   // wins because the other left.
-  await a.press('#leave');
-  await a.page.waitForSelector('#leave-ask', { state: 'visible', timeout: 5000 });
-  await a.press('#leave-yes');
+  await a.leaveAndForfeit();
   await a.waitFor('the lobby', (s) => !s.inRoom && s.session.phase === 'lobby');
   check(await a.page.isVisible('#lobby'), 'the lobby is shown again');
   check((await a.state()).hash === '', 'the address no longer names the room');

@@ -84,7 +84,7 @@ async function friendLeaves(t) {
   await b.fillLobby({ name: 'Ravi', code });
   await b.press('#join');
   await a.waitFor('Ravi seated', (s) => s.phase === 'aiming' && s.seats[1].occupied);
-  await b.press('#leave');
+  await b.leaveAndForfeit();
   const end = await a.waitFor('the forfeit', (s) => s.phase === 'game_over' && !s.seats[1].occupied);
   const line = said(end, 'Ravi left the match: you win by forfeit');
   check(line && line.tone === 'good', `the forfeit line: ${JSON.stringify(end.log)}`);

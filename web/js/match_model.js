@@ -416,7 +416,7 @@ export class MatchModel {
           turn: e.turn, toPlay: e.seat, deadlineMs: e.deadline_ms ?? null, phase: 'aiming',
           aimX: null,
         });
-        post(e.seat === v.you ? 'Your turn' : `${this.seatName(e.seat)} to play`, 'info');
+        // Not said: the status line names the seat to play ('Your turn').
         break;
       case 'board_end':
         e.scores.forEach((score, i) => this.setSeat(i, { score }));

@@ -1,7 +1,7 @@
 #pragma once
-// Short messages for the player (pockets, fouls, turns, errors), newest last, each shown for a
-// few seconds. Invariant: no two lines shown at once have the same text (posting a line that is
-// still shown moves it to the newest place with a new time).
+// Short messages for the player (pockets, fouls, extra turns, errors), newest last, each shown
+// for a few seconds. Invariant: no two lines shown at once have the same text (posting a line
+// that is still shown moves it to the newest place with a new time).
 
 #include <cstddef>
 #include <deque>
