@@ -105,7 +105,7 @@ run('web.first_game_ui', 150000, async (t) => {
   await phone.fillLobby({ name: 'Phone', ruleSet: 'freestyle', botLevel: 'random' });
   await phone.press('#play-bot');
   s = await phone.waitFor('our turn against the bot', (st) => st.inRoom && st.myTurn && !st.animating && st.aim.phase === 'idle');
-  check(s.log === 'under', `the log is under the board on a phone (${s.log})`);
+  check(s.logPlace === 'under', `the log is under the board on a phone (${s.logPlace})`);
   let rects = await layoutRects(p);
   check(rects.side.t >= rects.board.b - 0.5, 'the side area starts under the board');
   check(rects.bottom.t - rects.side.b <= 12, `no empty room under the board (${(rects.bottom.t - rects.side.b).toFixed(0)} px left)`);
@@ -166,7 +166,7 @@ run('web.first_game_ui', 150000, async (t) => {
   await desk.fillLobby({ name: 'Desk', ruleSet: 'icf', botLevel: 'random' });
   await desk.press('#play-bot');
   s = await desk.waitFor('our turn against the bot', (st) => st.inRoom && st.myTurn && !st.animating);
-  check(s.log === 'beside', `the log is beside the board on a desktop page (${s.log})`);
+  check(s.logPlace === 'beside', `the log is beside the board on a desktop page (${s.logPlace})`);
   rects = await layoutRects(d);
   check(rects.side.l >= rects.board.r - 0.5, 'the side area is right of the board');
   check(rects.board.w >= 600, `the board stays large (${rects.board.w})`);

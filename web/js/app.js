@@ -459,7 +459,7 @@ class App {
       frames: this.renderer.frames, paints: this.renderer.painter.paints, woodMs: this.renderer.painter.woodMs, resizes: this.resizes.slice(), sounds: this.sound.played,
       cues: { heard: this.model.cuesHeard, late: this.model.cues.late, merged: this.model.cuesMerged },
       muted: this.settings.values.muted, settings: { ...this.settings.values }, audio: this.sound.context ? this.sound.context.state : 'none',
-      hash: window.location.hash, log: this.stage.dataset.log ?? null,
+      hash: window.location.hash, logPlace: this.stage.dataset.log ?? null,
       releaseMs: this.releaseMs ?? null,
       engine: { loaded: Boolean(this.engine), ms: this.engineMs ?? null, error: this.engineError ?? null },
       prediction: this.model.prediction ? { active: this.model.prediction.active, ...this.model.prediction.stats } : null,
