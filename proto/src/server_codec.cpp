@@ -302,6 +302,9 @@ json encode_event(const PlayerReturnedEvent& e) {
 json encode_event(const AimEvent& e) {
     return json{{"seat", e.seat}, {"turn", e.turn}, {"x", e.x_px}};
 }
+json encode_event(const EmoteEvent& e) {
+    return json{{"seat", e.seat}, {"emote", to_string(e.emote)}};
+}
 
 int read_turn(JsonReader& r) {
     return static_cast<int>(r.integer("turn", 0, kMaxTurn));
@@ -377,6 +380,10 @@ void decode_event(JsonReader& r, AimEvent& e) {
     e.seat = read_seat(r, "seat");
     e.turn = read_turn(r);
     e.x_px = r.number("x", {0.0, kMaxCoordinatePx});
+}
+void decode_event(JsonReader& r, EmoteEvent& e) {
+    e.seat = read_seat(r, "seat");
+    e.emote = r.enumeration("emote", kEmoteNames, Emote::NiceShot);
 }
 
 json encode_body(const Event& m) {

@@ -188,10 +188,16 @@ struct AimEvent { // "aim": the shooter's striker position while aiming
     friend bool operator==(const AimEvent&, const AimEvent&) = default;
 };
 
+struct EmoteEvent { // "emote": seat `seat` sent the quick reaction `emote` (not journaled)
+    int seat = 0;
+    Emote emote = Emote::NiceShot;
+    friend bool operator==(const EmoteEvent&, const EmoteEvent&) = default;
+};
+
 // "event": {"type": "event", "kind": <name above>, ...payload fields}.
 using Event = std::variant<CollisionEvent, CushionEvent, PocketEvent, FoulEvent, QueenEvent,
                            DueEvent, TurnEvent, BoardEndEvent, GameEndEvent, PlayerDroppedEvent,
-                           PlayerReturnedEvent, AimEvent>;
+                           PlayerReturnedEvent, AimEvent, EmoteEvent>;
 std::string_view event_kind(const Event& event);
 
 struct Foul {
