@@ -23,6 +23,8 @@ add_test(NAME web.unit COMMAND ${CARROM_NODE} ${web_dir}/unit_test.mjs)
 set_tests_properties(web.unit PROPERTIES TIMEOUT 60 LABELS web)
 add_test(NAME web.golden COMMAND ${CARROM_NODE} ${web_dir}/golden_test.mjs)
 set_tests_properties(web.golden PROPERTIES TIMEOUT 60 LABELS web)
+add_test(NAME web.emotes_unit COMMAND ${CARROM_NODE} ${web_dir}/emotes_unit.mjs)
+set_tests_properties(web.emotes_unit PROPERTIES TIMEOUT 60 LABELS web)
 add_test(NAME web.doubles_unit COMMAND ${CARROM_NODE} ${web_dir}/doubles_test.mjs)
 set_tests_properties(web.doubles_unit PROPERTIES TIMEOUT 60 LABELS web)
 # The session's decisions against tests/golden/session/*.json (net::SessionCore's cases).
@@ -34,7 +36,8 @@ if(NOT CARROM_CHROMIUM OR NOT TARGET carrom-server OR NOT TARGET carrom-bot)
     return()
 endif()
 
-foreach(test two_pages_match page_vs_bot touch_phone reload_resume lobby_paths doubles_pages https_page)
+foreach(test two_pages_match page_vs_bot touch_phone reload_resume lobby_paths doubles_pages https_page
+             emotes_pages)
     add_test(NAME web.${test} COMMAND ${CARROM_NODE} ${web_dir}/${test}.mjs)
     set_tests_properties(web.${test} PROPERTIES
         TIMEOUT 200

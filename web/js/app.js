@@ -8,6 +8,7 @@
 import { AimController, clampBaselineX } from './aim_controller.js';
 import { alongOf, strikerAt } from './board_geometry.js';
 import { Connection } from './connection.js';
+import { EmoteView } from './emote_view.js';
 import { Hud } from './hud.js';
 import { Lobby } from './lobby.js';
 import { MatchModel } from './match_model.js';
@@ -62,6 +63,7 @@ class App {
       toggleMute: () => this.sound.setMuted(!this.sound.muted),
       copyLink: () => this.copyLink(),
     });
+    this.emoteView = new EmoteView((id) => this.session.sendGame(proto.emote(id)));
     this.bodies = [];
     this.aimTurn = -1; // the turn the aim was set up for
     this.shotSentTurn = -1; // the turn we already shot in (no double shots)
@@ -317,6 +319,7 @@ class App {
       this.dirty = false;
     }
     this.hud.update(this.model, this.session, { pulling: this.aim.phase === 'pulling', muted: this.sound.muted }, now);
+    this.emoteView.update(this.model, now);
     this.updateLobby();
     document.body.classList.toggle('aiming', this.aim.phase === 'pulling' || this.aim.phase === 'sliding');
     // Frame time: from the frame's start (the rAF timestamp) to the end of this frame's work.
@@ -362,6 +365,10 @@ class App {
       cues: { heard: this.model.cuesHeard, late: this.model.cues.late, merged: this.model.cuesMerged },
       muted: this.sound.muted, audio: this.sound.context ? this.sound.context.state : 'none',
       hash: window.location.hash,
+      emotes: {
+        received: this.model.emotes.received, visible: this.model.emotes.visible(performance.now() / 1000),
+        mutedSeats: [...this.model.emotes.mutedSeats], allMuted: this.model.emotes.allMuted,
+      },
     };
   }
 

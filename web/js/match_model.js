@@ -11,6 +11,7 @@
 // snapshot has not arrived yet wait for it. Local times in s (performance.now() / 1000).
 
 import { makeBoardGeometry, PHYSICS } from './board_geometry.js';
+import { EmoteBoard } from './emotes.js';
 import { HudLog } from './hud_log.js';
 import { InterpolationBuffer } from './interpolation_buffer.js';
 import { PLAYOUT_DEFAULTS, PlayoutClock } from './playout_clock.js';
@@ -55,12 +56,14 @@ export class MatchModel {
     this.geometry = makeBoardGeometry(physics);
     this.serverClock = new ServerClock();
     this.log = new HudLog();
+    this.emotes = new EmoteBoard(); // kept across rooms: the mutes are the player's choice
     this.reset();
   }
 
   // Forget the room (left it, or the seat is gone).
   reset() {
     this.view = emptyView();
+    this.emotes?.clear();
     this.playout = new PlayoutClock();
     this.buffer = new InterpolationBuffer(this.geometry);
     this.cues = new SoundCueQueue();
@@ -317,6 +320,9 @@ export class MatchModel {
         break;
       case 'aim':
         if (e.seat !== v.you && e.turn === v.turn) v.aimX = e.x;
+        break;
+      case 'emote':
+        this.emotes.receive(e.seat, e.emote, localS);
         break;
       default:
         break;
