@@ -26,7 +26,7 @@ bool fixed_step(const AppOptions& o) {
 AppWindow::AppWindow(const AppOptions& options, const sf::Font& font)
     : options_(options), font_(font), clock_(fixed_step(options)),
       geometry_(make_board_geometry(physics_)), model_(physics_), aim_(physics_),
-      board_painter_(geometry_), hud_(font), lobby_(font),
+      aim_assist_(physics_), board_painter_(geometry_), hud_(font), lobby_(font),
       sound_(!options.mute && options.bench_frames == 0 && options.screenshot_path.empty()),
       session_(make_factory(), options.name, network_session_config()) {}
 
@@ -54,6 +54,9 @@ void AppWindow::handle_event(const sf::Event& e) {
         }
         return;
     }
+    if (model_.view().in_room && handle_emote_key(e)) {
+        return;
+    }
     if (model_.view().in_room && model_.view().phase == proto::Phase::GameOver) {
         handle_game_over_input(e);
     } else if (model_.view().in_room) {
@@ -78,6 +81,28 @@ void AppWindow::back_to_lobby() {
     shot_sent_turn_ = -1;
     rematch_asked_ = false;
     announced_room_.clear();
+}
+
+bool AppWindow::handle_emote_key(const sf::Event& e) {
+    if (e.type != sf::Event::KeyPressed) {
+        return false;
+    }
+    if (e.key.code == sf::Keyboard::E) {
+        model_.emotes().set_all_muted(!model_.emotes().all_muted());
+        model_.log().post(model_.emotes().all_muted() ? "Emotes muted (E shows them)"
+                                                      : "Emotes shown (E mutes them)",
+                          Tone::Info, clock_.now());
+        return true;
+    }
+    const int index = static_cast<int>(e.key.code) - static_cast<int>(sf::Keyboard::Num1);
+    const MatchView& v = model_.view();
+    if (index < 0 || index >= static_cast<int>(proto::kEmoteNames.size()) || v.you < 0 ||
+        v.phase == proto::Phase::Waiting) {
+        return false;
+    }
+    session_.send_game(
+        proto::EmoteMessage{proto::kEmoteNames[static_cast<std::size_t>(index)].value});
+    return true;
 }
 
 void AppWindow::handle_match_input(const sf::Event& e) {

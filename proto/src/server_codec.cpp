@@ -148,7 +148,8 @@ json encode_body(const RoomState& m) {
              {"bodies", std::move(bodies)},
              {"motion",
               {{"damping_per_s", m.motion.damping_per_s},
-               {"contact_snapshots", m.motion.contact_snapshots}}}};
+               {"contact_snapshots", m.motion.contact_snapshots}}},
+             {"aim_assist", m.aim_assist}};
     if (m.shot_clock_deadline_ms) {
         out["shot_clock_deadline_ms"] = *m.shot_clock_deadline_ms;
     }
@@ -199,6 +200,9 @@ void decode_body(JsonReader& r, RoomState& m) {
             m.motion.contact_snapshots = o.boolean("contact_snapshots");
             r.merge(o.error());
         }
+    }
+    if (r.has("aim_assist")) {
+        m.aim_assist = r.boolean("aim_assist");
     }
 }
 

@@ -11,12 +11,12 @@ namespace carrom::proto {
 namespace {
 
 // The decoded client message's error code ("" on success).
-std::string client_error(const std::string& text) {
+std::string emote_client_error(const std::string& text) {
     const auto decoded = decode_client(text);
     return decoded.ok() ? std::string() : decoded.error.code;
 }
 // The decoded server message's error code ("" on success).
-std::string server_error(const std::string& text) {
+std::string emote_server_error(const std::string& text) {
     const auto decoded = decode_server(text);
     return decoded.ok() ? std::string() : decoded.error.code;
 }
@@ -51,35 +51,35 @@ TEST(ProtoEmote, EveryNameDecodesToItsEmote) {
 }
 
 TEST(ProtoEmote, ClientRejectsAMissingEmote) {
-    EXPECT_EQ(client_error(R"({"type":"emote"})"), "bad_field");
+    EXPECT_EQ(emote_client_error(R"({"type":"emote"})"), "bad_field");
 }
 
 TEST(ProtoEmote, ClientRejectsAnUnknownName) {
-    EXPECT_EQ(client_error(R"({"type":"emote","emote":"hurry_up"})"), "bad_field");
+    EXPECT_EQ(emote_client_error(R"({"type":"emote","emote":"hurry_up"})"), "bad_field");
 }
 
 TEST(ProtoEmote, ClientRejectsFreeText) {
-    EXPECT_EQ(client_error(R"({"type":"emote","emote":"you are slow"})"), "bad_field");
+    EXPECT_EQ(emote_client_error(R"({"type":"emote","emote":"you are slow"})"), "bad_field");
 }
 
 TEST(ProtoEmote, ClientRejectsAnEmptyName) {
-    EXPECT_EQ(client_error(R"({"type":"emote","emote":""})"), "bad_field");
+    EXPECT_EQ(emote_client_error(R"({"type":"emote","emote":""})"), "bad_field");
 }
 
 TEST(ProtoEmote, ClientNamesAreCaseSensitive) {
-    EXPECT_EQ(client_error(R"({"type":"emote","emote":"Nice_Shot"})"), "bad_field");
+    EXPECT_EQ(emote_client_error(R"({"type":"emote","emote":"Nice_Shot"})"), "bad_field");
 }
 
 TEST(ProtoEmote, ClientRejectsANumber) {
-    EXPECT_EQ(client_error(R"({"type":"emote","emote":0})"), "bad_field");
+    EXPECT_EQ(emote_client_error(R"({"type":"emote","emote":0})"), "bad_field");
 }
 
 TEST(ProtoEmote, ClientRejectsNull) {
-    EXPECT_EQ(client_error(R"({"type":"emote","emote":null})"), "bad_field");
+    EXPECT_EQ(emote_client_error(R"({"type":"emote","emote":null})"), "bad_field");
 }
 
 TEST(ProtoEmote, ClientRejectsAnArray) {
-    EXPECT_EQ(client_error(R"({"type":"emote","emote":["wow"]})"), "bad_field");
+    EXPECT_EQ(emote_client_error(R"({"type":"emote","emote":["wow"]})"), "bad_field");
 }
 
 TEST(ProtoEmote, ClientErrorNamesTheField) {
@@ -89,22 +89,22 @@ TEST(ProtoEmote, ClientErrorNamesTheField) {
 }
 
 TEST(ProtoEmote, ClientIgnoresUnknownFields) {
-    EXPECT_EQ(client_error(R"({"type":"emote","emote":"wow","text":"hi"})"), "");
+    EXPECT_EQ(emote_client_error(R"({"type":"emote","emote":"wow","text":"hi"})"), "");
 }
 
 TEST(ProtoEmote, EventRejectsASeatOutOfRange) {
-    EXPECT_EQ(server_error(R"({"type":"event","kind":"emote","seat":4,"emote":"wow"})"),
+    EXPECT_EQ(emote_server_error(R"({"type":"event","kind":"emote","seat":4,"emote":"wow"})"),
               "bad_field");
-    EXPECT_EQ(server_error(R"({"type":"event","kind":"emote","seat":-1,"emote":"wow"})"),
+    EXPECT_EQ(emote_server_error(R"({"type":"event","kind":"emote","seat":-1,"emote":"wow"})"),
               "bad_field");
 }
 
 TEST(ProtoEmote, EventRejectsAMissingSeat) {
-    EXPECT_EQ(server_error(R"({"type":"event","kind":"emote","emote":"wow"})"), "bad_field");
+    EXPECT_EQ(emote_server_error(R"({"type":"event","kind":"emote","emote":"wow"})"), "bad_field");
 }
 
 TEST(ProtoEmote, EventRejectsAnUnknownName) {
-    EXPECT_EQ(server_error(R"({"type":"event","kind":"emote","seat":0,"emote":"boo"})"),
+    EXPECT_EQ(emote_server_error(R"({"type":"event","kind":"emote","seat":0,"emote":"boo"})"),
               "bad_field");
 }
 

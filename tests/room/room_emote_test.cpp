@@ -1,5 +1,6 @@
-// Emotes in a room: broadcast to every member, per-seat rate limit (EmoteLimiter), spectators
-// and strangers refused, never journaled, never touching the match.
+// Emotes in a room (and room_state's aim_assist switch): broadcast to every member, per-seat rate
+// limit (EmoteLimiter), spectators and strangers refused, never journaled, never touching the
+// match.
 #include "carrom/room/emote_limiter.hpp"
 
 #include "room/recording_journal.hpp"
@@ -203,6 +204,22 @@ TEST_F(RoomEmoteJournalTest, EmotesAreNotJournaled) {
     room.emote(*a, {proto::Emote::GoodLuck});
     EXPECT_EQ(b->events<proto::EmoteEvent>().size(), 1U);
     EXPECT_EQ(match.entries.size(), before);
+}
+
+TEST_F(RoomTest, RoomStateAllowsAimAssistByDefault) {
+    seat_both();
+    EXPECT_TRUE(a_->last_room_state().aim_assist);
+}
+
+TEST(RoomAimAssist, ARoomWithoutAimAssistSaysSo) {
+    ManualClock clock;
+    RoomCounters counters;
+    RoomConfig config;
+    config.aim_assist = false;
+    Room room("ABCDEF", config, clock, counters);
+    auto a = std::make_shared<FakePeer>(1, "Asha");
+    ASSERT_FALSE(room.join(a, proto::Role::Player));
+    EXPECT_FALSE(a->last_room_state().aim_assist);
 }
 
 } // namespace

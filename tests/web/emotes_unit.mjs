@@ -103,3 +103,17 @@ test('the match model shows an emote event, and a new room clears it but keeps t
   assert.deepEqual(m.emotes.visible(5), []);
   assert.equal(m.emotes.isMuted(2), true);
 });
+
+test('room_state\'s aim_assist: absent reads as on, a non-boolean is refused', () => {
+  const room = {
+    type: 'room_state', code: 'ABC234', you: 0, rule_set: 'icf', options: {},
+    seats: [0, 1].map(() => ({ occupied: true, name: 'A', connected: true, bot: false, colour: 'white', baseline: 'bottom' })),
+    spectators: 0, scores: [0, 0], dues: [0, 0], board_number: 1, turn: 0, to_play: 0,
+    server_time_ms: 1, phase: 'aiming', queen: { state: 'on_board', seat: -1 }, winner: -1, bodies: [],
+  };
+  const absent = proto.decodeServer(JSON.stringify(room));
+  assert.equal(absent.error, undefined, absent.error);
+  assert.equal(absent.message.aim_assist, true);
+  assert.equal(proto.decodeServer(JSON.stringify({ ...room, aim_assist: false })).message.aim_assist, false);
+  assert.match(proto.decodeServer(JSON.stringify({ ...room, aim_assist: 1 })).error, /aim_assist/);
+});

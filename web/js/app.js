@@ -352,7 +352,7 @@ class App {
       toPlay: v.toPlay, winner: v.winner, gameEnd: v.gameEnd, myTurn: this.model.myTurn(),
       animating: this.model.animating(), flipped: this.model.flipped(), turns: this.model.viewTurns(),
       panels: this.hud.panels.map((p) => ({ ...p })), teams: this.model.doubles() ? teamSummaries(v) : [],
-      seats: v.seats.map((s) => ({ ...s })), queen: { ...v.queen }, aimX: v.aimX,
+      seats: v.seats.map((s) => ({ ...s })), queen: { ...v.queen }, aimX: v.aimX, aimAssist: v.aimAssist,
       board: this.model.boardNow().map((b) => ({ ...b })),
       drawn: this.renderer.drawn.map((d) => ({ ...d })),
       canvas: { left: rect.left, top: rect.top, side: this.renderer.side, dpr: this.renderer.dpr },

@@ -43,6 +43,7 @@ function emptyView() {
     winner: -1,
     deadlineMs: null, // shot clock, server clock
     aimX: null, // the shooter's live striker x (aim events)
+    aimAssist: true, // room_state's aim_assist
     // {winner, reason, sentence} once the game ended; reason: the name the journal, the Match API
     // and carrom-bot give the end (game_end's rule code, or its reason from a server without one).
     gameEnd: null,
@@ -185,6 +186,7 @@ export class MatchModel {
     }
     Object.assign(v, {
       inRoom: true, code: m.code, you: m.you, ruleSet: m.rule_set, options: m.options,
+      aimAssist: m.aim_assist, // the first-contact guide is allowed (practice and unrated games)
       spectators: m.spectators, boardNumber: m.board_number, turn: m.turn, toPlay: m.to_play,
       phase: m.phase, queen: m.queen, winner: m.winner,
       deadlineMs: m.shot_clock_deadline_ms ?? null,

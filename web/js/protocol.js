@@ -194,6 +194,9 @@ function roomState(m) {
   int(m, 'to_play');
   optInt(m, 'shot_clock_deadline_ms');
   int(m, 'server_time_ms');
+  // Absent (a server before aim assist): allowed.
+  if (m.aim_assist === undefined) m.aim_assist = true;
+  need(isBool(m.aim_assist), 'aim_assist', 'a boolean');
   oneOf(m, 'phase', PHASES);
   m.queen = queen(m.queen, 'queen');
   int(m, 'winner');

@@ -10,6 +10,7 @@
 // events for a turn whose first snapshot has not arrived yet wait for it.
 
 #include "carrom/client/coins_left.hpp"
+#include "carrom/client/emote_board.hpp"
 #include "carrom/client/hud_log.hpp"
 #include "carrom/client/interpolation_buffer.hpp"
 #include "carrom/client/match_view.hpp"
@@ -73,6 +74,9 @@ public:
     const ServerClock& server_clock() const { return server_clock_; }
     HudLog& log() { return log_; }
     const HudLog& log() const { return log_; }
+    // The seats' emotes on show and the player's mutes (kept across rooms).
+    EmoteBoard& emotes() { return emotes_; }
+    const EmoteBoard& emotes() const { return emotes_; }
     const PlayoutClock& playout() const { return playout_; }
     const InterpolationBuffer& buffer() const { return buffer_; }
     // Strokes predicted, bodies corrected by the server's snapshots, the largest difference.
@@ -109,6 +113,7 @@ private:
     ServerClock server_clock_;
     SoundCueSchedule sounds_;
     HudLog log_;
+    EmoteBoard emotes_;
     std::map<int, BodyKind> kinds_;
     ShotTimeline timeline_;
     // The team and dues of the last `due` event since the last shot_result: the server sends one

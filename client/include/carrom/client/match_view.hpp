@@ -57,6 +57,7 @@ struct MatchView {
     std::optional<std::int64_t> deadline_ms; // shot clock, server clock
     std::optional<double> aim_x_px;          // the shooter's live striker x (aim events)
     std::optional<GameResult> result;        // from game over until a new game starts
+    bool aim_assist = true; // room_state's aim_assist: the first-contact guide is allowed
 };
 
 // The seat's name, or "Seat N" for a seat without one.

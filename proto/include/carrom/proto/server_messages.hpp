@@ -76,6 +76,10 @@ struct RoomState {
     int winner = -1;               // "winner": the winning team (= its first seat), -1 while none
     std::vector<BoardBody> bodies; // "bodies": the full board, every body with its kind
     MotionInfo motion;             // "motion", optional on the wire (absent: the defaults above)
+    // "aim_assist": the room allows the aim guide to the first piece the striker would touch
+    // (practice, bot and other unrated games; off in rated ones). Optional on the wire (absent:
+    // true).
+    bool aim_assist = true;
     friend bool operator==(const RoomState&, const RoomState&) = default;
 };
 
