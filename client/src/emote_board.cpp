@@ -1,27 +1,22 @@
 #include "carrom/client/emote_board.hpp"
 
+#include <array>
+#include <string_view>
+
 namespace carrom::client {
 
+namespace {
+
+// The words of each emote, in proto::Emote's order (the web page's, web/js/emotes.js).
+constexpr std::array<std::string_view, 8> kEmoteWords{
+    "Nice shot!", "Good game!", "Well played!", "Thanks!", "Good luck!", "Oops!", "Wow!", "Sorry!"};
+static_assert(kEmoteWords.size() == proto::kEmoteNames.size(), "words for every emote");
+
+} // namespace
+
 std::string emote_text(proto::Emote emote) {
-    switch (emote) {
-    case proto::Emote::NiceShot:
-        return "Nice shot!";
-    case proto::Emote::GoodGame:
-        return "Good game!";
-    case proto::Emote::WellPlayed:
-        return "Well played!";
-    case proto::Emote::Thanks:
-        return "Thanks!";
-    case proto::Emote::GoodLuck:
-        return "Good luck!";
-    case proto::Emote::Oops:
-        return "Oops!";
-    case proto::Emote::Wow:
-        return "Wow!";
-    case proto::Emote::Sorry:
-        return "Sorry!";
-    }
-    return {};
+    const auto index = static_cast<std::size_t>(emote);
+    return index < kEmoteWords.size() ? std::string(kEmoteWords[index]) : std::string();
 }
 
 bool EmoteBoard::receive(int seat, proto::Emote emote, double local_s) {
