@@ -37,7 +37,7 @@ std::string settings_file(const AppOptions& o) {
 AppWindow::AppWindow(const AppOptions& options, const sf::Font& font)
     : options_(options), font_(font), clock_(fixed_step(options)),
       geometry_(make_board_geometry(physics_)), model_(physics_), aim_(physics_),
-      board_painter_(geometry_), hud_(font), lobby_(font, options.name),
+      aim_assist_(physics_), board_painter_(geometry_), hud_(font), lobby_(font, options.name),
       menus_(settings_file(options), load_settings(settings_file(options))),
       sound_(!options.mute && options.bench_frames == 0 && options.screenshot_path.empty()),
       session_(make_factory(), options.name, network_session_config()) {}
@@ -87,6 +87,9 @@ void AppWindow::handle_event(const sf::Event& e) {
     }
     if (model_.board_summary_shown(clock_.now()) && BoardSummaryPanel::dismisses(e)) {
         model_.dismiss_board_summary(); // the card between boards; the event still plays on
+    }
+    if (model_.view().in_room && handle_emote_key(e)) {
+        return;
     }
     if (model_.view().in_room && model_.view().phase == proto::Phase::GameOver) {
         handle_game_over_input(e);
@@ -139,6 +142,28 @@ void AppWindow::back_to_lobby() {
     shot_sent_turn_ = -1;
     rematch_asked_ = false;
     announced_room_.clear();
+}
+
+bool AppWindow::handle_emote_key(const sf::Event& e) {
+    if (e.type != sf::Event::KeyPressed) {
+        return false;
+    }
+    if (e.key.code == sf::Keyboard::E) {
+        model_.emotes().set_all_muted(!model_.emotes().all_muted());
+        model_.log().post(model_.emotes().all_muted() ? "Emotes muted (E shows them)"
+                                                      : "Emotes shown (E mutes them)",
+                          Tone::Info, clock_.now());
+        return true;
+    }
+    const int index = static_cast<int>(e.key.code) - static_cast<int>(sf::Keyboard::Num1);
+    const MatchView& v = model_.view();
+    if (index < 0 || index >= static_cast<int>(proto::kEmoteNames.size()) || v.you < 0 ||
+        v.phase == proto::Phase::Waiting) {
+        return false;
+    }
+    session_.send_game(
+        proto::EmoteMessage{proto::kEmoteNames[static_cast<std::size_t>(index)].value});
+    return true;
 }
 
 void AppWindow::handle_match_input(const sf::Event& e) {

@@ -8,6 +8,7 @@
 #include "blitter.hpp"
 #include "board_painter.hpp"
 #include "board_summary_panel.hpp"
+#include "carrom/client/aim_assist.hpp"
 #include "carrom/client/aim_controller.hpp"
 #include "carrom/client/board_geometry.hpp"
 #include "carrom/client/client_session.hpp"
@@ -55,6 +56,12 @@ private:
     void sync_aim(double now);
     void draw(double now);
     void draw_aim();
+    // The first-contact guide of the pull in progress (rooms with aim assist).
+    void draw_aim_assist(sf::VertexArray& tris, const ScreenMapping& m);
+    // Each seat's emote on show, beside its side of the board.
+    void draw_emotes(double now);
+    // Keys 1-8 send an emote (a seated player in a started game); E mutes or shows them all.
+    bool handle_emote_key(const sf::Event& e);
     void draw_status_panel(const std::string& title, const std::string& detail);
     void announce_room();
     // Hands the frame just drawn (number `frame`) to the unattended mode; its exit code when it
@@ -73,6 +80,7 @@ private:
     BoardGeometry geometry_;
     MatchModel model_;
     AimController aim_;
+    AimAssist aim_assist_;
     Blitter blitter_;
     BoardPainter board_painter_;
     HudPainter hud_;

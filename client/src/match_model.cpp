@@ -36,6 +36,7 @@ MatchModel::MatchModel(const PhysicsConfig& physics, const PlayoutConfig& playou
 
 void MatchModel::reset() {
     view_ = {};
+    emotes_.clear();
     playout_ = PlayoutClock(playout_config_);
     buffer_ = InterpolationBuffer(make_board_geometry(physics_), interpolation_config_);
     coins_ = {};
@@ -136,6 +137,7 @@ void MatchModel::on_room_state(const proto::RoomState& m, double local_s) {
     view_.you = m.you;
     view_.rule_set = m.rule_set;
     view_.options = m.options;
+    view_.aim_assist = m.aim_assist;
     view_.spectators = m.spectators;
     view_.board_number = m.board_number;
     view_.turn = m.turn;
@@ -340,6 +342,7 @@ void MatchModel::on_event(const proto::Event& m, double local_s) {
                            view_.aim_x_px = e.x_px;
                        }
                    },
+                   [&](const proto::EmoteEvent& e) { emotes_.receive(e.seat, e.emote, local_s); },
                },
                m);
 }

@@ -8,6 +8,7 @@
 import { AimController, clampBaselineX } from './aim_controller.js';
 import { alongOf, radiusOf, strikerAt } from './board_geometry.js';
 import { Connection } from './connection.js';
+import { EmoteView } from './emote_view.js';
 import { loadEngine } from './engine.js';
 import { Help } from './help.js';
 import { Hud } from './hud.js';
@@ -81,6 +82,7 @@ class App {
       copyLink: () => this.copyLink(),
       dismissSummary: () => { this.model.dismissBoardSummary(); this.dirty = true; },
     });
+    this.emoteView = new EmoteView((id) => this.session.sendGame(proto.emote(id)));
     this.bodies = [];
     this.countdownTicks = 0; // shot-clock ticks played (the debug hook reports them)
     this.aimTurn = -1; // the turn the aim was set up for
@@ -410,6 +412,7 @@ class App {
     }
     this.hud.update(this.model, this.session, { pulling: this.aim.phase === 'pulling', muted: this.settings.values.muted }, now);
     this.help.update(v.inRoom && v.you >= 0 && ['aiming', 'moving'].includes(v.phase), v.ruleSet);
+    this.emoteView.update(this.model, now);
     this.updateLobby();
     document.body.classList.toggle('aiming', this.aim.phase === 'pulling' || this.aim.phase === 'sliding');
     // Frame time: from the frame's start (the rAF timestamp) to the end of this frame's work.
@@ -447,7 +450,7 @@ class App {
       boardNumber: v.boardNumber,
       animating: this.model.animating(), flipped: this.model.flipped(), turns: this.model.viewTurns(),
       panels: this.hud.panels.map((p) => ({ ...p })), teams: this.model.doubles() ? teamSummaries(v) : [],
-      seats: v.seats.map((s) => ({ ...s })), queen: { ...v.queen }, aimX: v.aimX,
+      seats: v.seats.map((s) => ({ ...s })), queen: { ...v.queen }, aimX: v.aimX, aimAssist: v.aimAssist,
       board: this.model.boardNow().map((b) => ({ ...b })),
       drawn: this.renderer.drawn.map((d) => ({ ...d })),
       canvas: { left: rect.left, top: rect.top, side: this.renderer.side, dpr: this.renderer.dpr },
@@ -463,6 +466,10 @@ class App {
       releaseMs: this.releaseMs ?? null,
       engine: { loaded: Boolean(this.engine), ms: this.engineMs ?? null, error: this.engineError ?? null },
       prediction: this.model.prediction ? { active: this.model.prediction.active, ...this.model.prediction.stats } : null,
+      emotes: {
+        received: this.model.emotes.received, visible: this.model.emotes.visible(performance.now() / 1000),
+        mutedSeats: [...this.model.emotes.mutedSeats], allMuted: this.model.emotes.allMuted,
+      },
     };
   }
 

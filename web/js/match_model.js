@@ -11,6 +11,7 @@
 // snapshot has not arrived yet wait for it. Local times in s (performance.now() / 1000).
 
 import { makeBoardGeometry, PHYSICS } from './board_geometry.js';
+import { EmoteBoard } from './emotes.js';
 import { HudLog } from './hud_log.js';
 import { InterpolationBuffer } from './interpolation_buffer.js';
 import { PLAYOUT_DEFAULTS, PlayoutClock } from './playout_clock.js';
@@ -47,6 +48,7 @@ function emptyView() {
     winner: -1,
     deadlineMs: null, // shot clock, server clock
     aimX: null, // the shooter's live striker x (aim events)
+    aimAssist: true, // room_state's aim_assist
     // {winner, reason, sentence} once the game ended; reason: the name the journal, the Match API
     // and carrom-bot give the end (game_end's rule code, or its reason from a server without one).
     gameEnd: null,
@@ -65,6 +67,7 @@ export class MatchModel {
     this.log = new HudLog();
     this.prediction = null; // a ShotPrediction once the engine is loaded (setEngine)
     this.transcript = []; // every line said, the newest TRANSCRIPT_LINES (the debug hook's)
+    this.emotes = new EmoteBoard(); // kept across rooms: the mutes are the player's choice
     this.reset();
   }
 
@@ -76,6 +79,7 @@ export class MatchModel {
   // Forget the room (left it, or the seat is gone).
   reset() {
     this.view = emptyView();
+    this.emotes?.clear();
     this.playout = new PlayoutClock();
     this.buffer = new InterpolationBuffer(this.geometry);
     this.cues = new SoundCueQueue();
@@ -240,6 +244,7 @@ export class MatchModel {
     }
     Object.assign(v, {
       inRoom: true, code: m.code, you: m.you, ruleSet: m.rule_set, options: m.options,
+      aimAssist: m.aim_assist, // the first-contact guide is allowed (practice and unrated games)
       spectators: m.spectators, boardNumber: m.board_number, turn: m.turn, toPlay: m.to_play,
       phase: m.phase, queen: m.queen, winner: m.winner,
       deadlineMs: m.shot_clock_deadline_ms ?? null,
@@ -457,6 +462,9 @@ export class MatchModel {
         break;
       case 'aim':
         if (e.seat !== v.you && e.turn === v.turn) v.aimX = e.x;
+        break;
+      case 'emote':
+        this.emotes.receive(e.seat, e.emote, localS);
         break;
       default:
         break;

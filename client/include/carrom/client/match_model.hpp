@@ -10,6 +10,7 @@
 // events for a turn whose first snapshot has not arrived yet wait for it.
 
 #include "carrom/client/coins_left.hpp"
+#include "carrom/client/emote_board.hpp"
 #include "carrom/client/hud_log.hpp"
 #include "carrom/client/interpolation_buffer.hpp"
 #include "carrom/client/match_view.hpp"
@@ -87,6 +88,9 @@ public:
     const std::deque<HudLine>& transcript() const { return transcript_; }
     static constexpr std::size_t kTranscriptLines = 200;
     const HudLog& log() const { return log_; }
+    // The seats' emotes on show and the player's mutes (kept across rooms).
+    EmoteBoard& emotes() { return emotes_; }
+    const EmoteBoard& emotes() const { return emotes_; }
     const PlayoutClock& playout() const { return playout_; }
     const InterpolationBuffer& buffer() const { return buffer_; }
     // Strokes predicted, bodies corrected by the server's snapshots, the largest difference.
@@ -126,6 +130,7 @@ private:
     ServerClock server_clock_;
     SoundCueSchedule sounds_;
     HudLog log_;
+    EmoteBoard emotes_;
     std::map<int, BodyKind> kinds_;
     ShotTimeline timeline_;
     // The team and dues of the last `due` event since the last shot_result: the server sends one

@@ -69,6 +69,7 @@ struct MatchView {
     std::optional<GameResult> result;        // from game over until a new game starts
     // The board that ended last, until its card is dismissed or the game ends with it.
     std::optional<BoardSummary> board_summary;
+    bool aim_assist = true; // room_state's aim_assist: the first-contact guide is allowed
 };
 
 // The seat's name, or "Seat N" for a seat without one.
