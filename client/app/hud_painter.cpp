@@ -293,7 +293,6 @@ Sketch HudPainter::bottom_bar(const Rect& area, const MatchModel& model,
     if (v.you < 0 && !connection.replay) {
         left += "  \xc2\xb7  spectating";
     }
-    sk.text(left, size, static_cast<float>(area.x + 10.0), mid, kDim);
     std::string right = connection.text;
     // The round trip only where the line has room for it (the buttons take the bar's right).
     if (connection.rtt_ms) {
@@ -305,6 +304,11 @@ Sketch HudPainter::bottom_bar(const Rect& area, const MatchModel& model,
             right += rtt.str();
         }
     }
+    // The room line keeps clear of the connection (it shrinks, then ends in "...").
+    const double left_w =
+        area.w - bar_taken - 40.0 - static_cast<double>(texts_.width(right, size));
+    const FittedText left_fit = fitted(left, size, left_w);
+    sk.text(left_fit.text, left_fit.size, static_cast<float>(area.x + 10.0), mid, kDim);
     sk.text(right, size, static_cast<float>(area.x + area.w - 10.0 - bar_taken), mid,
             connection.healthy ? kOk : kAlert, Align::Right);
     return sk;
