@@ -23,8 +23,12 @@ add_test(NAME web.unit COMMAND ${CARROM_NODE} ${web_dir}/unit_test.mjs)
 set_tests_properties(web.unit PROPERTIES TIMEOUT 60 LABELS web)
 add_test(NAME web.golden COMMAND ${CARROM_NODE} ${web_dir}/golden_test.mjs)
 set_tests_properties(web.golden PROPERTIES TIMEOUT 60 LABELS web)
+add_test(NAME web.emotes_unit COMMAND ${CARROM_NODE} ${web_dir}/emotes_unit.mjs)
+set_tests_properties(web.emotes_unit PROPERTIES TIMEOUT 60 LABELS web)
 add_test(NAME web.doubles_unit COMMAND ${CARROM_NODE} ${web_dir}/doubles_test.mjs)
 set_tests_properties(web.doubles_unit PROPERTIES TIMEOUT 60 LABELS web)
+add_test(NAME web.texts COMMAND ${CARROM_NODE} ${web_dir}/texts_test.mjs)
+set_tests_properties(web.texts PROPERTIES TIMEOUT 60 LABELS web)
 # The session's decisions against tests/golden/session/*.json (net::SessionCore's cases).
 add_test(NAME web.session COMMAND ${CARROM_NODE} ${web_dir}/session_test.mjs)
 set_tests_properties(web.session PROPERTIES TIMEOUT 60 LABELS web)
@@ -36,7 +40,8 @@ endif()
 
 # The page's engine (wasm/CMakeLists.txt): without it the page runs without prediction and
 # replays; CARROM_WEB_ENGINE tells the tests which page they get, and the replay test needs it.
-set(web_tests two_pages_match page_vs_bot touch_phone reload_resume lobby_paths doubles_pages https_page)
+set(web_tests two_pages_match page_vs_bot touch_phone reload_resume lobby_paths doubles_pages https_page
+    first_game_ui texts_pages emotes_pages)
 if(CARROM_WEB_WASM)
     list(APPEND web_tests replay_page)
 endif()
