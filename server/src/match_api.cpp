@@ -55,7 +55,9 @@ Json listing_to_json(const store::MatchListing& m) {
             {"created_ms", m.created_ms},
             {"finished_ms", m.finished_ms ? Json(*m.finished_ms) : Json(nullptr)},
             {"result", m.result ? proto::game_result_to_json(*m.result) : Json(nullptr)},
-            {"scores", m.scores}};
+            {"scores", m.scores},
+            // The web client's replay page for it, relative to this server (docs/web.md).
+            {"replay", "/#/replay/" + m.id}};
 }
 
 MatchApiAnswer answer_journal(store::MatchStore& store, std::string_view id) {
