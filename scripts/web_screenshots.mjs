@@ -4,7 +4,7 @@
 //   node scripts/web_screenshots.mjs [--server PATH] [--out docs/img] [--only singles|doubles|replay|texts]
 //
 // web-aim.png: 900 x 900, a game against a server bot, the break being aimed (the pull, the
-// guide and the power ring). web-phone.png: 390 x 844 at 2 device px per CSS px, touch, the
+// guide, the power ring and, with the page's engine, the aim assist). web-phone.png: 390 x 844 at 2 device px per CSS px, touch, the
 // board after the break against a server bot (the first-game tips skipped, the log under the
 // board). web-rules.png: the same phone, How to play opened from the match (freestyle).
 // web-doubles-side.png: 900 x 900, a doubles game of
@@ -206,12 +206,14 @@ run('web_screenshots', 300000, async (t) => {
   const desk = await Player.open(await t.browser.newContext({ viewport: { width: 900, height: 900 } }), 'desktop', pageUrl(web, server), t.errors);
   await desk.fillLobby({ name: 'Asha', ruleSet: 'icf', botLevel: 'easy' });
   await desk.press('#play-bot');
-  let s = await desk.waitFor('our break', (st) => st.inRoom && st.myTurn && !st.animating && st.aim.phase === 'idle');
+  let s = await desk.waitFor('our break', (st) => st.inRoom && st.myTurn && !st.animating && st.aim.phase === 'idle'
+    && (st.engine.loaded || st.engine.error !== null));
   const from = await desk.toClient(s.aim.x, s.aim.y);
   const to = await desk.toClient(s.aim.x + 40, s.aim.y + 110);
   await desk.page.mouse.move(from.x, from.y);
   await desk.page.mouse.down();
   await desk.page.mouse.move(to.x, to.y, { steps: 6 });
+  await desk.waitFor('the aim assist', (st) => st.assist.shown || !st.engine.loaded);
   await desk.page.screenshot({ path: path.join(out, 'web-aim.png') });
   await desk.page.mouse.up();
 

@@ -43,7 +43,7 @@ endif()
 set(web_tests two_pages_match page_vs_bot touch_phone reload_resume lobby_paths doubles_pages https_page
     first_game_ui texts_pages emotes_pages)
 if(CARROM_WEB_WASM)
-    list(APPEND web_tests replay_page)
+    list(APPEND web_tests replay_page aim_assist_page)
 endif()
 foreach(test ${web_tests})
     add_test(NAME web.${test} COMMAND ${CARROM_NODE} ${web_dir}/${test}.mjs)

@@ -5,6 +5,7 @@
 // The WebSocket address is the page's own host (the server serves this page), or the `ws`
 // query parameter: index.html?ws=ws://127.0.0.1:7777/.
 
+import { AimAssist } from './aim_assist.js';
 import { AimController, clampBaselineX } from './aim_controller.js';
 import { alongOf, radiusOf, strikerAt } from './board_geometry.js';
 import { Connection } from './connection.js';
@@ -54,6 +55,8 @@ class App {
     this.stage = document.getElementById('stage');
     this.model = new MatchModel();
     this.aim = new AimController(this.model.physics);
+    this.aimAssist = new AimAssist(this.model.physics); // the first-contact guide (aim_assist.js)
+    this.assist = null; // the guide the last frame drew
     this.renderer = new Renderer(this.canvas, document.getElementById('board-bg'), this.model.geometry);
     this.sound = new SoundPlayer();
     this.reducedMotion = false;
@@ -126,6 +129,7 @@ class App {
       this.engine = await loadEngine();
       this.engineMs = performance.now() - started;
       this.model.setEngine(this.engine);
+      this.aimAssist.setEngine(this.engine);
     } catch (e) {
       this.engineError = String(e.message ?? e);
     }
@@ -360,15 +364,18 @@ class App {
   // to play (an opponent, or in doubles our partner) on its own baseline.
   overlays() {
     const v = this.model.view;
+    this.assist = null;
     if (this.aim.phase !== 'inactive') {
       const pulling = this.aim.phase === 'pulling';
       const shot = this.aim.pendingShot();
       const blocker = this.model.boardNow().find((b) => b.id === this.aim.placement.blockingId);
       const blocking = blocker ? { x: blocker.x, y: blocker.y, r: radiusOf(blocker.kind, this.model.physics) } : null;
+      this.assist = pulling ? this.aimAssist.forPull(this.model, this.aim, shot) : null;
       return {
         placing: { striker: this.aim.striker(), alpha: 1, warning: !this.aim.placement.legal, blocking },
         aim: pulling ? { striker: this.aim.striker(), angle: shot.angle, fraction: this.aim.powerFraction() } : null,
         grabHint: this.aim.phase === 'idle',
+        assist: this.assist,
       };
     }
     if (v.inRoom && v.phase === 'aiming' && !this.model.animating() && v.toPlay !== v.you) {
@@ -470,6 +477,7 @@ class App {
         received: this.model.emotes.received, visible: this.model.emotes.visible(performance.now() / 1000),
         mutedSeats: [...this.model.emotes.mutedSeats], allMuted: this.model.emotes.allMuted,
       },
+      assist: this.aimAssist.debugState(this.assist),
     };
   }
 

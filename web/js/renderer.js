@@ -5,6 +5,7 @@
 // layer, so a frame costs the browser the pieces, not the whole board. Coordinates: CSS px of the
 // canvas (the mapping), drawn at devicePixelRatio for sharp pictures.
 
+import { drawAimAssist } from './aim_assist.js';
 import { BoardPainter } from './board_painter.js';
 import { ScreenMapping } from './screen_mapping.js';
 
@@ -53,7 +54,8 @@ export class Renderer {
   }
 
   // frame: {bodies, turns, placing: {striker, alpha, warning, blocking: {x, y, r} | null} | null,
-  //         aim: {striker, angle, fraction} | null, grabHint: bool}
+  //         aim: {striker, angle, fraction} | null, grabHint: bool,
+  //         assist: a guide of aim_assist.js | null (drawn with aim only)}
   draw(frame) {
     const ctx = this.ctx;
     const m = this.mapping(frame.turns);
@@ -78,6 +80,7 @@ export class Renderer {
     }
     ctx.globalAlpha = 1;
     if (frame.aim) this.drawAim(m, frame.aim);
+    if (frame.aim && frame.assist) drawAimAssist(ctx, m, frame.aim.striker, frame.assist, this.geometry.strikerR);
     if (frame.placing) this.drawPlacing(m, sprites, cell, frame.placing, frame.grabHint);
     // The aim guide and the labels reach anywhere: the next frame clears everything.
     this.dirtyAll = Boolean(frame.aim || (frame.placing && (frame.placing.warning || frame.grabHint)));
