@@ -2,8 +2,8 @@
 // seats with names, colours, dues and scores (in doubles: the two teams in the top bar and one
 // panel per seat on the board's frame at that seat's side, seat_panels.js); whose turn and the
 // shot clock; the queen; room,
-// rule set, board number, coins left and spectators; the connection and round trip; short
-// messages over the board; the room code with its shareable link while waiting; the result and
+// rule set, board number, coins left and spectators; the connection and round trip; the message
+// log beside or under the board (side_layout.js); the room code with its shareable link while waiting; the result and
 // why the game ended, with Rematch and Lobby; the reconnecting notice. Text is written to the
 // DOM only when it changed, so a frame costs almost nothing here.
 
