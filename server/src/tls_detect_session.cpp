@@ -36,8 +36,7 @@ void TlsDetectSession::run() {
             return;
         }
         if (auto self = weak.lock()) {
-            beast::error_code ignored;
-            self->stream_.next_layer().close(ignored); // pending reads end with an error
+            self->time_out();
         }
     });
     beast::async_detect_ssl(
@@ -54,6 +53,7 @@ void TlsDetectSession::on_detect(beast::error_code ec, bool tls) {
         std::make_shared<HttpSession>(core_, std::move(stream_), std::move(buffer_))->run();
         return;
     }
+    handshaking_ = true;
     stream_.use_tls(core_.tls->current());
     stream_.tls().async_handshake(
         asio::ssl::stream_base::server, buffer_.data(),
@@ -61,8 +61,11 @@ void TlsDetectSession::on_detect(beast::error_code ec, bool tls) {
 }
 
 void TlsDetectSession::on_handshake(beast::error_code ec, std::size_t used) {
+    handshaking_ = false;
     if (ec) {
-        core_.metrics.tls_handshake_failures_total.fetch_add(1, std::memory_order_relaxed);
+        if (!timed_out_) { // a timed-out handshake was counted by time_out()
+            core_.metrics.tls_handshake_failures_total.fetch_add(1, std::memory_order_relaxed);
+        }
         spdlog::debug("{}: TLS handshake failed: {}", address_, ec.message());
         return;
     }
@@ -73,7 +76,26 @@ void TlsDetectSession::on_handshake(beast::error_code ec, std::size_t used) {
 }
 
 void TlsDetectSession::hand_over() {
+    handed_over_ = true;
     deadline_.cancel();
+    release_address();
+}
+
+void TlsDetectSession::time_out() {
+    if (handed_over_ || timed_out_) {
+        return;
+    }
+    timed_out_ = true;
+    // The books are kept before the socket closes: whoever sees the close sees them done.
+    if (handshaking_) {
+        core_.metrics.tls_handshake_failures_total.fetch_add(1, std::memory_order_relaxed);
+    }
+    release_address();
+    beast::error_code ignored;
+    stream_.next_layer().close(ignored); // pending reads end with an error
+}
+
+void TlsDetectSession::release_address() {
     if (address_counted_) {
         core_.remove_address(address_);
         address_counted_ = false;

@@ -32,6 +32,10 @@ private:
     void on_handshake(beast::error_code ec, std::size_t used);
     // Stops the deadline and the address count: the connection goes on as an HttpSession.
     void hand_over();
+    // The deadline passed: counts a handshake under way as failed, frees the address's count,
+    // then closes the socket (in that order, so a peer that sees the close sees the counts).
+    void time_out();
+    void release_address();
 
     ServerCore& core_;
     ServerStream stream_;
@@ -39,6 +43,9 @@ private:
     asio::steady_timer deadline_;
     std::string address_;
     bool address_counted_ = false;
+    bool handshaking_ = false; // between async_handshake and on_handshake
+    bool timed_out_ = false;
+    bool handed_over_ = false; // stream_ moved into an HttpSession
 };
 
 } // namespace carrom::server
