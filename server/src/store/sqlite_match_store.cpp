@@ -1,6 +1,7 @@
 #include "store/sqlite_match_store.hpp"
 
 #include "store/sqlite_database.hpp"
+#include "store/sqlite_player_reader.hpp"
 #include "store/sqlite_reader.hpp"
 #include "store/sqlite_writer.hpp"
 
@@ -29,6 +30,7 @@ SqliteMatchStore::Opened SqliteMatchStore::open(const std::string& path,
     try {
         store->writer_connection_ = std::make_unique<sqlite::SqliteWriter>(path);
         store->reader_ = std::make_unique<sqlite::SqliteReader>(path);
+        store->player_reader_ = std::make_unique<sqlite::SqlitePlayerReader>(path);
         store->checkpoint_connection_ =
             std::make_unique<SQLite::Database>(sqlite::open_connection(path, false));
     } catch (const SQLite::Exception& e) {
@@ -111,6 +113,14 @@ void SqliteMatchStore::set_seat_token(const MatchId& match, int seat,
 
 void SqliteMatchStore::mark_finished(const MatchId& match, std::int64_t time_ms) {
     enqueue(WriteItem{FinishItem{match, time_ms}, {}, false});
+}
+
+void SqliteMatchStore::save_player(IdentifiedPlayer player) {
+    enqueue(WriteItem{PlayerItem{std::move(player)}, {}, false});
+}
+
+void SqliteMatchStore::set_rated_seat(const MatchId& match, int seat, PlayerKeyHash player) {
+    enqueue(WriteItem{RatedSeatItem{match, seat, player}, {}, false});
 }
 
 bool SqliteMatchStore::flush(std::chrono::milliseconds timeout) {
@@ -277,6 +287,25 @@ Loaded<std::vector<MatchListing>> SqliteMatchStore::recent_matches(const std::st
         options_.before_read();
     }
     return reader_->recent_matches(player, limit);
+}
+
+Loaded<std::vector<IdentifiedPlayer>> SqliteMatchStore::load_players() {
+    return player_reader_->load_players();
+}
+
+Loaded<std::vector<PlayerRating>> SqliteMatchStore::player_ratings(const PlayerKeyHash& player) {
+    if (options_.before_read) {
+        options_.before_read();
+    }
+    return player_reader_->player_ratings(player);
+}
+
+Loaded<std::vector<LeaderboardRow>> SqliteMatchStore::leaderboard(rules::RuleSet rule_set,
+                                                                  int limit) {
+    if (options_.before_read) {
+        options_.before_read();
+    }
+    return player_reader_->leaderboard(rule_set, limit);
 }
 
 StoreHealth SqliteMatchStore::health() const {

@@ -44,6 +44,7 @@ class Database;
 namespace carrom::store {
 
 namespace sqlite {
+class SqlitePlayerReader;
 class SqliteReader;
 class SqliteWriter;
 } // namespace sqlite
@@ -83,11 +84,16 @@ public:
                 OnWritten on_written = {}) override;
     void set_seat_token(const MatchId& match, int seat, std::optional<TokenHash> token) override;
     void mark_finished(const MatchId& match, std::int64_t time_ms) override;
+    void save_player(IdentifiedPlayer player) override;
+    void set_rated_seat(const MatchId& match, int seat, PlayerKeyHash player) override;
     bool flush(std::chrono::milliseconds timeout) override;
 
     Loaded<std::vector<RecoveredMatch>> load_unfinished() override;
     Loaded<std::optional<proto::MatchJournal>> journal(const MatchId& match) override;
     Loaded<std::vector<MatchListing>> recent_matches(const std::string& player, int limit) override;
+    Loaded<std::vector<IdentifiedPlayer>> load_players() override;
+    Loaded<std::vector<PlayerRating>> player_ratings(const PlayerKeyHash& player) override;
+    Loaded<std::vector<LeaderboardRow>> leaderboard(rules::RuleSet rule_set, int limit) override;
 
     StoreHealth health() const override;
     const std::string& path() const { return path_; }
@@ -106,6 +112,7 @@ private:
     SqliteStoreOptions options_;
     std::unique_ptr<sqlite::SqliteWriter> writer_connection_;
     std::unique_ptr<sqlite::SqliteReader> reader_;
+    std::unique_ptr<sqlite::SqlitePlayerReader> player_reader_;
     std::unique_ptr<SQLite::Database> checkpoint_connection_;
 
     mutable std::mutex mutex_;
