@@ -9,7 +9,7 @@ packages=(
     build-essential cmake ninja-build pkg-config
     libboost-dev nlohmann-json3-dev libsimdjson-dev libsfml-dev
     libgtest-dev libgmock-dev googletest libbenchmark-dev
-    libcli11-dev libspdlog-dev libsqlite3-dev libsqlitecpp-dev
+    libcli11-dev libspdlog-dev libsqlite3-dev libsqlitecpp-dev libutf8proc-dev
     libssl-dev ca-certificates openssl libnss3-tools
     xvfb xauth fonts-dejavu-core
     python3 python3-matplotlib

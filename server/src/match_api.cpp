@@ -1,6 +1,7 @@
 #include "match_api.hpp"
 
 #include "hex_digit.hpp"
+#include "player_api.hpp"
 
 #include "carrom/proto/journal_json.hpp"
 #include "carrom/proto/match_json.hpp"
@@ -19,43 +20,6 @@ using Json = nlohmann::json;
 
 MatchApiAnswer error(int status, std::string_view code, std::string message) {
     return match_api_error(status, code, std::move(message));
-}
-
-// Percent-decoding of a query value ('+' is a space); empty optional when malformed.
-std::optional<std::string> url_decode(std::string_view text) {
-    std::string out;
-    for (std::size_t i = 0; i < text.size(); ++i) {
-        const char c = text[i];
-        if (c == '+') {
-            out.push_back(' ');
-        } else if (c == '%') {
-            if (i + 2 >= text.size()) {
-                return std::nullopt;
-            }
-            const int hi = hex_value(text[i + 1]);
-            const int lo = hex_value(text[i + 2]);
-            if (hi < 0 || lo < 0) {
-                return std::nullopt;
-            }
-            out.push_back(static_cast<char>(hi * 16 + lo));
-            i += 2;
-        } else {
-            out.push_back(c);
-        }
-    }
-    return out;
-}
-
-Json listing_to_json(const store::MatchListing& m) {
-    return {{"id", m.id},
-            {"room", m.room_code},
-            {"rule_set", std::string(rules::to_string(m.rule_set))},
-            {"players", m.players},
-            {"teams", m.teams},
-            {"created_ms", m.created_ms},
-            {"finished_ms", m.finished_ms ? Json(*m.finished_ms) : Json(nullptr)},
-            {"result", m.result ? proto::game_result_to_json(*m.result) : Json(nullptr)},
-            {"scores", m.scores}};
 }
 
 MatchApiAnswer answer_journal(store::MatchStore& store, std::string_view id) {
@@ -93,9 +57,7 @@ MatchApiAnswer answer_list(store::MatchStore& store, std::string_view query) {
                              "characters).");
             }
         } else if (key == "limit") {
-            const auto [end, ec] = std::from_chars(raw.data(), raw.data() + raw.size(), limit);
-            if (ec != std::errc{} || end != raw.data() + raw.size() || limit < 1 ||
-                limit > kMaxMatchListLimit) {
+            if (!parse_query_int(raw, 1, kMaxMatchListLimit, limit)) {
                 return error(400, match_api_code::kBadQuery,
                              "limit must be an integer from 1 to 100.");
             }
@@ -113,13 +75,59 @@ MatchApiAnswer answer_list(store::MatchStore& store, std::string_view query) {
     }
     Json list = Json::array();
     for (const auto& m : loaded.value) {
-        list.push_back(listing_to_json(m));
+        list.push_back(match_listing_json(m));
     }
     return {200,
             Json{{"format", proto::kJournalFormat}, {"player", *player}, {"matches", list}}.dump()};
 }
 
 } // namespace
+
+std::optional<std::string> url_decode(std::string_view text) {
+    std::string out;
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        const char c = text[i];
+        if (c == '+') {
+            out.push_back(' ');
+        } else if (c == '%') {
+            if (i + 2 >= text.size()) {
+                return std::nullopt;
+            }
+            const int hi = hex_value(text[i + 1]);
+            const int lo = hex_value(text[i + 2]);
+            if (hi < 0 || lo < 0) {
+                return std::nullopt;
+            }
+            out.push_back(static_cast<char>(hi * 16 + lo));
+            i += 2;
+        } else {
+            out.push_back(c);
+        }
+    }
+    return out;
+}
+
+nlohmann::json match_listing_json(const store::MatchListing& m) {
+    return {{"id", m.id},
+            {"room", m.room_code},
+            {"rule_set", std::string(rules::to_string(m.rule_set))},
+            {"players", m.players},
+            {"teams", m.teams},
+            {"created_ms", m.created_ms},
+            {"finished_ms", m.finished_ms ? Json(*m.finished_ms) : Json(nullptr)},
+            {"result", m.result ? proto::game_result_to_json(*m.result) : Json(nullptr)},
+            {"scores", m.scores}};
+}
+
+bool parse_query_int(std::string_view raw, int min, int max, int& out) {
+    int value = 0;
+    const auto [end, ec] = std::from_chars(raw.data(), raw.data() + raw.size(), value);
+    if (ec != std::errc{} || end != raw.data() + raw.size() || value < min || value > max) {
+        return false;
+    }
+    out = value;
+    return true;
+}
 
 MatchApiAnswer match_api_error(int status, std::string_view code, std::string message) {
     return {status,
@@ -128,7 +136,7 @@ MatchApiAnswer match_api_error(int status, std::string_view code, std::string me
 
 bool is_match_api_target(std::string_view target) {
     const std::string_view path = target.substr(0, target.find('?'));
-    return path == "/matches" || path.starts_with("/matches/");
+    return path == "/matches" || path.starts_with("/matches/") || is_player_api_path(path);
 }
 
 MatchApiAnswer answer_match_api(store::MatchStore* store, std::string_view target) {
@@ -142,6 +150,9 @@ MatchApiAnswer answer_match_api(store::MatchStore* store, std::string_view targe
         q == std::string_view::npos ? std::string_view{} : target.substr(q + 1);
     if (path == "/matches") {
         return answer_list(*store, query);
+    }
+    if (is_player_api_path(path)) {
+        return answer_player_api(*store, path, query);
     }
     if (!query.empty()) {
         return error(400, match_api_code::kBadQuery, "/matches/ID takes no query.");

@@ -73,6 +73,16 @@ ServerCore::create_room(proto::RuleSet rule_set, const proto::RoomOptions& optio
     return created;
 }
 
+void ServerCore::load_identities() {
+    auto loaded = store->load_players();
+    if (!loaded.ok()) {
+        spdlog::error("store: cannot read the identified players: {}", loaded.error->message);
+        return;
+    }
+    identities.load(loaded.value);
+    spdlog::info("{} identified players", loaded.value.size());
+}
+
 void ServerCore::remove_room(const std::string& code) {
     registry.remove_room(code);
     metrics.rooms.fetch_sub(1, std::memory_order_relaxed);

@@ -142,6 +142,8 @@ public:
 
     // Every identified player (the server keeps the names in memory; docs/ratings.md).
     virtual Loaded<std::vector<IdentifiedPlayer>> load_players() = 0;
+    // The identified player whose name has this comparison key, if any.
+    virtual Loaded<std::optional<IdentifiedPlayer>> find_player(const std::string& name_key) = 0;
     // The player's ratings, one per rule set played rated; empty if none.
     virtual Loaded<std::vector<PlayerRating>> player_ratings(const PlayerKeyHash& player) = 0;
     // Established ratings (deviation below ratings::kProvisionalDeviation) of a rule set, best

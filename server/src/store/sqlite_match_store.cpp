@@ -293,6 +293,13 @@ Loaded<std::vector<IdentifiedPlayer>> SqliteMatchStore::load_players() {
     return player_reader_->load_players();
 }
 
+Loaded<std::optional<IdentifiedPlayer>> SqliteMatchStore::find_player(const std::string& name_key) {
+    if (options_.before_read) {
+        options_.before_read();
+    }
+    return player_reader_->find_player(name_key);
+}
+
 Loaded<std::vector<PlayerRating>> SqliteMatchStore::player_ratings(const PlayerKeyHash& player) {
     if (options_.before_read) {
         options_.before_read();

@@ -28,6 +28,12 @@ PlayerRating rating_columns(SQLite::Statement& row, int first, rules::RuleSet ru
     return r;
 }
 
+// The columns key_sha256, name, name_key, created_ms.
+IdentifiedPlayer player_columns(SQLite::Statement& row) {
+    return IdentifiedPlayer{key_hash_column(row.getColumn(0)), row.getColumn(1).getString(),
+                            row.getColumn(2).getString(), row.getColumn(3).getInt64()};
+}
+
 } // namespace
 
 SqlitePlayerReader::SqlitePlayerReader(const std::string& path)
@@ -62,6 +68,20 @@ Loaded<std::vector<IdentifiedPlayer>> SqlitePlayerReader::load_players() {
                                  row.getColumn(2).getString(), row.getColumn(3).getInt64()});
         }
         return players;
+    });
+}
+
+Loaded<std::optional<IdentifiedPlayer>>
+SqlitePlayerReader::find_player(const std::string& name_key) {
+    return read<std::optional<IdentifiedPlayer>>([this, &name_key] {
+        std::optional<IdentifiedPlayer> out;
+        SQLite::Statement row(db_, "SELECT key_sha256, name, name_key, created_ms FROM identities "
+                                   "WHERE name_key = ?");
+        row.bind(1, name_key);
+        if (row.executeStep()) {
+            out = player_columns(row);
+        }
+        return out;
     });
 }
 

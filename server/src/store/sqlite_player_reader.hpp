@@ -18,6 +18,7 @@ public:
     explicit SqlitePlayerReader(const std::string& path);
 
     Loaded<std::vector<IdentifiedPlayer>> load_players();
+    Loaded<std::optional<IdentifiedPlayer>> find_player(const std::string& name_key);
     Loaded<std::vector<PlayerRating>> player_ratings(const PlayerKeyHash& player);
     Loaded<std::vector<LeaderboardRow>> leaderboard(rules::RuleSet rule_set, int limit);
 

@@ -1,0 +1,23 @@
+#pragma once
+// Private to server/src: the players' part of the match API (docs/protocol.md, "Players and
+// leaderboard"): GET /players/NAME (an identified player's ratings, record and last matches)
+// and GET /leaderboard?rule_set=R&limit=N (established ratings, best first, with rank). Answered
+// like the match API: on the MatchApiReader's thread, rate-limited per address. Boost-free.
+
+#include "match_api.hpp"
+
+#include <string_view>
+
+namespace carrom::server {
+
+inline constexpr int kPlayerMatchListLimit = 20; // the last matches GET /players/NAME lists
+inline constexpr int kDefaultLeaderboardLimit = 50;
+inline constexpr int kMaxLeaderboardLimit = 100;
+
+// "/players/..." and "/leaderboard".
+bool is_player_api_path(std::string_view path);
+
+MatchApiAnswer answer_player_api(store::MatchStore& store, std::string_view path,
+                                 std::string_view query);
+
+} // namespace carrom::server
