@@ -28,6 +28,8 @@ set_tests_properties(web.doubles_unit PROPERTIES TIMEOUT 60 LABELS web)
 # The session's decisions against tests/golden/session/*.json (net::SessionCore's cases).
 add_test(NAME web.session COMMAND ${CARROM_NODE} ${web_dir}/session_test.mjs)
 set_tests_properties(web.session PROPERTIES TIMEOUT 60 LABELS web)
+add_test(NAME web.identity COMMAND ${CARROM_NODE} ${web_dir}/identity_test.mjs)
+set_tests_properties(web.identity PROPERTIES TIMEOUT 60 LABELS web)
 
 if(NOT CARROM_CHROMIUM OR NOT TARGET carrom-server OR NOT TARGET carrom-bot)
     message(STATUS "web tests: chromium, carrom-server or carrom-bot missing, browser tests not registered")

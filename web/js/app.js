@@ -9,6 +9,8 @@ import { AimController, clampBaselineX } from './aim_controller.js';
 import { alongOf, strikerAt } from './board_geometry.js';
 import { Connection } from './connection.js';
 import { Hud } from './hud.js';
+import { loadOrCreateIdentity } from './identity.js';
+import { IdentityPanel } from './identity_panel.js';
 import { Lobby } from './lobby.js';
 import { MatchModel } from './match_model.js';
 import { errorSentence } from './plain_words.js';
@@ -54,6 +56,9 @@ class App {
       onRefused: (error, request) => this.onRefused(error, request),
     }, SESSION_DEFAULTS, Connection);
     this.lobby = new Lobby(storage('localStorage'), (name, request) => this.request(name, request));
+    this.session.identity = loadOrCreateIdentity(storage('localStorage'));
+    this.identityPanel = new IdentityPanel(document.getElementById('identity'), storage('localStorage'),
+      this.session.identity, (key) => { this.session.identity = key; });
     this.hud = new Hud({
       rematch: () => this.rematch(),
       lobby: () => this.toLobby(),
