@@ -11,6 +11,8 @@
 
 #include <charconv>
 #include <optional>
+#include <utility>
+#include <vector>
 
 namespace carrom::server {
 
@@ -41,14 +43,7 @@ MatchApiAnswer answer_journal(store::MatchStore& store, std::string_view id) {
 MatchApiAnswer answer_list(store::MatchStore& store, std::string_view query) {
     std::optional<std::string> player;
     int limit = kDefaultMatchListLimit;
-    while (!query.empty()) {
-        const auto amp = query.find('&');
-        const std::string_view pair = query.substr(0, amp);
-        query = amp == std::string_view::npos ? std::string_view{} : query.substr(amp + 1);
-        const auto eq = pair.find('=');
-        const std::string_view key = pair.substr(0, eq);
-        const std::string_view raw =
-            eq == std::string_view::npos ? std::string_view{} : pair.substr(eq + 1);
+    for (const auto& [key, raw] : query_params(query)) {
         if (key == "player") {
             player = url_decode(raw);
             if (!player || !proto::is_player_name(*player)) {
@@ -117,6 +112,19 @@ nlohmann::json match_listing_json(const store::MatchListing& m) {
             {"finished_ms", m.finished_ms ? Json(*m.finished_ms) : Json(nullptr)},
             {"result", m.result ? proto::game_result_to_json(*m.result) : Json(nullptr)},
             {"scores", m.scores}};
+}
+
+std::vector<std::pair<std::string_view, std::string_view>> query_params(std::string_view query) {
+    std::vector<std::pair<std::string_view, std::string_view>> params;
+    while (!query.empty()) {
+        const auto amp = query.find('&');
+        const std::string_view pair = query.substr(0, amp);
+        query = amp == std::string_view::npos ? std::string_view{} : query.substr(amp + 1);
+        const auto eq = pair.find('=');
+        params.emplace_back(pair.substr(0, eq), eq == std::string_view::npos ? std::string_view{}
+                                                                             : pair.substr(eq + 1));
+    }
+    return params;
 }
 
 bool parse_query_int(std::string_view raw, int min, int max, int& out) {

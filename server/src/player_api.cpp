@@ -75,14 +75,7 @@ MatchApiAnswer answer_player(store::MatchStore& store, std::string_view raw_name
 MatchApiAnswer answer_leaderboard(store::MatchStore& store, std::string_view query) {
     rules::RuleSet rule_set = rules::RuleSet::Icf;
     int limit = kDefaultLeaderboardLimit;
-    while (!query.empty()) {
-        const auto amp = query.find('&');
-        const std::string_view pair = query.substr(0, amp);
-        query = amp == std::string_view::npos ? std::string_view{} : query.substr(amp + 1);
-        const auto eq = pair.find('=');
-        const std::string_view key = pair.substr(0, eq);
-        const std::string_view raw =
-            eq == std::string_view::npos ? std::string_view{} : pair.substr(eq + 1);
+    for (const auto& [key, raw] : query_params(query)) {
         if (key == "rule_set") {
             if (!rules::parse_rule_set(raw, rule_set)) {
                 return match_api_error(400, match_api_code::kBadQuery,

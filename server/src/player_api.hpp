@@ -7,12 +7,18 @@
 #include "match_api.hpp"
 
 #include <string_view>
+#include <utility>
+#include <vector>
 
 namespace carrom::server {
 
 inline constexpr int kPlayerMatchListLimit = 20; // the last matches GET /players/NAME lists
 inline constexpr int kDefaultLeaderboardLimit = 50;
 inline constexpr int kMaxLeaderboardLimit = 100;
+
+// A query's key=value pairs in order (views into query; values still percent-encoded); the
+// match API's and these endpoints' parameters.
+std::vector<std::pair<std::string_view, std::string_view>> query_params(std::string_view query);
 
 // "/players/..." and "/leaderboard".
 bool is_player_api_path(std::string_view path);
