@@ -28,7 +28,7 @@ AppWindow::AppWindow(const AppOptions& options, const sf::Font& font)
       geometry_(make_board_geometry(physics_)), model_(physics_), aim_(physics_),
       board_painter_(geometry_), hud_(font), lobby_(font),
       sound_(!options.mute && options.bench_frames == 0 && options.screenshot_path.empty()),
-      session_(make_factory(), options.name, network_session_config()) {}
+      session_(make_factory(), options.name, network_session_config(options.identity)) {}
 
 LinkFactory AppWindow::make_factory() {
     if (!options_.demo) {
