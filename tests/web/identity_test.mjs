@@ -45,3 +45,14 @@ test('hello carries the key only when there is one', () => {
   assert.deepEqual(proto.hello('Asha', undefined, 'd'.repeat(64)),
     { type: 'hello', version: 1, name: 'Asha', identity: 'd'.repeat(64) });
 });
+
+test('the lobby\'s rating line shows labels and the change after a rated game', async () => {
+  const { ratingLine } = await import('../../web/js/rating_view.js');
+  const before = [{ rule_set: 'icf', rating: 1518.4, label: '1518', games: 12 }];
+  const after = [{ rule_set: 'icf', rating: 1532.2, label: '1532', games: 13 },
+    { rule_set: 'freestyle', rating: 1662.3, label: '1662?', games: 1 }];
+  assert.equal(ratingLine(null, []), '');
+  assert.equal(ratingLine(null, before), 'Rating: ICF 1518');
+  assert.equal(ratingLine(before, after), 'Rating: ICF 1532 (+14), freestyle 1662? (+162)');
+  assert.equal(ratingLine(after, after), 'Rating: ICF 1532, freestyle 1662?');
+});

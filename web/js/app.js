@@ -11,6 +11,7 @@ import { Connection } from './connection.js';
 import { Hud } from './hud.js';
 import { loadOrCreateIdentity } from './identity.js';
 import { IdentityPanel } from './identity_panel.js';
+import { getJson, RatingView } from './rating_view.js';
 import { Lobby } from './lobby.js';
 import { MatchModel } from './match_model.js';
 import { errorSentence } from './plain_words.js';
@@ -59,6 +60,7 @@ class App {
     this.session.identity = loadOrCreateIdentity(storage('localStorage'));
     this.identityPanel = new IdentityPanel(document.getElementById('identity'), storage('localStorage'),
       this.session.identity, (key) => { this.session.identity = key; });
+    this.ratingView = new RatingView(document.getElementById('my-rating'), getJson);
     this.hud = new Hud({
       rematch: () => this.rematch(),
       lobby: () => this.toLobby(),
@@ -123,6 +125,7 @@ class App {
       if (!this.model.view.inRoom) this.lobby.setError(errorSentence(m));
     }
     if (m.type === 'room_state') showHash(roomHash(m.code, m.you < 0));
+    if (m.type === 'welcome') this.ratingView.refresh(this.session.name);
     this.model.handle(m, localS);
     this.dirty = true;
   }
@@ -137,6 +140,7 @@ class App {
   }
 
   toLobby() {
+    this.ratingView.refresh(this.session.name);
     this.session.leaveRoom();
     this.model.reset();
     this.aim.endTurn();
