@@ -148,6 +148,9 @@ bool is_match_api_target(std::string_view target) {
 }
 
 MatchApiAnswer answer_match_api(store::MatchStore* store, std::string_view target) {
+    if (target == kPlayersKeptPath) {
+        return answer_players_kept(store != nullptr);
+    }
     if (store == nullptr) {
         return error(503, match_api_code::kStoreDisabled,
                      "This server keeps no matches (carrom-server --data none).");

@@ -111,7 +111,11 @@ MatchApiAnswer answer_leaderboard(store::MatchStore& store, std::string_view que
 } // namespace
 
 bool is_player_api_path(std::string_view path) {
-    return path == "/leaderboard" || path.starts_with(kPlayersPrefix);
+    return path == "/leaderboard" || path == kPlayersKeptPath || path.starts_with(kPlayersPrefix);
+}
+
+MatchApiAnswer answer_players_kept(bool kept) {
+    return {200, Json{{"kept", kept}}.dump()};
 }
 
 MatchApiAnswer answer_player_api(store::MatchStore& store, std::string_view path,

@@ -20,7 +20,12 @@ inline constexpr int kMaxLeaderboardLimit = 100;
 // match API's and these endpoints' parameters.
 std::vector<std::pair<std::string_view, std::string_view>> query_params(std::string_view query);
 
-// "/players/..." and "/leaderboard".
+// GET /players: {"kept": true} when this server keeps players and ratings (a store), else
+// {"kept": false}; 200 either way, so that a page can ask before reading a player.
+inline constexpr std::string_view kPlayersKeptPath = "/players";
+MatchApiAnswer answer_players_kept(bool kept);
+
+// "/players", "/players/..." and "/leaderboard".
 bool is_player_api_path(std::string_view path);
 
 MatchApiAnswer answer_player_api(store::MatchStore& store, std::string_view path,

@@ -277,8 +277,11 @@ TEST(RatingsProcess, ThePlayersApiAnswersBadInputsWithCodes) {
     const json board = get_json(*server, "/leaderboard?rule_set=discpool&limit=100");
     EXPECT_EQ(board["rule_set"], "discpool");
     EXPECT_TRUE(board["players"].empty());
+    EXPECT_EQ(get_json(*server, "/players")["kept"], true);
     auto none = start_rated_server("none");
     EXPECT_EQ(get_json(*none, "/leaderboard", 503)["error"]["code"], "store_disabled");
+    EXPECT_EQ(get_json(*none, "/players/Asha", 503)["error"]["code"], "store_disabled");
+    EXPECT_EQ(get_json(*none, "/players")["kept"], false);
 }
 
 } // namespace

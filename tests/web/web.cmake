@@ -36,7 +36,8 @@ if(NOT CARROM_CHROMIUM OR NOT TARGET carrom-server OR NOT TARGET carrom-bot)
     return()
 endif()
 
-foreach(test two_pages_match page_vs_bot touch_phone reload_resume lobby_paths doubles_pages https_page)
+foreach(test two_pages_match page_vs_bot touch_phone reload_resume lobby_paths doubles_pages https_page
+             identity_page)
     add_test(NAME web.${test} COMMAND ${CARROM_NODE} ${web_dir}/${test}.mjs)
     set_tests_properties(web.${test} PROPERTIES
         TIMEOUT 200

@@ -26,6 +26,9 @@ const AIM_SEND_INTERVAL_S = 0.05; // at most 20 aim messages a second
 const TOUCH_GRAB_CSS_PX = 30; // a finger grabs the striker within 30 CSS px (a 60 px target)
 const FRAME_LOG = 20000; // frame times kept for the debug hook (a minute at 300 frames/s)
 
+// After a game the lobby reads the ratings again this much later (rating_view.js).
+const RATING_REREAD_MS = 1500;
+
 function storage(kind) {
   try {
     const s = window[kind];
@@ -124,7 +127,10 @@ class App {
       this.shotSentTurn = -1; // a rejected shot: aim again
       if (!this.model.view.inRoom) this.lobby.setError(errorSentence(m));
     }
-    if (m.type === 'room_state') showHash(roomHash(m.code, m.you < 0));
+    if (m.type === 'room_state') {
+      showHash(roomHash(m.code, m.you < 0));
+      this.ratingView.gameStarts();
+    }
     if (m.type === 'welcome') this.ratingView.refresh(this.session.name);
     this.model.handle(m, localS);
     this.dirty = true;
@@ -141,6 +147,7 @@ class App {
 
   toLobby() {
     this.ratingView.refresh(this.session.name);
+    setTimeout(() => this.ratingView.refresh(this.session.name), RATING_REREAD_MS);
     this.session.leaveRoom();
     this.model.reset();
     this.aim.endTurn();

@@ -1,7 +1,7 @@
 // The player's ratings in the lobby (docs/web.md, docs/ratings.md): read from GET /players/NAME
-// after each welcome and on each return to the lobby; the change since the previous read shows
-// after a rated game: "Rating: freestyle 1532 (+14)". A guest, or a player without a rated game,
-// sees nothing.
+// after each welcome and on each return to the lobby (then once more a moment later: a forfeit's
+// result may still be on its way to the store); the change since the last game began shows after
+// a rated game: "Rating: freestyle 1532 (+14)". A player without a rated game sees nothing.
 
 const RULE_SET_WORDS = { icf: 'ICF', seed: 'classic', freestyle: 'freestyle', discpool: 'disc pool' };
 
@@ -30,26 +30,41 @@ export class RatingView {
     this.getJson = getJson;
     this.name = '';
     this.last = null; // the last read's ratings for this.name
+    this.base = null; // the ratings as the last game began (the change is shown against them)
+    this.kept = null; // whether the server keeps ratings (GET /players), asked once
+  }
+
+  // A room's state came: a game is (or may be) under way.
+  gameStarts() {
+    this.base = this.last;
   }
 
   async refresh(name) {
+    if (this.kept === null) {
+      const answer = await this.getJson('/players');
+      if (answer === null) return; // ask again next time
+      this.kept = answer.kept === true;
+    }
+    if (!this.kept || !name) return;
     if (name !== this.name) {
       this.name = name;
       this.last = null;
+      this.base = null;
     }
     const answer = await this.getJson(`/players/${encodeURIComponent(name)}`);
-    const ratings = answer?.ratings ?? null;
+    // A player the store does not know yet (its first hello is still being written) has none.
+    const ratings = answer?.ratings ?? (answer?.error?.code === 'unknown_player' ? [] : null);
     if (!ratings) return;
-    this.element.textContent = ratingLine(this.last, ratings);
+    this.element.textContent = ratingLine(this.base, ratings);
     this.last = ratings;
   }
 }
 
-// GET path on the page's own server: the JSON, or null on any failure.
+// GET path on the page's own server: the JSON answer (an error's too), or null on any failure.
 export async function getJson(path) {
   try {
     const response = await fetch(path, { cache: 'no-store' });
-    return response.ok ? await response.json() : null;
+    return await response.json();
   } catch {
     return null;
   }
