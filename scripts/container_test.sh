@@ -7,7 +7,7 @@
 #  4. checks the image's configuration and docker/compose.yaml (parsed with PyYAML);
 #  5. runs carrom-server from the image on 127.0.0.1 and a free port: the server runs as a
 #     non-root user, /healthz, /metrics and both health check commands (the image's and the
-#     compose file's) answer, two carrom-bots from the image play a whole short match against it,
+#     compose file's) answer, the page's engine is served as WebAssembly, two carrom-bots from the image play a whole short match against it,
 #     and SIGTERM stops it, with a client connected, within the shutdown grace;
 #  6. prints the image size.
 # It removes every container and image it made (trap) and every wait is bounded.
@@ -283,6 +283,8 @@ for health in "$image_health" "$compose_health"; do
         fail "the health check command failed against a serving server: ${command[*]}"
 done
 say "/healthz, /metrics and the health checks of the image and of compose.yaml answer"
+engine_size=$("$python" "$helper" wasm "http://127.0.0.1:$port/js/carrom_engine.wasm")
+say "the page's engine (js/carrom_engine.wasm) is served: $engine_size"
 
 # A whole short match: freestyle to 30 points, one board, no shot clock, at 25x match time.
 url="ws://127.0.0.1:$port"

@@ -118,6 +118,20 @@ def http(url, expected):
     print(body.strip().splitlines()[0] if body.strip() else "")
 
 
+def wasm(url):
+    """The page's engine: a WebAssembly module of real size, served as application/wasm."""
+    try:
+        with urllib.request.urlopen(url, timeout=10) as response:
+            kind, body = response.headers.get("Content-Type", ""), response.read()
+    except (urllib.error.HTTPError, OSError) as e:
+        fail(f"GET {url}: {e}")
+    if kind != "application/wasm":
+        fail(f"GET {url}: Content-Type {kind!r}, not application/wasm")
+    if not body.startswith(b"\0asm") or len(body) < 10000:
+        fail(f"GET {url}: {len(body)} bytes, not the engine's WebAssembly module")
+    print(f"{len(body)} bytes")
+
+
 def watch(host, port, seconds):
     """A WebSocket client that only listens: the upgrade, then every frame until close."""
     deadline = time.monotonic() + seconds
@@ -183,6 +197,8 @@ def main(argv):
         compose(argv[1], argv[2])
     elif len(argv) >= 2 and argv[0] == "http":
         http(argv[1], argv[2:])
+    elif len(argv) == 2 and argv[0] == "wasm":
+        wasm(argv[1])
     elif len(argv) == 4 and argv[0] == "watch":
         watch(argv[1], int(argv[2]), float(argv[3]))
     elif len(argv) == 3 and argv[0] == "summary":

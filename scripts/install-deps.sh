@@ -9,12 +9,15 @@ packages=(
     build-essential cmake ninja-build pkg-config
     libboost-dev nlohmann-json3-dev libsimdjson-dev libsfml-dev
     libgtest-dev libgmock-dev googletest libbenchmark-dev
-    libcli11-dev libspdlog-dev libsqlite3-dev libsqlitecpp-dev libutf8proc-dev
+    libcli11-dev libspdlog-dev libsqlite3-dev libsqlitecpp-dev libutf8proc-dev libpqxx-dev
+    postgresql
     libssl-dev ca-certificates openssl libnss3-tools
     xvfb xauth fonts-dejavu-core
     python3 python3-matplotlib
     iproute2 procps
     chromium
+    # The page's engine (wasm/): emscripten's em++ (3.1.6) and acorn, which its optimiser needs.
+    emscripten node-acorn
 )
 # node and npm for the web client's tests (tests/web): Debian's, unless a node is installed
 # already (a NodeSource node brings its own npm, and Debian's npm package conflicts with it).

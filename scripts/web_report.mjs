@@ -10,21 +10,16 @@
 // power with the mouse, in real time. Frame time
 // is, for each requestAnimationFrame callback while pieces move on screen, the time from the
 // callback's timestamp (the frame's start) to the end of the page's work in it; the interval
-// between timestamps is reported too. Download: every response of a fresh load (no cache), as
-// the browser's resource timing reports it.
+// between timestamps is reported too. The break is the page's own stroke, so it is predicted
+// with the engine (the prediction's figures are printed). Download: every response of a fresh
+// load (no cache), the engine included, as the browser's resource timing reports it; the first
+// contentful paint (the lobby drawn) and the engine's load time (fetch, compile, instantiate).
 
-import { fileURLToPath } from 'node:url';
 import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
 
-const root = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..');
-const args = process.argv.slice(2);
-const opt = (name, fallback) => {
-  const i = args.indexOf(name);
-  return i >= 0 ? args[i + 1] : fallback;
-};
-process.env.CARROM_SERVER = path.resolve(opt('--server', process.env.CARROM_SERVER ?? path.join(root, 'build/test/server/carrom-server')));
+const { root, args, opt } = await import('./lib/script_options.mjs');
 const runs = Number(opt('--runs', '5'));
 const unthrottled = args.includes('--unthrottled');
 const muted = args.includes('--mute');
@@ -124,6 +119,8 @@ run('web_report', 300000, async (t) => {
   for (let i = 0; i < runs; i += 1) {
     const context = await t.browser.newContext({ viewport: { width: 900, height: 900 } });
     const p = await Player.open(context, `run ${i + 1}`, pageUrl(web, server), t.errors);
+    // The engine loads after the page starts (js/carrom_engine.wasm, streamed and compiled).
+    const loaded = await p.waitFor('the engine', (st) => st.engine.loaded || st.engine.error !== null, 10000);
     if (!download) {
       download = await p.page.evaluate(() => {
         const entries = [...performance.getEntriesByType('navigation'), ...performance.getEntriesByType('resource')];
@@ -131,6 +128,8 @@ run('web_report', 300000, async (t) => {
           files: entries.length,
           transferBytes: entries.reduce((s, e) => s + e.transferSize, 0),
           bodyBytes: entries.reduce((s, e) => s + e.encodedBodySize, 0),
+          engineBytes: entries.filter((e) => e.name.endsWith('.wasm')).reduce((s, e) => s + e.transferSize, 0),
+          firstPaintMs: performance.getEntriesByType('paint').find((e) => e.name === 'first-contentful-paint')?.startTime ?? null,
         };
       });
     }
@@ -187,6 +186,8 @@ run('web_report', 300000, async (t) => {
       audio: muted ? 'muted' : after.audio,
       sounds: after.sounds,
       cues: after.cues,
+      engine_ms: loaded.engine.ms === null ? null : round(loaded.engine.ms),
+      prediction: after.prediction,
     });
     await context.close();
   }
@@ -206,6 +207,7 @@ run('web_report', 300000, async (t) => {
     results.forEach((r, i) => console.log(`${i + 1} | ${r.frames} in ${r.seconds} s | ${r.p50_ms} ms | ${r.p99_ms} ms | ${r.max_ms} ms | ${r.work_p50_ms} / ${r.work_p99_ms} ms | ${r.interval_p50_ms} / ${r.interval_p99_ms} ms | ${r.idle_p50_ms} / ${r.idle_p99_ms} ms | ${r.board_paints} | ${r.wood_ms} ms | ${r.audio}, ${r.sounds} sounds for ${r.cues.heard} cues (${r.cues.merged} merged, ${r.cues.late} late) | browser CPU ${JSON.stringify(r.browser_cpu_ms)} ms`));
     console.log(`all ${runs} runs: ${all.frames} frames, frame p50 ${all.p50_ms} ms, p99 ${all.p99_ms} ms, max ${all.max_ms} ms; page's work p99 ${all.work_p99_ms} ms; idle page p99 ${all.idle_p99_ms} ms`);
     console.log(`files served by ${report.served_by}`);
-    console.log(`download: ${download.files} files, ${download.bodyBytes} bytes of bodies, ${download.transferBytes} bytes transferred (uncompressed)`);
+    console.log(`download: ${download.files} files, ${download.bodyBytes} bytes of bodies, ${download.transferBytes} bytes transferred (uncompressed), the engine ${download.engineBytes} of them; first contentful paint (the lobby) ${round(download.firstPaintMs)} ms`);
+    results.forEach((r, i) => console.log(`${i + 1}: engine loaded in ${r.engine_ms} ms; prediction ${JSON.stringify(r.prediction)}`));
   }
 });

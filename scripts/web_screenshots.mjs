@@ -1,24 +1,21 @@
 #!/usr/bin/env node
 // The web client's pictures in docs/img, made the way a player sees them:
 //
-//   node scripts/web_screenshots.mjs [--server PATH] [--out docs/img] [--only singles|doubles]
+//   node scripts/web_screenshots.mjs [--server PATH] [--out docs/img] [--only singles|doubles|replay]
 //
 // web-aim.png: 900 x 900, a game against a server bot, the break being aimed (the pull, the
 // guide and the power ring). web-phone.png: 390 x 844 at 2 device px per CSS px, touch, the
 // board after the break against a server bot. web-doubles-side.png: 900 x 900, a doubles game of
 // four pages (ICF rules), the right seat's view (a quarter turn: its own baseline at the
-// bottom, its partner across) aiming its first shot after the break.
+// bottom, its partner across) aiming its first shot after the break. web-replay.png: 900 x 900,
+// the replay page (#/replay/ID) of a game the page played against a server bot (freestyle to
+// 40 points, on a server with a match store), paused in the motion of the game's last stroke.
 
-import { fileURLToPath } from 'node:url';
+import fs from 'node:fs';
+import os from 'node:os';
 import path from 'node:path';
 
-const root = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..');
-const args = process.argv.slice(2);
-const opt = (name, fallback) => {
-  const i = args.indexOf(name);
-  return i >= 0 ? args[i + 1] : fallback;
-};
-process.env.CARROM_SERVER = path.resolve(opt('--server', process.env.CARROM_SERVER ?? path.join(root, 'build/test/server/carrom-server')));
+const { root, args, opt } = await import('./lib/script_options.mjs');
 const out = path.resolve(opt('--out', path.join(root, 'docs/img')));
 const only = opt('--only', 'all');
 const wanted = (name) => only === 'all' || only === name;
@@ -27,6 +24,40 @@ const { launchBrowser, pageUrl, run, startServer, startWebServer } = await impor
 const { Player } = await import(path.join(root, 'tests/web/lib/player.mjs'));
 const { breakShot } = await import(path.join(root, 'tests/web/lib/match.mjs'));
 const { chooseShot } = await import(path.join(root, 'tests/web/lib/shot_chooser.mjs'));
+const { playUntilOver } = await import(path.join(root, 'tests/web/lib/match.mjs'));
+
+// A game against a server bot on a server with a match store, then its replay page paused in
+// the last stroke's motion.
+async function replayPicture(t, file) {
+  const dir = fs.mkdtempSync(path.join(os.tmpdir(), 'carrom-shots-'));
+  try {
+    const server = await startServer(['--shot-clock', '0', '--time-scale', '8', '--data', path.join(dir, 'm.sqlite')]);
+    const web = await startWebServer(server);
+    const context = await t.browser.newContext({ viewport: { width: 900, height: 900 } });
+    const p = await Player.open(context, 'replay', pageUrl(web, server), t.errors);
+    await p.fillLobby({ name: 'Asha', ruleSet: 'freestyle', targetPoints: 40, boards: 1, botLevel: 'easy' });
+    await p.press('#play-bot');
+    await p.waitFor('the game', (st) => st.inRoom && st.phase === 'aiming');
+    await playUntilOver([p], { maxShots: 40, timeoutMs: 110000 });
+    const base = `http://127.0.0.1:${server.port}`;
+    let listed = null;
+    for (let i = 0; i < 50 && !listed?.finished_ms; i += 1) {
+      listed = (await (await fetch(`${base}/matches?player=Asha`)).json()).matches[0];
+      await new Promise((r) => { setTimeout(r, 100); });
+    }
+    const r = await context.newPage();
+    await r.goto(`${base}${listed.replay}`);
+    await r.waitForFunction(() => window.carrom?.replay?.().loaded);
+    const last = await r.evaluate(() => window.carrom.replay().inputs);
+    for (let i = 1; i < last; i += 1) await r.keyboard.press('ArrowRight');
+    await r.waitForFunction(() => window.carrom.replay().stroke === window.carrom.replay().strokes);
+    await new Promise((res) => { setTimeout(res, 400); });
+    await r.click('#replay-play');
+    await r.screenshot({ path: file });
+  } finally {
+    fs.rmSync(dir, { recursive: true, force: true });
+  }
+}
 
 // Four pages in a doubles room; once the right seat (seat 1) is to aim, its view mid-pull.
 async function doublesPicture(t, web, server, file) {
@@ -74,7 +105,7 @@ async function doublesPicture(t, web, server, file) {
   await ravi.page.mouse.up();
 }
 
-run('web_screenshots', 120000, async (t) => {
+run('web_screenshots', 300000, async (t) => {
   const server = await startServer(['--shot-clock', '30', '--bot-think-ms', '100']);
   const web = await startWebServer(server);
   t.browser = await launchBrowser();
@@ -82,6 +113,11 @@ run('web_screenshots', 120000, async (t) => {
   if (wanted('doubles')) {
     const file = path.join(out, 'web-doubles-side.png');
     await doublesPicture(t, web, server, file);
+    console.log(`saved ${file}`);
+  }
+  if (wanted('replay')) {
+    const file = path.join(out, 'web-replay.png');
+    await replayPicture(t, file);
     console.log(`saved ${file}`);
   }
   if (!wanted('singles')) return;

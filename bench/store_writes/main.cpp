@@ -1,7 +1,8 @@
-// carrom-store-writes: appends stroke entries to a SQLite match store at a steady rate (or as
-// fast as it takes them) and reports how long each append waited for its on_written(true): the
-// time a room would hold a stroke's first broadcast back (docs/store.md).
-//   carrom-store-writes --matches 1000 --rate 300 --seconds 10 [--path FILE]
+// carrom-store-writes: appends stroke entries to a match store (SQLite, or PostgreSQL with a
+// postgresql:// URL as --path) at a steady rate (or as fast as it takes them) and reports how long
+// each append waited for its on_written(true): the time a room would hold a stroke's first
+// broadcast back (docs/store.md).
+//   carrom-store-writes --matches 1000 --rate 300 --seconds 10 [--path FILE|URL]
 // prints one line: the time open() took (its checks include PRAGMA quick_check, which reads
 // every page), entries, entries/s achieved, and the wait's p50, p99, p99.9 and max in ms.
 // --rate 0 appends as fast as possible (throughput). The entries are real journal entries of a
@@ -9,7 +10,7 @@
 
 #include "carrom/proto/journal_replay.hpp"
 #include "carrom/rules/match.hpp"
-#include "store/sqlite_match_store.hpp"
+#include "store/open_match_store.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -76,7 +77,8 @@ int main(int argc, char** argv) {
     app.add_option("--rate", rate, "entries per second, 0 = as fast as possible")
         ->check(CLI::Range(0.0, 1e7));
     app.add_option("--seconds", seconds, "duration")->check(CLI::Range(0.1, 3600.0));
-    app.add_option("--path", path, "database file (default: a new one in a temp directory)");
+    app.add_option("--path", path,
+                   "database file or PostgreSQL URL (default: a new file in a temp directory)");
     CLI11_PARSE(app, argc, argv);
 
     std::filesystem::path dir;
@@ -87,14 +89,14 @@ int main(int argc, char** argv) {
         path = (dir / "carrom.db").string();
     }
     const auto open_start = Clock::now();
-    auto opened = store::SqliteMatchStore::open(path);
+    auto opened = store::open_match_store(path);
     const double open_ms =
         std::chrono::duration<double, std::milli>(Clock::now() - open_start).count();
     if (opened.error) {
         std::fprintf(stderr, "%s: %s\n", opened.error->code.c_str(), opened.error->message.c_str());
         return 2;
     }
-    store::SqliteMatchStore& s = *opened.store;
+    store::MatchStore& s = *opened.store;
     const std::vector<proto::JournalEntry> strokes = sample_strokes();
     std::vector<std::int64_t> next_seq(static_cast<std::size_t>(matches), 0);
     std::vector<std::string> ids;

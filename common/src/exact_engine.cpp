@@ -2,10 +2,10 @@
 // the engine (engine_state.hpp lists the files of its parts), and simulate_exact wraps it.
 
 #include "carrom/exact_engine.hpp"
+#include "carrom/double_bits.hpp"
 
 #include "engine_state.hpp"
 
-#include <bit>
 #include <cstdint>
 
 namespace carrom {
@@ -18,11 +18,10 @@ constexpr double kOverlapTolerancePx = 1e-9;
 // Same bits: doubles compared by representation, so -0.0 differs from 0.0 and NaN from nothing.
 bool same_body(const Body& a, const Body& b) {
     return a.id == b.id && a.kind == b.kind && a.pocketed == b.pocketed &&
-           std::bit_cast<std::uint64_t>(a.pos_px.x) == std::bit_cast<std::uint64_t>(b.pos_px.x) &&
-           std::bit_cast<std::uint64_t>(a.pos_px.y) == std::bit_cast<std::uint64_t>(b.pos_px.y) &&
-           std::bit_cast<std::uint64_t>(a.vel_px_s.x) ==
-               std::bit_cast<std::uint64_t>(b.vel_px_s.x) &&
-           std::bit_cast<std::uint64_t>(a.vel_px_s.y) == std::bit_cast<std::uint64_t>(b.vel_px_s.y);
+           double_bits(a.pos_px.x) == double_bits(b.pos_px.x) &&
+           double_bits(a.pos_px.y) == double_bits(b.pos_px.y) &&
+           double_bits(a.vel_px_s.x) == double_bits(b.vel_px_s.x) &&
+           double_bits(a.vel_px_s.y) == double_bits(b.vel_px_s.y);
 }
 
 } // namespace

@@ -1,6 +1,5 @@
 #include "carrom/result_hash.hpp"
-
-#include <bit>
+#include "carrom/double_bits.hpp"
 
 namespace carrom {
 
@@ -12,7 +11,7 @@ void ResultHash::add_word(std::uint64_t word) {
 }
 
 void ResultHash::add_double(double x) {
-    add_word(std::bit_cast<std::uint64_t>(x));
+    add_word(double_bits(x));
 }
 
 void ResultHash::add_int(int x) {

@@ -2,7 +2,7 @@
 // variables; see docs/server.md.
 #include "carrom/server/server.hpp"
 #include "carrom/server/web_assets.hpp"
-#include "store/sqlite_match_store.hpp"
+#include "store/open_match_store.hpp"
 
 #include "bot_brains.hpp"
 
@@ -130,7 +130,8 @@ int main(int argc, char** argv) {
         ->envname("CARROM_NO_WEB")
         ->excludes(web_root_option);
     app.add_option("--data", data,
-                   "Match store: the SQLite database file (created on first start), or none")
+                   "Match store: the SQLite database file (created on first start), a "
+                   "PostgreSQL URL (postgresql://USER@HOST[:PORT]/DB), or none")
         ->envname("CARROM_DATA");
     app.add_option("--log-level", log_level, "trace, debug, info, warn, error, off")
         ->envname("CARROM_LOG_LEVEL")
@@ -160,7 +161,7 @@ int main(int argc, char** argv) {
     }
     std::shared_ptr<carrom::store::MatchStore> store;
     if (data != "none") {
-        carrom::store::SqliteStoreOptions options;
+        carrom::store::StoreOptions options;
         // Test seam (docs/store.md, "Write errors"): writes fail while this file exists.
         if (const char* fail_file = std::getenv("CARROM_TEST_STORE_FAIL_FILE");
             fail_file != nullptr && *fail_file != '\0') {
@@ -170,14 +171,14 @@ int main(int argc, char** argv) {
             };
             spdlog::warn("test seam: match store writes fail while {} exists", fail_file);
         }
-        auto opened = carrom::store::SqliteMatchStore::open(data, std::move(options));
+        auto opened = carrom::store::open_match_store(data, std::move(options));
         if (!opened.store) {
             std::fprintf(stderr, "carrom-server: %s: %s\n", opened.error->code.c_str(),
                          opened.error->message.c_str());
             return 2;
         }
         store = std::move(opened.store);
-        spdlog::info("match store: {}", data);
+        spdlog::info("match store: {} ({})", opened.shown, store->health().backend);
     } else {
         spdlog::info("no match store: matches end with the process (--data none)");
     }

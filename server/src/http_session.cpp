@@ -130,6 +130,9 @@ void HttpSession::respond(const Request& request) {
             } else {
                 response->body() = "ok\n";
             }
+            if (health) { // which backend (sqlite, postgresql), for operators and probes
+                response->set("Carrom-Store", health->backend);
+            }
             if (core_.tls && !core_.stopping) { // the certificate in use, the last reload
                 response->body() += "tls: " + core_.tls->health_json() + "\n";
             }

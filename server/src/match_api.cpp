@@ -111,7 +111,9 @@ nlohmann::json match_listing_json(const store::MatchListing& m) {
             {"created_ms", m.created_ms},
             {"finished_ms", m.finished_ms ? Json(*m.finished_ms) : Json(nullptr)},
             {"result", m.result ? proto::game_result_to_json(*m.result) : Json(nullptr)},
-            {"scores", m.scores}};
+            {"scores", m.scores},
+            // The web client's replay page for it, relative to this server (docs/web.md).
+            {"replay", "/#/replay/" + m.id}};
 }
 
 std::vector<std::pair<std::string_view, std::string_view>> query_params(std::string_view query) {

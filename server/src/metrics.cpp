@@ -85,6 +85,11 @@ std::string store_prometheus_text(const store::StoreHealth* health) {
     line("carrom_store_written_total", "counter", "Match store items written.", h.written_total);
     line("carrom_store_degraded", "gauge", "1 while match store writes fail.",
          h.degraded ? 1U : 0U);
+    if (!h.backend.empty()) {
+        out << "# HELP carrom_store_info The match store's backend.\n"
+               "# TYPE carrom_store_info gauge\ncarrom_store_info{backend=\""
+            << h.backend << "\"} 1\n";
+    }
     return out.str();
 }
 

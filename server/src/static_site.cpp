@@ -17,10 +17,11 @@ namespace {
 constexpr std::string_view kCacheFiles = "no-cache";
 constexpr std::string_view kCacheErrors = "no-store";
 // The page loads only its own files and talks only to its own server (ws: and wss: for the
-// WebSocket, which browsers do not all cover by 'self').
+// WebSocket, which browsers do not all cover by 'self'); 'wasm-unsafe-eval' lets it compile its
+// own WebAssembly engine (js/carrom_engine.wasm) and allows no JavaScript eval.
 constexpr std::string_view kHtmlPolicy =
     "default-src 'self'; connect-src 'self' ws: wss:; img-src 'self' data:; "
-    "style-src 'self'; script-src 'self'; object-src 'none'; base-uri 'none'; "
+    "style-src 'self'; script-src 'self' 'wasm-unsafe-eval'; object-src 'none'; base-uri 'none'; "
     "frame-ancestors 'none'; form-action 'none'";
 
 char lower(char c) {

@@ -3,10 +3,12 @@
 // restart with their resume tokens, or they resume by themselves with back-off). kill -9 while a
 // player aims, kill -9 while a shot moves, SIGTERM with 20 matches running: the server restarts on
 // the same port and data, recovers the matches, the bots resume and finish, every journal replays
-// clean with consecutive turns.
+// clean with consecutive turns. The kill -9 case runs on a PostgreSQL store too (a server of the
+// test's own, tests/support/postgres_instance.hpp).
 #include "harness.hpp"
 #include "journal_check.hpp"
 
+#include "support/postgres_instance.hpp"
 #include "support/server_process.hpp"
 #include "support/temp_dir.hpp"
 
@@ -156,11 +158,12 @@ int expect_finished_journals_clean(const test_support::ServerProcess& server, st
 // Plays a match to its fourth stroke, kills the server (SIGKILL) when `moment` says so, restarts
 // it on the same port and data; the bots resume and finish.
 // by_themselves: the bots are not dropped and resumed by the test; they notice the lost connection
-// and resume with back-off (BotRunner's auto_resume, as carrom-bot does).
+// and resume with back-off (BotRunner's auto_resume, as carrom-bot does). data: the store
+// (--data), an SQLite file in a temporary directory unless given.
 void kill_and_recover(const std::function<bool(const proto::ServerMessage&)>& moment,
-                      bool by_themselves = false) {
+                      bool by_themselves = false, std::string data = {}) {
     RecoveryDir dir;
-    auto server = start_server(dir.file("c.db"));
+    auto server = start_server(data.empty() ? dir.file("c.db") : data);
     const std::uint16_t port = server->port();
     ASSERT_NE(port, 0);
     Pair pair(server->url(), 7);
@@ -210,6 +213,15 @@ TEST(RecoveryProcess, KilledWhileAShotMovesTheBotsResumeByThemselvesAndFinish) {
     kill_and_recover(
         [](const proto::ServerMessage& m) { return std::holds_alternative<proto::Snapshot>(m); },
         true);
+}
+
+// The same on PostgreSQL: the restarted server takes the database over (the killed one's session
+// and its advisory lock are gone with it) and recovers the match from it.
+TEST(RecoveryProcess, OnPostgresqlKilledWhileAShotMovesTheBotsResumeAndFinish) {
+    test_support::PostgresInstance postgres;
+    kill_and_recover(
+        [](const proto::ServerMessage& m) { return std::holds_alternative<proto::Snapshot>(m); },
+        false, postgres.url(postgres.create_database()));
 }
 
 TEST(RecoveryProcess, AJournalOfAnotherPhysicsVersionIsNotResumedAndStaysInTheStore) {

@@ -101,6 +101,7 @@ TEST_F(MatchApiTest, AListGivesEverySeatsTeam) {
     ASSERT_EQ(matches.size(), 2U);
     EXPECT_EQ(matches[0]["id"], "sgl1"); // newest first
     EXPECT_EQ(matches[0]["teams"], nlohmann::json::parse("[0, 1]"));
+    EXPECT_EQ(matches[0]["replay"], "/#/replay/sgl1"); // the web client's replay page
     EXPECT_EQ(matches[1]["players"],
               nlohmann::json::parse(R"j(["Ann", "Bo", "Bot (easy)", "Cy"])j"));
     EXPECT_EQ(matches[1]["teams"], nlohmann::json::parse("[0, 1, 0, 1]"));

@@ -266,7 +266,8 @@ TEST(StaticSite, GetIndexHasExactlyTheseHeaders) {
         {"X-Content-Type-Options", "nosniff"},
         {"Content-Security-Policy",
          "default-src 'self'; connect-src 'self' ws: wss:; img-src 'self' data:; "
-         "style-src 'self'; script-src 'self'; object-src 'none'; base-uri 'none'; "
+         "style-src 'self'; script-src 'self' 'wasm-unsafe-eval'; object-src 'none'; base-uri "
+         "'none'; "
          "frame-ancestors 'none'; form-action 'none'"},
         {"Referrer-Policy", "no-referrer"},
     };

@@ -232,6 +232,22 @@ TEST_F(WebServing, ServesTheEmbeddedPageWithTypeEtagAndCaching) {
     }
 }
 
+#ifdef CARROM_WEB_WASM_PATH
+// The engine emscripten built (wasm/CMakeLists.txt) is embedded and served as WebAssembly, which
+// the page's policy lets it compile.
+TEST_F(WebServing, ServesTheEngineAsWebAssembly) {
+    const HttpAnswer engine = ask(port(), "GET", "/js/carrom_engine.wasm");
+    EXPECT_EQ(engine.status, 200);
+    EXPECT_EQ(engine.header("content-type"), "application/wasm");
+    EXPECT_EQ(engine.header("cache-control"), "no-cache");
+    EXPECT_EQ(engine.body, read_file(CARROM_WEB_WASM_PATH));
+    EXPECT_EQ(engine.body.substr(0, 4), std::string("\0asm", 4));
+    const HttpAnswer page = ask(port(), "GET", "/");
+    EXPECT_NE(page.header("content-security-policy").find("script-src 'self' 'wasm-unsafe-eval';"),
+              std::string::npos);
+}
+#endif
+
 TEST_F(WebServing, IfNoneMatchWithTheEtagIsNotModified) {
     const HttpAnswer first = ask(port(), "GET", "/js/app.js");
     ASSERT_EQ(first.status, 200);

@@ -1,10 +1,17 @@
 #pragma once
-// Helpers for the store tests: a temporary directory removed afterwards, a file's bytes, and
-// journals of games played by the rules (tests/proto/journal_support.hpp).
+// Helpers for the store tests: a temporary directory removed afterwards, a file's bytes,
+// journals of games played by the rules (tests/proto/journal_support.hpp), and StoreTest, the
+// fixture of the suites that run on both backends (a test named Suite.Case/sqlite and
+// Suite.Case/postgres): an SQLite file in a temporary directory, or a new database on the
+// test binary's own PostgreSQL server (postgres_server(), started at its first use and stopped
+// when the binary ends).
 
 #include "proto/journal_support.hpp"
+#include "store/open_match_store.hpp"
 #include "store/sqlite_match_store.hpp"
+#include "support/postgres_instance.hpp"
 
+#include <SQLiteCpp/Database.h>
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -83,4 +90,83 @@ inline void store_journal(MatchStore& store, const proto::MatchJournal& journal)
 
 constexpr std::chrono::milliseconds kFlush{10000};
 
+// The test binary's PostgreSQL server: started at the first call (a gtest Environment stops it
+// and removes its directory when the tests end).
+test_support::PostgresInstance& postgres_server();
+
+// A test that runs on each backend: GetParam() is "sqlite" or "postgres".
+class StoreTest : public ::testing::TestWithParam<std::string> {
+protected:
+    bool postgres() const { return GetParam() == "postgres"; }
+    // The test's store location: an SQLite file (not yet created) or a new empty database.
+    const std::string& location() {
+        if (location_.empty()) {
+            location_ = new_location();
+        }
+        return location_;
+    }
+    std::string new_location() {
+        if (postgres()) {
+            return postgres_server().url(postgres_server().create_database());
+        }
+        return dir_.file("carrom" + std::to_string(++files_) + ".db");
+    }
+    OpenedStore try_open(StoreOptions options = fast_options()) {
+        return open_match_store(location(), std::move(options));
+    }
+    std::unique_ptr<MatchStore> open(StoreOptions options = fast_options()) {
+        auto opened = try_open(std::move(options));
+        EXPECT_FALSE(opened.error.has_value())
+            << opened.error->code << ": " << opened.error->message;
+        return std::move(opened.store);
+    }
+
+    // The database's name on the PostgreSQL server (postgres() only).
+    std::string database() {
+        const std::string& url = location();
+        const std::size_t start = url.find("@/") + 2;
+        return url.substr(start, url.find('?') - start);
+    }
+    // Runs SQL on the database as its owner (SQLite: creating the file if needed).
+    void execute(const std::string& statements) {
+        if (postgres()) {
+            const auto ran = postgres_server().sql(database(), statements);
+            ASSERT_EQ(ran.exit, 0) << ran.out;
+        } else {
+            SQLite::Database db(location(), SQLite::OPEN_READWRITE | SQLite::OPEN_CREATE);
+            db.exec(statements);
+        }
+    }
+    // Everything the database holds, to compare before and after: the SQLite file's bytes, or
+    // the PostgreSQL database dumped as SQL text (pg_dump; bytea as hex; without the random
+    // key of its \restrict lines).
+    std::string snapshot() {
+        if (postgres()) {
+            return test_support::run_command(test_support::PostgresInstance::bindir() +
+                                             "/pg_dump -h " + postgres_server().directory() +
+                                             " -U carrom " + database() +
+                                             " | grep -v -e '^.restrict ' -e '^.unrestrict '")
+                .out;
+        }
+        return read_bytes(location());
+    }
+
+    TempDir dir_;
+
+private:
+    std::string location_;
+    int files_ = 0;
+};
+
+inline std::string backend_name(const ::testing::TestParamInfo<std::string>& info) {
+    return info.param;
+}
+
 } // namespace carrom::store::test
+
+// Instantiates a StoreTest suite on both backends.
+#define CARROM_STORE_BACKENDS(Suite)                                                               \
+    INSTANTIATE_TEST_SUITE_P(, Suite, ::testing::Values("sqlite", "postgres"),                     \
+                             ::carrom::store::test::backend_name)
+
+namespace carrom::store::test {} // namespace carrom::store::test

@@ -1,6 +1,7 @@
 // A page plays a whole match against carrom-bot (a separate process joining with the room code
 // the page shows). Checks: the bot's seat and name on the page, the same final scores and reason
-// on both sides, the bot's result matching the page's winner, no console errors.
+// on both sides, the bot's result matching the page's winner, the page's strokes predicted by the
+// engine without corrections, no console errors.
 
 import { check, env, launchBrowser, pageUrl, run, startChild, startServer, startWebServer } from './lib/harness.mjs';
 import { playUntilOver } from './lib/match.mjs';
@@ -37,5 +38,11 @@ run('web.page_vs_bot', 150000, async (t) => {
   check(summary.reason === end.gameEnd.reason, `reason: page ${end.gameEnd.reason}, bot ${summary.reason}`);
   const botResult = end.winner === 1 ? 'won' : end.winner === 0 ? 'lost' : 'drawn';
   check(summary.result === botResult, `the bot ${summary.result}, the page says it ${botResult}`);
-  console.log(`room ${code}: page ${shots} shots, bot ${summary.shots}; ${end.gameEnd.sentence}`);
+  // The page's own strokes were predicted by the engine (docs/web.md, "Shot prediction"), when
+  // the build has it (CARROM_WEB_ENGINE=1); without it nothing is predicted.
+  const withEngine = process.env.CARROM_WEB_ENGINE !== '0';
+  check(end.engine.loaded === withEngine, `the engine loaded: ${end.engine.loaded} (${end.engine.error})`);
+  check(withEngine ? end.prediction.strokes >= 1 && end.prediction.corrections === 0 : end.prediction === null,
+    `strokes predicted ${end.prediction?.strokes}, corrected ${end.prediction?.corrections}`);
+  console.log(`room ${code}: page ${shots} shots, bot ${summary.shots}; ${end.prediction?.strokes ?? 0} predicted, largest difference ${end.prediction?.maxDifferencePx.toFixed(4) ?? '-'} px, engine ${end.engine.ms?.toFixed(1) ?? '-'} ms; ${end.gameEnd.sentence}`);
 });

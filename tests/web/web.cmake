@@ -36,15 +36,21 @@ if(NOT CARROM_CHROMIUM OR NOT TARGET carrom-server OR NOT TARGET carrom-bot)
     return()
 endif()
 
-foreach(test two_pages_match page_vs_bot touch_phone reload_resume lobby_paths doubles_pages https_page
-             identity_page)
+# The page's engine (wasm/CMakeLists.txt): without it the page runs without prediction and
+# replays; CARROM_WEB_ENGINE tells the tests which page they get, and the replay test needs it.
+set(web_tests two_pages_match page_vs_bot touch_phone reload_resume lobby_paths doubles_pages https_page
+              identity_page)
+if(CARROM_WEB_WASM)
+    list(APPEND web_tests replay_page)
+endif()
+foreach(test ${web_tests})
     add_test(NAME web.${test} COMMAND ${CARROM_NODE} ${web_dir}/${test}.mjs)
     set_tests_properties(web.${test} PROPERTIES
         TIMEOUT 200
         LABELS web
         # One browser at a time: each starts several pages, and timings stay honest.
         RESOURCE_LOCK chromium
-        ENVIRONMENT "CARROM_SERVER=$<TARGET_FILE:carrom-server>;CARROM_BOT=$<TARGET_FILE:carrom-bot>;CARROM_CHROMIUM=${CARROM_CHROMIUM}")
+        ENVIRONMENT "CARROM_SERVER=$<TARGET_FILE:carrom-server>;CARROM_BOT=$<TARGET_FILE:carrom-bot>;CARROM_CHROMIUM=${CARROM_CHROMIUM};CARROM_WEB_ENGINE=$<IF:$<BOOL:${CARROM_WEB_WASM}>,1,0>")
 endforeach()
 
 # A page against carrom-client (the desktop client, `--autoplay`, under `xvfb-run -a` when the

@@ -8,15 +8,19 @@
 import { AimController, clampBaselineX } from './aim_controller.js';
 import { alongOf, strikerAt } from './board_geometry.js';
 import { Connection } from './connection.js';
+import { loadEngine } from './engine.js';
 import { Hud } from './hud.js';
 import { loadOrCreateIdentity } from './identity.js';
 import { IdentityPanel } from './identity_panel.js';
 import { getJson, RatingView } from './rating_view.js';
 import { Lobby } from './lobby.js';
 import { MatchModel } from './match_model.js';
+import { MyMatches } from './my_matches.js';
 import { errorSentence } from './plain_words.js';
+import { STRIKER_ID } from './physics_config.js';
 import * as proto from './protocol.js';
 import { Renderer } from './renderer.js';
+import { parseReplayHash, startReplayPage } from './replay_page.js';
 import { parseRoomHash, roomHash, roomLink, showHash } from './room_link.js';
 import { teamSummaries } from './seat_panels.js';
 import { Session, SESSION_DEFAULTS } from './session.js';
@@ -64,6 +68,7 @@ class App {
     this.identityPanel = new IdentityPanel(document.getElementById('identity'), storage('localStorage'),
       this.session.identity, (key) => { this.session.identity = key; });
     this.ratingView = new RatingView(document.getElementById('my-rating'), getJson);
+    this.myMatches = new MyMatches(this.lobby.form, () => this.lobby.storedName());
     this.hud = new Hud({
       rematch: () => this.rematch(),
       lobby: () => this.toLobby(),
@@ -99,6 +104,20 @@ class App {
       this.joinLink(name);
     }
     requestAnimationFrame((ts) => this.frame(ts));
+    this.startEngine();
+  }
+
+  // The exact engine for the own strokes' prediction; without it (no WebAssembly, no file) the
+  // page draws the server's snapshots only.
+  async startEngine() {
+    const started = performance.now();
+    try {
+      this.engine = await loadEngine();
+      this.engineMs = performance.now() - started;
+      this.model.setEngine(this.engine);
+    } catch (e) {
+      this.engineError = String(e.message ?? e);
+    }
   }
 
   joinLink(name) {
@@ -107,6 +126,10 @@ class App {
   }
 
   onHash() {
+    if (parseReplayHash(window.location.hash) !== null) {
+      window.location.reload(); // the replay page replaces the game page
+      return;
+    }
     const link = parseRoomHash(window.location.hash);
     if (!link || (this.model.view.inRoom && link.code === this.model.view.code)) return;
     this.fromLink = link;
@@ -261,6 +284,8 @@ class App {
     if (this.session.sendGame(proto.shoot(turn, shot.x, shot.angle, shot.power))) {
       this.shotSentTurn = turn;
       this.aim.endTurn();
+      this.releaseMs = performance.now(); // the release, on the frames' clock (first motion)
+      this.model.predict({ turn, ...shot }, this.releaseMs / 1000);
     }
   }
 
@@ -336,8 +361,10 @@ class App {
     this.updateLobby();
     document.body.classList.toggle('aiming', this.aim.phase === 'pulling' || this.aim.phase === 'sliding');
     // Frame time: from the frame's start (the rAF timestamp) to the end of this frame's work.
+    const striker = this.bodies.find((b) => b.id === STRIKER_ID);
     this.frameLog.push({
       ts, ms: performance.now() - ts, work: performance.now() - started, moving: animating, turn: v.turn,
+      sx: striker?.x, sy: striker?.y, // the striker drawn (scripts/web_first_motion.mjs)
     });
     if (this.frameLog.length > FRAME_LOG) this.frameLog.splice(0, FRAME_LOG / 10);
     requestAnimationFrame((t) => this.frame(t));
@@ -378,6 +405,9 @@ class App {
       cues: { heard: this.model.cuesHeard, late: this.model.cues.late, merged: this.model.cuesMerged },
       muted: this.sound.muted, audio: this.sound.context ? this.sound.context.state : 'none',
       hash: window.location.hash,
+      releaseMs: this.releaseMs ?? null,
+      engine: { loaded: Boolean(this.engine), ms: this.engineMs ?? null, error: this.engineError ?? null },
+      prediction: this.model.prediction ? { active: this.model.prediction.active, ...this.model.prediction.stats } : null,
     };
   }
 
@@ -389,8 +419,11 @@ class App {
   }
 }
 
-const app = new App();
-window.carrom = Object.freeze({
+// `#/replay/ID` is the replay page (replay_page.js), without the lobby and the WebSocket.
+const replayId = parseReplayHash(window.location.hash);
+const app = replayId === null ? new App() : null;
+if (replayId !== null) startReplayPage(replayId);
+else window.carrom = Object.freeze({
   state: () => app.debugState(),
   toClient: (x, y) => app.toClient(x, y),
   frameTimes: () => app.frameLog.slice(),
@@ -398,4 +431,4 @@ window.carrom = Object.freeze({
   // A cheap look (no layout, three fields) for a caller that polls while frames are timed.
   progress: () => ({ turn: app.model.view.turn, phase: app.model.view.phase, animating: app.model.animating() }),
 });
-app.start();
+app?.start();

@@ -192,6 +192,8 @@ export class Hud {
     }
     let conn = session.status;
     if (session.rttMs !== null && session.phase === 'in_room') conn += ` · RTT ${Math.round(session.rttMs)} ms`;
+    const p = model.prediction?.stats;
+    if (p && p.strokes > 0 && session.phase === 'in_room') conn += ` · predicted ${p.strokes}, corrected ${p.corrections}`;
     setText(e.conn, conn);
     setClass(e.conn, 'alert', !['in_room', 'lobby', 'joining', 'idle'].includes(session.phase));
     setHidden(e.leave, !v.inRoom);

@@ -18,6 +18,7 @@ import {
   countWords, errorSentence, gameEndSentence, pocketList, queenSentence,
 } from './plain_words.js';
 import { DEFAULT_MOTION } from './protocol.js';
+import { ShotPrediction } from './prediction.js';
 import { viewTurns } from './seat_panels.js';
 import { ServerClock } from './server_clock.js';
 import { loudnessFromImpulse, SoundCueQueue } from './sound_cues.js';
@@ -55,7 +56,13 @@ export class MatchModel {
     this.geometry = makeBoardGeometry(physics);
     this.serverClock = new ServerClock();
     this.log = new HudLog();
+    this.prediction = null; // a ShotPrediction once the engine is loaded (setEngine)
     this.reset();
+  }
+
+  // The exact engine (engine.js) has loaded: the own strokes are predicted from now on.
+  setEngine(engine) {
+    this.prediction = new ShotPrediction(engine, loudnessFromImpulse);
   }
 
   // Forget the room (left it, or the seat is gone).
@@ -77,16 +84,25 @@ export class MatchModel {
     this.shots = 0; // shot results received
     this.lastShot = null; // the latest shot_result: {turn, seat, x, angle, power, pocketed}
     this.version = 0; // changes whenever the HUD's view changes
+    this.predictedCues = []; // the predicted stroke's sound cues, by time
+    this.correctionsLogged = this.prediction?.stats.corrections ?? 0;
+    this.prediction?.drop();
   }
 
   handle(m, localS) {
     switch (m.type) {
-      case 'welcome': this.serverClock.oneWay(m.server_time_ms, localS); break;
+      case 'welcome':
+        this.serverClock.oneWay(m.server_time_ms, localS);
+        this.dropUnconfirmedPrediction(); // a new connection: the shot may be lost
+        break;
       case 'room_state': this.onRoomState(m, localS); break;
       case 'snapshot': this.onSnapshot(m, localS); return; // no HUD change
       case 'event': this.onEvent(m, localS); break;
       case 'shot_result': this.onShotResult(m, localS); break;
-      case 'error': this.log.post(errorSentence(m), 'error', localS); break;
+      case 'error':
+        this.dropUnconfirmedPrediction(); // the shot was refused
+        this.log.post(errorSentence(m), 'error', localS);
+        break;
       default: return;
     }
     this.version += 1;
@@ -186,6 +202,13 @@ export class MatchModel {
       phase: m.phase, queen: m.queen, winner: m.winner,
       deadlineMs: m.shot_clock_deadline_ms ?? null,
     });
+    const p = this.prediction;
+    if (p?.active && m.turn !== p.turn) {
+      // The predicted stroke is over (its last keyframe may have been lost with a connection
+      // that a resume replaced): the prediction ends once its blends are done.
+      if (p.confirmed) p.markServerDone();
+      else this.dropUnconfirmedPrediction();
+    }
     v.seats = m.seats.map((s, i) => ({
       occupied: s.occupied, name: s.name, connected: s.connected, bot: s.bot, colour: s.colour,
       baseline: s.baseline, team: s.team ?? (m.seats.length === 4 ? i % 2 : i), score: m.scores[i] ?? 0, dues: m.dues[i] ?? 0,
@@ -235,12 +258,77 @@ export class MatchModel {
       });
     }
     const s = { seq: this.nextSeq++, time: offset + m.t, keyframe: m.keyframe, bodies };
-    if (this.buffer.push(s)) this.playout.onSnapshot(s.time, localS);
+    const p = this.prediction;
+    const predicted = p?.active && m.turn === p.turn && !atRest;
+    if (!this.buffer.push(s)) return;
+    if (!predicted) {
+      this.playout.onSnapshot(s.time, localS);
+    } else if (m.keyframe) {
+      p.markServerDone(); // the board after the rules: no physics to compare
+    } else {
+      // At the server's own shot time (offset + t - offset is not always t).
+      p.confirm(this.buffer.newestState(), m.t, localS);
+    }
+  }
+
+  // Predicts our stroke {turn, x, angle, power} just sent (docs/interpolation.md, "Shot
+  // prediction"): only on our turn, with the board at rest and the engine loaded. Its t = 0 is
+  // the time drawn now, so the next frame shows it moving; the board at rest is placed again just
+  // before it so that the server's snapshots follow it in the buffer.
+  predict(shot, localS) {
+    const p = this.prediction;
+    if (!p || p.active || !this.myTurn() || shot.turn !== this.view.turn || this.buffer.empty()) {
+      return false;
+    }
+    const board = this.boardNow();
+    if (!board.every((b) => b.pocketed || (b.vx === 0 && b.vy === 0))) return false;
+    const start = this.playout.renderTime(localS);
+    if (!p.start(this.view.turn, board, this.seatBaseline(this.view.you), shot, start)) return false;
+    this.buffer.clear();
+    this.buffer.push({ seq: this.nextSeq++, time: start - 1e-3, keyframe: true, bodies: board });
+    this.turnOffsets.set(this.view.turn, start);
+    this.predictedCues = p.cues().sort((a, b) => a.time - b.time);
+    this.view.phase = 'moving';
+    this.version += 1;
+    return true;
+  }
+
+  dropUnconfirmedPrediction() {
+    const p = this.prediction;
+    if (!p?.active || p.confirmed) return;
+    // Back to the board at rest.
+    this.turnOffsets.delete(p.turn);
+    p.drop();
+    this.predictedCues = [];
+    if (this.view.phase === 'moving') this.view.phase = 'aiming';
+    this.version += 1;
+  }
+
+  // The drawn bodies while a prediction is active (ShotPrediction.draw); its end, once the
+  // server's last keyframe arrived and every blend is done, posts the corrections as a HUD line.
+  renderPredicted(t, localS) {
+    const p = this.prediction;
+    const serverReaches = p.confirmed
+      && (p.serverDone || (!this.buffer.empty() && this.buffer.newestTime() >= t));
+    if (!serverReaches) return p.draw(t, localS, null);
+    const server = this.buffer.sample(t);
+    if (p.serverDone && !p.blending(localS)) {
+      p.stop();
+      const n = p.stats.corrections - this.correctionsLogged;
+      if (n > 0) {
+        this.log.post(`The server corrected the predicted shot: ${countWords(n, 'piece', 'pieces')} moved, `
+          + `by up to ${p.stats.strokeMaxDifferencePx.toFixed(2)} px`, 'info', localS);
+        this.correctionsLogged = p.stats.corrections;
+      }
+      return server;
+    }
+    return p.draw(t, localS, server);
   }
 
   cue(turn, t, kind, volume) {
     if (volume <= 0) return;
     this.cuesHeard += 1;
+    if (this.prediction?.claimCue(turn, kind, t)) return; // predicted, and played already
     const offset = this.turnOffsets.get(turn);
     if (offset === undefined) {
       this.pendingCues.push({ turn, t, cue: { time: 0, kind, volume } });
@@ -348,8 +436,11 @@ export class MatchModel {
   render(localS) {
     const t = this.playout.renderTime(localS);
     this.lastRender = t;
-    let bodies = this.buffer.sample(t);
+    let bodies = this.prediction?.active ? this.renderPredicted(t, localS) : this.buffer.sample(t);
     for (const c of this.cues.takeDue(t)) this.due.push(c);
+    while (this.predictedCues.length > 0 && this.predictedCues[0].time <= t) {
+      this.due.push(this.predictedCues.shift());
+    }
     // While aiming, the striker is drawn where the shooter places it, not where it last stopped.
     if (this.view.phase === 'aiming' && !this.animating()) {
       bodies = bodies.filter((b) => b.kind !== 'striker');
@@ -373,7 +464,7 @@ export class MatchModel {
 
   // True while a shot is still being played on screen.
   animating() {
-    return this.view.phase === 'moving'
+    return this.view.phase === 'moving' || Boolean(this.prediction?.active)
       || (!this.buffer.empty() && this.lastRender < this.buffer.newestTime());
   }
 

@@ -1,6 +1,6 @@
 #include "carrom/rules/state_hash.hpp"
+#include "carrom/double_bits.hpp"
 
-#include <bit>
 #include <optional>
 #include <vector>
 
@@ -17,7 +17,7 @@ public:
         }
     }
     void integer(int x) { word(static_cast<std::uint64_t>(static_cast<std::uint32_t>(x))); }
-    void number(double x) { word(std::bit_cast<std::uint64_t>(x)); }
+    void number(double x) { word(double_bits(x)); }
     void flag(bool b) { integer(b ? 1 : 0); }
     void vec(Vec2 v) {
         number(v.x);

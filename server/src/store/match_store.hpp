@@ -1,11 +1,11 @@
 #pragma once
 // Where match journals live (proto/journal.hpp): the one storage interface the server uses.
-// Backends implement it; the embedded default is SQLite (sqlite_match_store.hpp). Nothing in the
-// interface belongs to a backend, so a networked one (Redis, Postgres) can implement it too.
+// Backends implement it: the embedded default, SQLite (sqlite_match_store.hpp), and PostgreSQL
+// (postgres_match_store.hpp); open_match_store.hpp picks one by the location's form.
 //
 // Writes never block the caller: create, append, set_seat_token and mark_finished queue their
 // work and return at once; the backend writes it in the order it was queued, on its own thread
-// (SQLite: batched into transactions). An append can say when its entry is written, so that a
+// (batched into transactions). An append can say when its entry is written, so that a
 // room broadcasts a stroke only once the stroke would survive a crash of the process. When
 // writing fails (disk full, I/O error), the backend keeps what it could not write in memory,
 // retries, counts the errors and reports itself degraded (health()); the caller carries on.
@@ -48,8 +48,13 @@ inline constexpr std::string_view kReadOnly = "store_read_only";         // the 
 inline constexpr std::string_view kCannotCreate = "store_cannot_create"; // nor its directory
 inline constexpr std::string_view kLocked = "store_locked";              // another server uses it
 inline constexpr std::string_view kIo = "store_io";                      // any other I/O failure
-inline constexpr std::string_view kBadJournal = "store_bad_journal";     // a stored journal that
-                                                                         // does not decode
+inline constexpr std::string_view kCannotConnect = "store_cannot_connect"; // PostgreSQL: no
+                                                                           // server, no database
+inline constexpr std::string_view kPermission = "store_permission"; // PostgreSQL: the role may not
+                                                                    // log in, read or create
+inline constexpr std::string_view kBadUrl = "store_bad_url"; // a PostgreSQL URL libpq refuses
+inline constexpr std::string_view kBadJournal = "store_bad_journal"; // a stored journal that
+                                                                     // does not decode
 } // namespace store_code
 
 // A value or the error that prevented reading it.
@@ -88,6 +93,7 @@ struct StoreHealth {
     std::uint64_t written_total = 0; // items written
     std::size_t pending = 0;         // items queued or being written
     std::string last_error;          // the last write error's message ("" if none yet)
+    std::string backend;             // "sqlite" or "postgresql"
 };
 
 // Called once per append when the entry's fate is known, on the backend's thread (or within

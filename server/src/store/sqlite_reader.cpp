@@ -1,8 +1,7 @@
 #include "store/sqlite_reader.hpp"
 
-#include "carrom/proto/journal_json.hpp"
-#include "carrom/proto/match_json.hpp"
 #include "store/sqlite_database.hpp"
+#include "store/stored_json.hpp"
 
 #include <SQLiteCpp/Statement.h>
 
@@ -13,34 +12,8 @@
 namespace carrom::store::sqlite {
 namespace {
 
-using Json = nlohmann::json;
-
-constexpr int kMaxListLimit = 100;
-
-// A stored value that does not decode: the message names the match and where.
-struct BadJournal : std::runtime_error {
-    using std::runtime_error::runtime_error;
-};
-
-[[noreturn]] void bad(const MatchId& match, const std::string& what) {
-    throw BadJournal("the stored journal of match " + match + " is damaged: " + what);
-}
-
-Json parse_stored(const MatchId& match, const std::string& text, std::string_view what) {
-    auto parsed = proto::parse_json_text(text, proto::kMaxJournalBytes);
-    if (!parsed.ok()) {
-        bad(match, std::string(what) + ": " + parsed.error->message);
-    }
-    return std::move(parsed.value);
-}
-
-proto::MatchCreated decode_head(const MatchId& match, const std::string& text) {
-    auto head = proto::decode_match_created(parse_stored(match, text, "match"));
-    if (!head.ok()) {
-        bad(match, head.error->path + ": " + head.error->message);
-    }
-    return std::move(head.value);
-}
+using stored::bad;
+using stored::BadJournal;
 
 // Runs f in one read transaction (a consistent snapshot) and maps failures to a StoreError.
 template <class T, class F> Loaded<T> read(SQLite::Database& db, const std::string& path, F f) {
@@ -74,22 +47,12 @@ std::optional<proto::MatchJournal> SqliteReader::read_journal(const MatchId& mat
         return std::nullopt;
     }
     proto::MatchJournal journal;
-    journal.created = decode_head(match, head.getColumn(0).getString());
+    journal.created = stored::decode_head(match, head.getColumn(0).getString());
     SQLite::Statement entries(db_, "SELECT seq, body FROM entries WHERE match_id = ? ORDER BY seq");
     entries.bind(1, match);
     while (entries.executeStep()) {
-        const std::int64_t seq = entries.getColumn(0).getInt64();
-        const auto expected = static_cast<std::int64_t>(journal.entries.size());
-        if (seq != expected) {
-            bad(match, "entry " + std::to_string(expected) + " is missing");
-        }
-        const std::string at = "entries[" + std::to_string(seq) + "]";
-        auto entry = proto::decode_journal_entry(
-            parse_stored(match, entries.getColumn(1).getString(), at), journal.created, at);
-        if (!entry.ok()) {
-            bad(match, entry.error->path + ": " + entry.error->message);
-        }
-        journal.entries.push_back(std::move(entry.value));
+        stored::add_entry(match, journal, entries.getColumn(0).getInt64(),
+                          entries.getColumn(1).getString());
     }
     return journal;
 }
@@ -122,19 +85,9 @@ Loaded<std::vector<RecoveredMatch>> SqliteReader::load_unfinished() {
         }
         std::vector<RecoveredMatch> out;
         for (const MatchId& id : ids) {
-            RecoveredMatch match;
-            match.id = id;
-            try {
-                match.journal = read_journal(id);
-                if (!match.journal) {
-                    bad(id, "it has no head");
-                }
-                match.seat_tokens = read_tokens(id, match.journal->created.rules.seat_count);
-            } catch (const BadJournal& e) { // this match only; the others recover
-                match.journal.reset();
-                match.error = StoreError{std::string(store_code::kBadJournal), e.what()};
-            }
-            out.push_back(std::move(match));
+            out.push_back(stored::recover(
+                id, [&] { return read_journal(id); },
+                [&](int seats) { return read_tokens(id, seats); }));
         }
         return out;
     });
@@ -155,43 +108,17 @@ Loaded<std::vector<MatchListing>> SqliteReader::recent_matches(const std::string
                                  "JOIN matches m ON m.id = p.match_id WHERE p.name = ? "
                                  "ORDER BY p.created_ms DESC, m.id DESC LIMIT ?");
         q.bind(1, player);
-        q.bind(2, std::clamp(limit, 1, kMaxListLimit));
+        q.bind(2, std::clamp(limit, 1, stored::kMaxListLimit));
         std::vector<MatchListing> out;
         while (q.executeStep()) {
-            MatchListing m;
-            m.id = q.getColumn(0).getString();
-            m.room_code = q.getColumn(1).getString();
-            const proto::MatchCreated head = decode_head(m.id, q.getColumn(2).getString());
-            m.rule_set = head.rule_set;
-            for (const proto::JournalSeat& seat : head.seats) {
-                m.teams.push_back(
-                    rules::team_of_seat(static_cast<int>(m.players.size()), head.rules.seat_count));
-                m.players.push_back(seat.name);
-            }
-            m.created_ms = q.getColumn(3).getInt64();
-            if (!q.isColumnNull(4)) {
-                m.finished_ms = q.getColumn(4).getInt64();
-            }
-            if (!q.isColumnNull(5)) {
-                const Json r = parse_stored(m.id, q.getColumn(5).getString(), "result");
-                const int teams = rules::team_count(head.rules.seat_count);
-                if (!r.is_object() || !r.contains("result") || !r.contains("scores")) {
-                    bad(m.id, "its stored result does not decode");
-                }
-                auto result = proto::decode_game_result(r["result"], teams, "result");
-                const Json& scores = r["scores"];
-                if (!result.ok() || !scores.is_array() ||
-                    scores.size() != static_cast<std::size_t>(teams) ||
-                    !std::all_of(scores.begin(), scores.end(),
-                                 [](const Json& s) { return s.is_number_integer(); })) {
-                    bad(m.id, "its stored result does not decode");
-                }
-                m.result = result.value;
-                for (const Json& s : scores) {
-                    m.scores.push_back(s.get<int>());
-                }
-            }
-            out.push_back(std::move(m));
+            const auto column = [&q](int i) -> std::optional<std::string> {
+                return q.isColumnNull(i) ? std::nullopt : std::optional(q.getColumn(i).getString());
+            };
+            out.push_back(stored::listing(
+                q.getColumn(0).getString(), q.getColumn(1).getString(), q.getColumn(2).getString(),
+                q.getColumn(3).getInt64(),
+                q.isColumnNull(4) ? std::nullopt : std::optional(q.getColumn(4).getInt64()),
+                column(5)));
         }
         return out;
     });

@@ -1,8 +1,8 @@
 #include "store/sqlite_writer.hpp"
 
 #include "carrom/proto/journal_json.hpp"
-#include "carrom/proto/match_json.hpp"
 #include "store/sqlite_database.hpp"
+#include "store/stored_json.hpp"
 
 #include <sqlite3.h>
 
@@ -25,17 +25,6 @@ void run(SQLite::Statement& statement) {
         }
     } reset{statement};
     statement.exec();
-}
-
-// Text for a column. Names are valid UTF-8 when they come from the wire (the JSON parser checks);
-// anything else is replaced rather than failing every retry.
-std::string dump(const nlohmann::json& j) {
-    return j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
-}
-
-// The end of a game, as matches.result holds it: {"result": <game result>, "scores": [...]}.
-std::string result_json(const rules::GameResult& result, const std::vector<int>& scores) {
-    return dump(nlohmann::json{{"result", proto::game_result_to_json(result)}, {"scores", scores}});
 }
 
 } // namespace
@@ -67,9 +56,9 @@ void SqliteWriter::rollback_if_open() {
     }
 }
 
-std::vector<SqliteWriter::Refusal>
-SqliteWriter::write(std::span<WriteItem> items, const std::function<bool()>& fail_before_commit) {
-    std::vector<Refusal> refused;
+std::vector<WriteRefusal> SqliteWriter::write(std::span<WriteItem> items,
+                                              const std::function<bool()>& fail_before_commit) {
+    std::vector<WriteRefusal> refused;
     try {
         run(begin_);
         for (std::size_t i = 0; i < items.size(); ++i) {
@@ -89,7 +78,7 @@ SqliteWriter::write(std::span<WriteItem> items, const std::function<bool()>& fai
             if (refusal) {
                 run(rollback_to_);
                 run(release_);
-                refused.push_back(Refusal{i, *refusal});
+                refused.push_back(WriteRefusal{i, *refusal});
             }
         }
         if (fail_before_commit && fail_before_commit()) {
@@ -132,7 +121,7 @@ void SqliteWriter::create(const CreateItem& item) {
     insert_match_.bind(4, static_cast<std::int64_t>(c.time_ms));
     insert_match_.bind(5, c.versions.physics);
     insert_match_.bind(6, c.versions.rules);
-    insert_match_.bind(7, dump(proto::match_created_to_json(c)));
+    insert_match_.bind(7, stored::head_text(c));
     run(insert_match_);
     for (const proto::JournalSeat& seat : c.seats) {
         insert_player_.bind(1, seat.name);
@@ -146,7 +135,7 @@ void SqliteWriter::append(const AppendItem& item) {
     insert_entry_.bind(2, static_cast<std::int64_t>(item.seq));
     insert_entry_.bind(3, static_cast<std::int64_t>(item.entry.time_ms));
     insert_entry_.bind(4, std::string(proto::event_type(item.entry.event)));
-    insert_entry_.bind(5, dump(proto::journal_entry_to_json(item.entry)));
+    insert_entry_.bind(5, stored::entry_text(item.entry));
     run(insert_entry_);
     if (const auto* joined = std::get_if<proto::SeatJoinedEntry>(&item.entry.event)) {
         insert_player_.bind(1, joined->name);
@@ -156,7 +145,7 @@ void SqliteWriter::append(const AppendItem& item) {
     const proto::OutcomeRecord* outcome = proto::outcome_of(item.entry.event);
     if (outcome != nullptr && outcome->game_end) {
         finish_with_result_.bind(1, static_cast<std::int64_t>(item.entry.time_ms));
-        finish_with_result_.bind(2, result_json(*outcome->game_end, outcome->scores));
+        finish_with_result_.bind(2, stored::result_text(*outcome->game_end, outcome->scores));
         finish_with_result_.bind(3, item.match);
         run(finish_with_result_);
         ratings_.match_ended(item.match, *outcome->game_end, item.entry.time_ms);

@@ -21,18 +21,13 @@ public:
     // Opens the connection to a prepared database (sqlite_database.hpp). Throws SQLite::Exception.
     explicit SqliteWriter(const std::string& path);
 
-    struct Refusal {
-        std::size_t index = 0; // in the batch
-        std::string reason;    // the database's message
-    };
-
     // Writes the items in one transaction, each all or nothing. An item that would fail every
     // time (a constraint: an append to a match never created, a seq written twice; or text that
     // cannot be encoded) is left out and listed; any other failure (disk full, I/O error,
     // fail_before_commit returning true) rolls the whole transaction back and throws
     // (SQLite::Exception or std::runtime_error).
-    std::vector<Refusal> write(std::span<WriteItem> items,
-                               const std::function<bool()>& fail_before_commit);
+    std::vector<WriteRefusal> write(std::span<WriteItem> items,
+                                    const std::function<bool()>& fail_before_commit);
 
 private:
     void write_one(const WriteItem& item);

@@ -3,8 +3,10 @@
 
 #include "store/match_store.hpp"
 
+#include <cstddef>
 #include <cstdint>
 #include <optional>
+#include <string>
 #include <variant>
 
 namespace carrom::store {
@@ -40,6 +42,13 @@ struct WriteItem {
     std::variant<CreateItem, AppendItem, SeatTokenItem, FinishItem, PlayerItem, RatedSeatItem> what;
     OnWritten on_written; // appends only; may be empty
     bool told = false;    // on_written has been called
+};
+
+// An item a backend left out of its transaction because it would fail every time (an append to
+// a match never created, a seq written twice, text the database cannot hold).
+struct WriteRefusal {
+    std::size_t index = 0; // in the batch
+    std::string reason;    // the database's message
 };
 
 } // namespace carrom::store

@@ -1,11 +1,13 @@
-// The SQLite store when writing fails: entries stay in memory, in order, and are retried; the
-// store says it is degraded and counts each failed attempt; callers are told once and never
-// wait; when the fault clears everything is written exactly once. Failures are injected through
-// the store's test seam (fail_writes), which rolls each transaction back before its COMMIT as a
-// real write error would. And a crash of the process (SIGKILL) loses no entry the store said
-// was written.
+// The store, on each backend, when writing fails: entries stay in memory, in order, and are
+// retried; the store says it is degraded and counts each failed attempt; callers are told once and
+// never wait; when the fault clears everything is written exactly once. Failures are injected
+// through the store's test seam (fail_writes), which rolls each transaction back before its COMMIT
+// as a real write error would; on PostgreSQL also by stopping the database server mid-run. And a
+// crash of the process (SIGKILL) loses no entry the store said was written.
 
 #include "store_support.hpp"
+
+#include "store/postgres_match_store.hpp"
 
 #include <signal.h>
 #include <sys/wait.h>
@@ -18,8 +20,10 @@
 namespace carrom::store {
 namespace {
 
+using StoreFailure = test::StoreTest;
+CARROM_STORE_BACKENDS(StoreFailure);
+
 using namespace std::chrono_literals;
-using test::TempDir;
 
 // Polls cond every millisecond for at most 10 s.
 template <class F> bool eventually(F cond) {
@@ -34,8 +38,8 @@ template <class F> bool eventually(F cond) {
 
 struct Faulty {
     std::shared_ptr<std::atomic<bool>> failing = std::make_shared<std::atomic<bool>>(true);
-    SqliteStoreOptions options() const {
-        SqliteStoreOptions o = test::fast_options();
+    StoreOptions options() const {
+        StoreOptions o = test::fast_options();
         o.fail_writes = [f = failing] { return f->load(); };
         return o;
     }
@@ -47,10 +51,9 @@ proto::MatchJournal journal_of(const std::string& id, std::uint64_t seed) {
     return journal;
 }
 
-TEST(SqliteStoreFailure, FailedWritesWaitInMemoryAndLandOnceTheFaultClears) {
-    TempDir dir;
+TEST_P(StoreFailure, FailedWritesWaitInMemoryAndLandOnceTheFaultClears) {
     Faulty fault;
-    auto store = test::open_store(dir.file("carrom.db"), fault.options());
+    auto store = open(fault.options());
     const proto::MatchJournal journal = journal_of("m", 1);
     store->create(journal.created);
     std::vector<std::atomic<int>> told(journal.entries.size());
@@ -87,10 +90,9 @@ TEST(SqliteStoreFailure, FailedWritesWaitInMemoryAndLandOnceTheFaultClears) {
     }
 }
 
-TEST(SqliteStoreFailure, EntriesQueuedDuringAnOutageFollowTheFailedOnes) {
-    TempDir dir;
+TEST_P(StoreFailure, EntriesQueuedDuringAnOutageFollowTheFailedOnes) {
     Faulty fault;
-    auto store = test::open_store(dir.file("carrom.db"), fault.options());
+    auto store = open(fault.options());
     const proto::MatchJournal journal = journal_of("m", 2);
     const std::size_t half = journal.entries.size() / 2;
     store->create(journal.created);
@@ -108,12 +110,11 @@ TEST(SqliteStoreFailure, EntriesQueuedDuringAnOutageFollowTheFailedOnes) {
     EXPECT_EQ(*store->journal("m").value, journal);
 }
 
-TEST(SqliteStoreFailure, ItemsBeyondTheMemoryBoundAreDroppedAndCounted) {
-    TempDir dir;
+TEST_P(StoreFailure, ItemsBeyondTheMemoryBoundAreDroppedAndCounted) {
     Faulty fault;
-    SqliteStoreOptions options = fault.options();
+    StoreOptions options = fault.options();
     options.max_pending = 5;
-    auto store = test::open_store(dir.file("carrom.db"), options);
+    auto store = open(options);
     const proto::MatchJournal journal = journal_of("m", 3);
     store->create(journal.created);
     std::atomic<int> refused{0};
@@ -135,37 +136,34 @@ TEST(SqliteStoreFailure, ItemsBeyondTheMemoryBoundAreDroppedAndCounted) {
     EXPECT_EQ(store->journal("m").value->entries.size(), 4U);
 }
 
-TEST(SqliteStoreFailure, ClosingWhileWritesFailGivesUpAfterTheCloseTimeout) {
-    TempDir dir;
-    const std::string path = dir.file("carrom.db");
+TEST_P(StoreFailure, ClosingWhileWritesFailGivesUpAfterTheCloseTimeout) {
     Faulty fault;
-    SqliteStoreOptions options = fault.options();
+    StoreOptions options = fault.options();
     options.close_timeout = 100ms;
     {
-        auto store = test::open_store(path, options);
+        auto store = open(options);
         store->create(journal_of("m", 4).created);
         ASSERT_TRUE(eventually([&] { return store->health().degraded; }));
         const auto start = std::chrono::steady_clock::now();
         store.reset();
         EXPECT_LT(std::chrono::steady_clock::now() - start, 5s);
     }
-    auto store = test::open_store(path);
+    auto store = open();
     EXPECT_FALSE(store->journal("m").value.has_value());
 }
 
 // A child process appends entries in bursts and reports each one the store says is written; the
 // parent kills it with SIGKILL in the middle, then finds every reported entry in the file.
-TEST(SqliteStoreFailure, AKilledProcessLosesNoEntryItWasToldWasWritten) {
-    TempDir dir;
-    const std::string path = dir.file("carrom.db");
+TEST_P(StoreFailure, AKilledProcessLosesNoEntryItWasToldWasWritten) {
     const proto::MatchJournal journal = journal_of("m", 5);
+    const std::string where = location(); // before the fork: the child writes there
     int fds[2];
     ASSERT_EQ(::pipe(fds), 0);
     const pid_t child = ::fork();
     ASSERT_GE(child, 0);
     if (child == 0) {
         ::close(fds[0]);
-        auto opened = SqliteMatchStore::open(path, test::fast_options());
+        auto opened = open_match_store(where, test::fast_options());
         if (opened.error) {
             ::_exit(3);
         }
@@ -200,12 +198,60 @@ TEST(SqliteStoreFailure, AKilledProcessLosesNoEntryItWasToldWasWritten) {
     ASSERT_TRUE(WIFSIGNALED(status)) << "the child ended by itself: " << status;
     ASSERT_GE(told, 500);
 
-    auto store = test::open_store(path); // validates the file (quick_check) first
+    auto store = open(); // validates the file (quick_check) first
     ASSERT_NE(store, nullptr);
     const auto loaded = store->journal("m");
     ASSERT_TRUE(loaded.ok()) << loaded.error->message;
     ASSERT_TRUE(loaded.value.has_value());
     EXPECT_GT(static_cast<std::int64_t>(loaded.value->entries.size()), told);
+}
+
+// The PostgreSQL server stopped in the middle of a match and started again: the appends made
+// meanwhile wait in memory (the store degraded, reads failing with store_cannot_connect), then
+// land once each, in order, after the ones written before; each caller is told once.
+TEST(PostgresStoreFailure, AServerStoppedMidMatchLosesAndDoublesNothing) {
+    auto& server = test::postgres_server();
+    auto opened =
+        PostgresMatchStore::open(server.url(server.create_database()), test::fast_options());
+    ASSERT_NE(opened.store, nullptr) << opened.error->message;
+    PostgresMatchStore& store = *opened.store;
+    const proto::MatchJournal journal = journal_of("m", 6);
+    const std::size_t half = journal.entries.size() / 2;
+    std::vector<std::atomic<int>> told(journal.entries.size());
+    const auto append = [&](std::size_t i) {
+        store.append("m", static_cast<std::int64_t>(i), journal.entries[i],
+                     [&told, i](bool) { told[i].fetch_add(1); });
+    };
+    store.create(journal.created);
+    for (std::size_t i = 0; i < half; ++i) {
+        append(i);
+    }
+    ASSERT_TRUE(store.flush(test::kFlush));
+
+    ASSERT_TRUE(server.stop());
+    for (std::size_t i = half; i < journal.entries.size(); ++i) {
+        append(i);
+    }
+    ASSERT_TRUE(eventually([&] { return store.health().errors_total >= 3; }));
+    EXPECT_TRUE(store.health().degraded);
+    EXPECT_EQ(store.health().pending, journal.entries.size() - half);
+    EXPECT_FALSE(store.flush(50ms));
+    const auto unreadable = store.journal("m");
+    ASSERT_TRUE(unreadable.error.has_value());
+    EXPECT_EQ(unreadable.error->code, "store_cannot_connect") << unreadable.error->message;
+
+    ASSERT_TRUE(server.start());
+    ASSERT_TRUE(store.flush(test::kFlush));
+    const StoreHealth health = store.health();
+    EXPECT_FALSE(health.degraded);
+    EXPECT_EQ(health.dropped_total, 0U);
+    EXPECT_EQ(health.written_total, journal.entries.size() + 1);
+    const auto loaded = store.journal("m"); // the reader connects again too
+    ASSERT_TRUE(loaded.ok()) << loaded.error->message;
+    EXPECT_EQ(*loaded.value, journal);
+    for (const auto& t : told) {
+        EXPECT_EQ(t.load(), 1);
+    }
 }
 
 } // namespace

@@ -1,5 +1,6 @@
-// Identified players and ratings in the SQLite store: the update is written with the result, once
-// per match and player, also after a reopen; unrated matches change nothing; the leaderboard.
+// Identified players and ratings in the store, on each backend: the update is written with the
+// result, once per match and player, also after a reopen; unrated matches change nothing; the
+// leaderboard.
 #include "carrom/ratings/glicko2.hpp"
 #include "store/rating_update.hpp"
 #include "store/store_support.hpp"
@@ -40,6 +41,9 @@ void rated_match(MatchStore& store, const std::string& id, const IdentifiedPlaye
     store.append(id, 0, game_end_entry(loser, time_ms));
 }
 
+using StoreRatings = StoreTest;
+CARROM_STORE_BACKENDS(StoreRatings);
+
 PlayerRating only_rating(MatchStore& store, const IdentifiedPlayer& player) {
     auto loaded = store.player_ratings(player.key_hash);
     EXPECT_TRUE(loaded.ok());
@@ -47,9 +51,8 @@ PlayerRating only_rating(MatchStore& store, const IdentifiedPlayer& player) {
     return loaded.value.empty() ? PlayerRating{} : loaded.value[0];
 }
 
-TEST(SqliteStoreRatings, PlayersAreKeptByKeyHashWithTheirLatestName) {
-    TempDir dir;
-    auto store = open_store(dir.file("carrom.db"));
+TEST_P(StoreRatings, PlayersAreKeptByKeyHashWithTheirLatestName) {
+    auto store = open();
     IdentifiedPlayer ann = player_named("Ann");
     store->save_player(ann);
     ann.name = "Annie";
@@ -63,9 +66,8 @@ TEST(SqliteStoreRatings, PlayersAreKeptByKeyHashWithTheirLatestName) {
     EXPECT_TRUE(std::find(players.value.begin(), players.value.end(), ann) != players.value.end());
 }
 
-TEST(SqliteStoreRatings, TwoKeysCannotHoldOneNameKey) {
-    TempDir dir;
-    auto store = open_store(dir.file("carrom.db"));
+TEST_P(StoreRatings, TwoKeysCannotHoldOneNameKey) {
+    auto store = open();
     store->save_player(player_named("Ann"));
     IdentifiedPlayer impostor = player_named("Other");
     impostor.name_key = "Ann";
@@ -75,9 +77,8 @@ TEST(SqliteStoreRatings, TwoKeysCannotHoldOneNameKey) {
     EXPECT_EQ(store->load_players().value.size(), 1U);
 }
 
-TEST(SqliteStoreRatings, ARatedResultUpdatesBothPlayersAsGlicko2Says) {
-    TempDir dir;
-    auto store = open_store(dir.file("carrom.db"));
+TEST_P(StoreRatings, ARatedResultUpdatesBothPlayersAsGlicko2Says) {
+    auto store = open();
     const IdentifiedPlayer ann = player_named("Ann");
     const IdentifiedPlayer bea = player_named("Bea");
     store->save_player(ann);
@@ -99,13 +100,12 @@ TEST(SqliteStoreRatings, ARatedResultUpdatesBothPlayersAsGlicko2Says) {
     EXPECT_EQ(b.last_game_ms, 5000);
 }
 
-TEST(SqliteStoreRatings, AResultIsAppliedOnceAlsoWhenItsEndComesAgainAfterAReopen) {
-    TempDir dir;
+TEST_P(StoreRatings, AResultIsAppliedOnceAlsoWhenItsEndComesAgainAfterAReopen) {
     const IdentifiedPlayer ann = player_named("Ann");
     const IdentifiedPlayer bea = player_named("Bea");
     PlayerRating after_first;
     {
-        auto store = open_store(dir.file("carrom.db"));
+        auto store = open();
         store->save_player(ann);
         store->save_player(bea);
         rated_match(*store, "m1", ann, bea, 1);
@@ -115,16 +115,15 @@ TEST(SqliteStoreRatings, AResultIsAppliedOnceAlsoWhenItsEndComesAgainAfterAReope
         EXPECT_EQ(after_first.games, 1);
         EXPECT_EQ(after_first.wins, 1);
     }
-    auto store = open_store(dir.file("carrom.db"));
+    auto store = open();
     EXPECT_EQ(only_rating(*store, ann), after_first);
     store->append("m1", 2, game_end_entry(0, 7000));
     ASSERT_TRUE(store->flush(kFlush));
     EXPECT_EQ(only_rating(*store, ann), after_first);
 }
 
-TEST(SqliteStoreRatings, MatchesWithoutTwoDifferentRatedPlayersChangeNoRating) {
-    TempDir dir;
-    auto store = open_store(dir.file("carrom.db"));
+TEST_P(StoreRatings, MatchesWithoutTwoDifferentRatedPlayersChangeNoRating) {
+    auto store = open();
     const IdentifiedPlayer ann = player_named("Ann");
     const IdentifiedPlayer bea = player_named("Bea");
     store->save_player(ann);
@@ -140,9 +139,8 @@ TEST(SqliteStoreRatings, MatchesWithoutTwoDifferentRatedPlayersChangeNoRating) {
     EXPECT_TRUE(store->player_ratings(bea.key_hash).value.empty());
 }
 
-TEST(SqliteStoreRatings, AMatchCutOffAndNeverFinishedIsNotRated) {
-    TempDir dir;
-    auto store = open_store(dir.file("carrom.db"));
+TEST_P(StoreRatings, AMatchCutOffAndNeverFinishedIsNotRated) {
+    auto store = open();
     const IdentifiedPlayer ann = player_named("Ann");
     const IdentifiedPlayer bea = player_named("Bea");
     store->save_player(ann);
@@ -155,9 +153,8 @@ TEST(SqliteStoreRatings, AMatchCutOffAndNeverFinishedIsNotRated) {
     EXPECT_TRUE(store->player_ratings(ann.key_hash).value.empty());
 }
 
-TEST(SqliteStoreRatings, DaysAwayAgeBothRatingsBeforeTheNextGame) {
-    TempDir dir;
-    auto store = open_store(dir.file("carrom.db"));
+TEST_P(StoreRatings, DaysAwayAgeBothRatingsBeforeTheNextGame) {
+    auto store = open();
     const IdentifiedPlayer ann = player_named("Ann");
     const IdentifiedPlayer bea = player_named("Bea");
     store->save_player(ann);
@@ -177,9 +174,8 @@ TEST(SqliteStoreRatings, DaysAwayAgeBothRatingsBeforeTheNextGame) {
     EXPECT_EQ(only_rating(*store, ann).games, 2);
 }
 
-TEST(SqliteStoreRatings, LeaderboardListsEstablishedRatingsBestFirst) {
-    TempDir dir;
-    auto store = open_store(dir.file("carrom.db"));
+TEST_P(StoreRatings, LeaderboardListsEstablishedRatingsBestFirst) {
+    auto store = open();
     const std::array<IdentifiedPlayer, 4> p{player_named("Ann"), player_named("Bea"),
                                             player_named("Cy"), player_named("Dev")};
     for (const auto& player : p) {

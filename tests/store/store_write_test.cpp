@@ -1,4 +1,5 @@
-// Writing to and reading from the SQLite store, against real files: journals come back exactly
+// Writing to and reading from the store, on each backend (an SQLite file, a PostgreSQL
+// database): journals come back exactly
 // (and replay), after a reopen too; unfinished matches are listed for recovery with their seat
 // token hashes; a game's end finishes its match; players' match lists; items the database refuses
 // are dropped and counted; concurrent appends from several threads all land, in order.
@@ -14,7 +15,8 @@
 namespace carrom::store {
 namespace {
 
-using test::TempDir;
+using StoreWrite = test::StoreTest;
+CARROM_STORE_BACKENDS(StoreWrite);
 
 proto::MatchJournal game_journal(const std::string& id, std::uint64_t seed,
                                  rules::RuleSet rule_set = rules::RuleSet::Icf) {
@@ -29,9 +31,8 @@ proto::MatchJournal running(proto::MatchJournal journal, std::size_t count) {
     return journal;
 }
 
-TEST(SqliteStoreWrite, AJournalComesBackExactlyAndReplays) {
-    TempDir dir;
-    auto store = test::open_store(dir.file("carrom.db"));
+TEST_P(StoreWrite, AJournalComesBackExactlyAndReplays) {
+    auto store = open();
     const proto::MatchJournal journal = game_journal("m1", 3);
     test::store_journal(*store, journal);
     ASSERT_TRUE(store->flush(test::kFlush));
@@ -43,25 +44,22 @@ TEST(SqliteStoreWrite, AJournalComesBackExactlyAndReplays) {
     EXPECT_FALSE(store->journal("nope").value.has_value());
 }
 
-TEST(SqliteStoreWrite, JournalsSurviveAReopen) {
-    TempDir dir;
-    const std::string path = dir.file("carrom.db");
+TEST_P(StoreWrite, JournalsSurviveAReopen) {
     const proto::MatchJournal a = game_journal("a", 1, rules::RuleSet::Freestyle);
     const proto::MatchJournal b = game_journal("b", 2, rules::RuleSet::DiscPool);
     {
-        auto store = test::open_store(path);
+        auto store = open();
         test::store_journal(*store, a);
         test::store_journal(*store, b);
         // No flush: closing writes what is queued.
     }
-    auto store = test::open_store(path);
+    auto store = open();
     EXPECT_EQ(*store->journal("a").value, a);
     EXPECT_EQ(*store->journal("b").value, b);
 }
 
-TEST(SqliteStoreWrite, EveryAppendIsToldOnceThatItIsWritten) {
-    TempDir dir;
-    auto store = test::open_store(dir.file("carrom.db"));
+TEST_P(StoreWrite, EveryAppendIsToldOnceThatItIsWritten) {
+    auto store = open();
     const proto::MatchJournal journal = game_journal("m1", 5);
     store->create(journal.created);
     std::vector<std::atomic<int>> told(journal.entries.size());
@@ -85,11 +83,9 @@ TEST(SqliteStoreWrite, EveryAppendIsToldOnceThatItIsWritten) {
     EXPECT_EQ(health.written_total, journal.entries.size() + 1);
 }
 
-TEST(SqliteStoreWrite, UnfinishedMatchesAreListedForRecoveryOldestFirst) {
-    TempDir dir;
-    const std::string path = dir.file("carrom.db");
+TEST_P(StoreWrite, UnfinishedMatchesAreListedForRecoveryOldestFirst) {
     {
-        auto store = test::open_store(path);
+        auto store = open();
         proto::MatchJournal finished = game_journal("done", 1); // ends with a game_end outcome
         proto::MatchJournal older = running(game_journal("older", 2), 6);
         proto::MatchJournal newer = running(game_journal("newer", 3), 9);
@@ -103,7 +99,7 @@ TEST(SqliteStoreWrite, UnfinishedMatchesAreListedForRecoveryOldestFirst) {
         store->mark_finished("gone", 5000);
         ASSERT_TRUE(store->flush(test::kFlush));
     }
-    auto store = test::open_store(path);
+    auto store = open();
     const auto loaded = store->load_unfinished();
     ASSERT_TRUE(loaded.ok()) << loaded.error->message;
     ASSERT_EQ(loaded.value.size(), 2U);
@@ -117,14 +113,12 @@ TEST(SqliteStoreWrite, UnfinishedMatchesAreListedForRecoveryOldestFirst) {
     EXPECT_TRUE(proto::replay(*loaded.value[1].journal).ok());
 }
 
-TEST(SqliteStoreWrite, SeatTokenHashesAreStoredReplacedAndCleared) {
-    TempDir dir;
-    const std::string path = dir.file("carrom.db");
+TEST_P(StoreWrite, SeatTokenHashesAreStoredReplacedAndCleared) {
     const TokenHash ann = hash_token("0123456789abcdef0123456789abcdef");
     const TokenHash bea = hash_token("fedcba9876543210fedcba9876543210");
     const TokenHash bea2 = hash_token("00000000000000000000000000000000");
     {
-        auto store = test::open_store(path);
+        auto store = open();
         test::store_journal(*store, running(game_journal("m", 1), 3));
         store->set_seat_token("m", 0, ann);
         store->set_seat_token("m", 1, bea);
@@ -132,7 +126,7 @@ TEST(SqliteStoreWrite, SeatTokenHashesAreStoredReplacedAndCleared) {
         ASSERT_TRUE(store->flush(test::kFlush));
     }
     {
-        auto store = test::open_store(path);
+        auto store = open();
         const auto loaded = store->load_unfinished();
         ASSERT_EQ(loaded.value.size(), 1U);
         ASSERT_EQ(loaded.value[0].seat_tokens.size(), 2U);
@@ -140,32 +134,41 @@ TEST(SqliteStoreWrite, SeatTokenHashesAreStoredReplacedAndCleared) {
         EXPECT_EQ(loaded.value[0].seat_tokens[1], bea2);
         store->set_seat_token("m", 0, std::nullopt);
     }
-    auto store = test::open_store(path);
+    auto store = open();
     const auto loaded = store->load_unfinished();
     EXPECT_FALSE(loaded.value[0].seat_tokens[0].has_value());
     EXPECT_EQ(loaded.value[0].seat_tokens[1], bea2);
 }
 
-// The file holds hashes only: no token appears anywhere in it.
-TEST(SqliteStoreWrite, TheDatabaseNeverHoldsATokenInClear) {
-    TempDir dir;
-    const std::string path = dir.file("carrom.db");
+// The database holds hashes only: no token appears anywhere in it (the SQLite file's bytes; a
+// pg_dump of the PostgreSQL database, where bytea is hex).
+TEST_P(StoreWrite, TheDatabaseNeverHoldsATokenInClear) {
     const std::string token = "c0ffee00c0ffee00c0ffee00c0ffee00";
     {
-        auto store = test::open_store(path);
+        auto store = open();
         test::store_journal(*store, running(game_journal("m", 1), 3));
         store->set_seat_token("m", 0, hash_token(token));
     }
-    const std::string bytes = test::read_bytes(path);
-    EXPECT_EQ(bytes.find(token), std::string::npos);
     const TokenHash hash = hash_token(token);
-    const std::string raw(reinterpret_cast<const char*>(hash.data()), hash.size());
-    EXPECT_NE(bytes.find(raw), std::string::npos);
+    const std::string bytes = snapshot();
+    std::string stored_hash(reinterpret_cast<const char*>(hash.data()), hash.size());
+    if (postgres()) {
+        stored_hash = to_hex(hash);
+        std::string token_hex;
+        for (const char c : token) {
+            static constexpr char kDigits[] = "0123456789abcdef";
+            const auto byte = static_cast<unsigned char>(c);
+            token_hex += kDigits[byte >> 4];
+            token_hex += kDigits[byte & 15];
+        }
+        EXPECT_EQ(bytes.find(token_hex), std::string::npos);
+    }
+    EXPECT_EQ(bytes.find(token), std::string::npos);
+    EXPECT_NE(bytes.find(stored_hash), std::string::npos);
 }
 
-TEST(SqliteStoreWrite, PlayersMatchListsAreNewestFirstWithResults) {
-    TempDir dir;
-    auto store = test::open_store(dir.file("carrom.db"));
+TEST_P(StoreWrite, PlayersMatchListsAreNewestFirstWithResults) {
+    auto store = open();
     for (int i = 0; i < 5; ++i) {
         proto::MatchJournal journal =
             game_journal("m" + std::to_string(i), static_cast<std::uint64_t>(i + 1));
@@ -209,9 +212,8 @@ TEST(SqliteStoreWrite, PlayersMatchListsAreNewestFirstWithResults) {
 }
 
 // The result in the list is the game's, as its last outcome recorded it.
-TEST(SqliteStoreWrite, AFinishedMatchListsItsResultAndScores) {
-    TempDir dir;
-    auto store = test::open_store(dir.file("carrom.db"));
+TEST_P(StoreWrite, AFinishedMatchListsItsResultAndScores) {
+    auto store = open();
     const proto::MatchJournal journal = game_journal("m", 8, rules::RuleSet::Freestyle);
     test::store_journal(*store, journal);
     ASSERT_TRUE(store->flush(test::kFlush));
@@ -227,9 +229,8 @@ TEST(SqliteStoreWrite, AFinishedMatchListsItsResultAndScores) {
     EXPECT_EQ(list.value[0].finished_ms, journal.entries.back().time_ms);
 }
 
-TEST(SqliteStoreWrite, AnAppendToAnUnknownMatchIsDroppedAndCounted) {
-    TempDir dir;
-    auto store = test::open_store(dir.file("carrom.db"));
+TEST_P(StoreWrite, AnAppendToAnUnknownMatchIsDroppedAndCounted) {
+    auto store = open();
     std::atomic<int> told_false{0};
     store->append("ghost", 0, proto::JournalEntry{1, proto::SeatLeftEntry{0}},
                   [&](bool written) { told_false += written ? 0 : 1; });
@@ -244,9 +245,8 @@ TEST(SqliteStoreWrite, AnAppendToAnUnknownMatchIsDroppedAndCounted) {
     EXPECT_FALSE(store->journal("ghost").value.has_value());
 }
 
-TEST(SqliteStoreWrite, AnEntryNumberWrittenTwiceIsDroppedAndTheFirstKept) {
-    TempDir dir;
-    auto store = test::open_store(dir.file("carrom.db"));
+TEST_P(StoreWrite, AnEntryNumberWrittenTwiceIsDroppedAndTheFirstKept) {
+    auto store = open();
     test::store_journal(*store, running(game_journal("m", 1), 2));
     store->append("m", 1, proto::JournalEntry{1, proto::SeatLeftEntry{0}});
     EXPECT_TRUE(store->flush(test::kFlush));
@@ -255,9 +255,8 @@ TEST(SqliteStoreWrite, AnEntryNumberWrittenTwiceIsDroppedAndTheFirstKept) {
 }
 
 // A journal missing an entry (as a dropped append leaves it) is reported for that match only.
-TEST(SqliteStoreWrite, AJournalWithAGapIsABadJournalForThatMatchOnly) {
-    TempDir dir;
-    auto store = test::open_store(dir.file("carrom.db"));
+TEST_P(StoreWrite, AJournalWithAGapIsABadJournalForThatMatchOnly) {
+    auto store = open();
     const proto::MatchJournal whole = running(game_journal("whole", 1), 4);
     test::store_journal(*store, whole);
     const proto::MatchJournal gap = running(game_journal("gap", 2), 4);
@@ -283,9 +282,7 @@ TEST(SqliteStoreWrite, AJournalWithAGapIsABadJournalForThatMatchOnly) {
     EXPECT_EQ(store->journal("gap").error->code, "store_bad_journal");
 }
 
-TEST(SqliteStoreWrite, ConcurrentAppendsFromSeveralThreadsAllLandInOrder) {
-    TempDir dir;
-    const std::string path = dir.file("carrom.db");
+TEST_P(StoreWrite, ConcurrentAppendsFromSeveralThreadsAllLandInOrder) {
     constexpr int kThreads = 8;
     std::vector<proto::MatchJournal> journals;
     for (int t = 0; t < kThreads; ++t) {
@@ -295,7 +292,7 @@ TEST(SqliteStoreWrite, ConcurrentAppendsFromSeveralThreadsAllLandInOrder) {
     }
     std::atomic<int> written{0};
     {
-        auto store = test::open_store(path);
+        auto store = open();
         std::vector<std::thread> threads;
         for (int t = 0; t < kThreads; ++t) {
             threads.emplace_back([&, t] {
@@ -314,7 +311,7 @@ TEST(SqliteStoreWrite, ConcurrentAppendsFromSeveralThreadsAllLandInOrder) {
         EXPECT_EQ(store->health().errors_total, 0U);
     }
     std::size_t total = 0;
-    auto store = test::open_store(path);
+    auto store = open();
     for (const proto::MatchJournal& j : journals) {
         EXPECT_EQ(*store->journal(j.created.match_id).value, j);
         total += j.entries.size();

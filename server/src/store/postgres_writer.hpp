@@ -1,0 +1,56 @@
+#pragma once
+// The PostgreSQL store's write connection: writes a batch of queued items in one transaction.
+// Used by one thread only (the store's WriteQueue writer). The connection is made again after it
+// breaks (the database restarted, the network cut), and with it the advisory lock retaken: a
+// writer that cannot retake it (another server took the database meanwhile) writes nothing.
+
+#include <pqxx/connection>
+#include <pqxx/transaction_base>
+
+#include "store/write_item.hpp"
+
+#include <functional>
+#include <memory>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace carrom::store::postgres {
+
+class PostgresWriter {
+public:
+    // shown: the URL for messages (postgres_database.hpp, shown_url). lock: hold the
+    // one-server advisory lock (single-instance mode).
+    PostgresWriter(std::string url, std::string shown, bool lock);
+    ~PostgresWriter();
+    PostgresWriter(const PostgresWriter&) = delete;
+    PostgresWriter& operator=(const PostgresWriter&) = delete;
+
+    // Connects, validates and migrates the database and takes the lock; an error for the
+    // operator (store_locked when another server holds the lock).
+    std::optional<StoreError> open();
+
+    // Writes the items in one transaction, each all or nothing. An item that would fail every
+    // time (a constraint: an append to a match never created, a seq written twice; or text the
+    // database cannot hold) is left out and listed; any other failure (the connection lost, the
+    // lock not retaken, fail_before_commit returning true) rolls the whole transaction back and
+    // throws.
+    std::vector<WriteRefusal> write(std::span<WriteItem> items,
+                                    const std::function<bool()>& fail_before_commit);
+
+private:
+    // A connection ready for writing: made (with the lock and prepared statements) if there is
+    // none. Throws.
+    pqxx::connection& connection();
+    std::vector<WriteRefusal> write_items(std::span<WriteItem> items, bool one_by_one,
+                                          const std::function<bool()>& fail_before_commit);
+    static void write_one(pqxx::transaction_base& t, const WriteItem& item);
+
+    std::string url_;
+    std::string shown_;
+    bool lock_ = true;
+    std::unique_ptr<pqxx::connection> connection_;
+};
+
+} // namespace carrom::store::postgres
