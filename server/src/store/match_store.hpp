@@ -98,7 +98,8 @@ struct StoreHealth {
 
 // Called once per append when the entry's fate is known, on the backend's thread (or within
 // append itself when the entry is dropped at once, the store being full): written=true
-// once it is written (SQLite: committed to the WAL, so it survives a crash of the process);
+// once it is written (SQLite: committed to the WAL, so it survives a crash of the process;
+// PostgreSQL: its COMMIT returned);
 // written=false when the first attempt to write it failed or it was dropped (the backend keeps
 // retrying a failed entry; the caller must not wait for it). Keep it short; never call the store
 // from it.

@@ -1,5 +1,7 @@
 #include "store/postgres_database.hpp"
 
+#include "store/newer_schema_error.hpp"
+
 #include <pqxx/pqxx>
 
 #include <algorithm>
@@ -177,10 +179,7 @@ std::optional<StoreError> check_contents(const Contents& c, const std::string& s
                               ")");
     }
     if (c.version > kSchemaVersion) {
-        return make_error(store_code::kNewerSchema,
-                          shown + " was written by a newer carrom-server (schema version " +
-                              std::to_string(c.version) + "; this one knows up to " +
-                              std::to_string(kSchemaVersion) + ")");
+        return newer_schema_error(shown, c.version, kSchemaVersion);
     }
     return std::nullopt;
 }
@@ -196,9 +195,7 @@ std::optional<StoreError> migrate(pqxx::connection& c, const std::string& shown)
         from = t.exec("SELECT version FROM carrom_schema")[0][0].as<int>();
     }
     if (from > kSchemaVersion) { // written by a newer server since the check
-        return make_error(store_code::kNewerSchema,
-                          shown + " was written by a newer carrom-server (schema version " +
-                              std::to_string(from) + ")");
+        return newer_schema_error(shown, from, kSchemaVersion);
     }
     for (int version = from + 1; version <= kSchemaVersion; ++version) {
         t.exec(kMigrations[version - 1]);

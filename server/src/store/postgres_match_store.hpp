@@ -2,15 +2,15 @@
 // The networked MatchStore: a PostgreSQL database (docs/store.md, "The PostgreSQL backend"),
 // opened by URL (postgresql://USER@HOST[:PORT]/DB, postgres://..., or with ?host=/socket/dir).
 //
-// Threads: callers only queue; the WriteQueue's writer thread (write_queue.hpp) writes up to
-// max_batch items at a time in one transaction on its own connection (PostgresWriter); reads run
-// on the calling thread on a second connection (PostgresReader). No libpq call runs on a
+// Threads: callers only queue; the StoreWriteQueue's writer thread (store_write_queue.hpp) writes
+// up to max_batch items at a time in one transaction on its own connection (PostgresWriter); reads
+// run on the calling thread on a second connection (PostgresReader). No libpq call runs on a
 // caller's thread except the reads, which may block (the server calls them off its I/O threads).
 //
 // Durability: an append's on_written(true) runs after its transaction's COMMIT returned, so the
 // entry is as durable as the server's synchronous_commit makes it (on: flushed to its WAL).
 //
-// Failures (the server down or restarting, the network cut, the test seam): as WriteQueue
+// Failures (the server down or restarting, the network cut, the test seam): as StoreWriteQueue
 // describes; items held in memory, in order, retried with backoff, the store degraded meanwhile.
 // Each retry connects again if the connection broke. A COMMIT whose outcome is unknown (the
 // connection broke during it) is retried too: whatever of it was written is then refused as

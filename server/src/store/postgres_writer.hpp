@@ -1,7 +1,7 @@
 #pragma once
 // The PostgreSQL store's write connection: writes a batch of queued items in one transaction.
-// Used by one thread only (the store's WriteQueue writer). The connection is made again after it
-// breaks (the database restarted, the network cut), and with it the advisory lock retaken: a
+// Used by one thread only (the store's StoreWriteQueue writer). The connection is made again after
+// it breaks (the database restarted, the network cut), and with it the advisory lock retaken: a
 // writer that cannot retake it (another server took the database meanwhile) writes nothing.
 
 #include <pqxx/connection>

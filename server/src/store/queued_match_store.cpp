@@ -3,10 +3,10 @@
 namespace carrom::store {
 
 void QueuedMatchStore::start_writing(std::string name, const StoreOptions& options,
-                                     WriteQueue::WriteBatch write_batch,
+                                     StoreWriteQueue::WriteBatch write_batch,
                                      std::function<void()> after_commit) {
-    queue_ = std::make_unique<WriteQueue>(std::move(name), options, std::move(write_batch),
-                                          std::move(after_commit));
+    queue_ = std::make_unique<StoreWriteQueue>(std::move(name), options, std::move(write_batch),
+                                               std::move(after_commit));
     queue_->start();
 }
 

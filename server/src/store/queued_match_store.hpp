@@ -1,12 +1,13 @@
 #pragma once
 // The MatchStore writes every backend shares: create, append, set_seat_token, mark_finished,
-// save_player and set_rated_seat queue a WriteItem on a WriteQueue (write_queue.hpp) and return;
-// flush and health are the queue's. A backend derives from it, implements the reads, and gives
-// start_writing the function that writes one batch in one transaction on the queue's writer thread.
+// save_player and set_rated_seat queue a WriteItem on a StoreWriteQueue (store_write_queue.hpp)
+// and return; flush and health are the queue's. A backend derives from it, implements the reads,
+// and gives start_writing the function that writes one batch in one transaction on the queue's
+// writer thread.
 
 #include "store/match_store.hpp"
 #include "store/store_options.hpp"
-#include "store/write_queue.hpp"
+#include "store/store_write_queue.hpp"
 
 #include <memory>
 #include <string>
@@ -30,7 +31,8 @@ protected:
     explicit QueuedMatchStore(std::string_view backend) : backend_(backend) {}
     // Starts the writer thread. Call once, when write_batch's connection is ready.
     void start_writing(std::string name, const StoreOptions& options,
-                       WriteQueue::WriteBatch write_batch, std::function<void()> after_commit = {});
+                       StoreWriteQueue::WriteBatch write_batch,
+                       std::function<void()> after_commit = {});
     // Writes what is queued (up to close_timeout) and joins the writer: a derived class calls it
     // first in its destructor, before the connection write_batch uses goes.
     void stop_writing();
@@ -39,7 +41,7 @@ protected:
 
 private:
     std::string backend_;
-    std::unique_ptr<WriteQueue> queue_;
+    std::unique_ptr<StoreWriteQueue> queue_;
 };
 
 } // namespace carrom::store

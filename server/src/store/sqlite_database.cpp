@@ -1,5 +1,7 @@
 #include "store/sqlite_database.hpp"
 
+#include "store/newer_schema_error.hpp"
+
 #include <SQLiteCpp/Statement.h>
 #include <SQLiteCpp/Transaction.h>
 #include <sqlite3.h>
@@ -132,10 +134,7 @@ std::optional<StoreError> check_contents(const std::string& path, const Contents
                                  "not the carrom application_id)");
     }
     if (c.user_version > kSchemaVersion) {
-        return make_error(store_code::kNewerSchema,
-                          path + " was written by a newer carrom-server (schema version " +
-                              std::to_string(c.user_version) + "; this one knows up to " +
-                              std::to_string(kSchemaVersion) + ")");
+        return newer_schema_error(path, c.user_version, kSchemaVersion);
     }
     return std::nullopt;
 }
@@ -169,9 +168,7 @@ std::optional<StoreError> migrate(SQLite::Database& db, const std::string& path)
     SQLite::Transaction transaction(db, SQLite::TransactionBehavior::IMMEDIATE);
     const int from = db.execAndGet("PRAGMA user_version").getInt();
     if (from > kSchemaVersion) { // written by a newer server between validation and the lock
-        return make_error(store_code::kNewerSchema,
-                          path + " was written by a newer carrom-server (schema version " +
-                              std::to_string(from) + ")");
+        return newer_schema_error(path, from, kSchemaVersion);
     }
     for (int version = from + 1; version <= kSchemaVersion; ++version) {
         db.exec(kMigrations[version - 1]);

@@ -1,7 +1,7 @@
 #pragma once
 // The embedded MatchStore: one SQLite file in WAL mode (docs/store.md).
 //
-// Threads: callers only queue; a writer thread (WriteQueue, write_queue.hpp) takes up to
+// Threads: callers only queue; a writer thread (StoreWriteQueue, store_write_queue.hpp) takes up to
 // max_batch items at a time and writes them in one transaction (SqliteWriter); a checkpointer
 // thread copies the WAL into the database every checkpoint_interval on a connection of its own,
 // so a commit never waits for an fsync. Reads use a third connection (SqliteReader).
@@ -12,8 +12,8 @@
 // checkpoint (at most about checkpoint_interval plus the checkpoint's own time), and the file
 // stays consistent.
 //
-// Failures (disk full, I/O error, the test seam): as WriteQueue describes; items held in memory,
-// in order, retried with backoff, the store degraded meanwhile.
+// Failures (disk full, I/O error, the test seam): as StoreWriteQueue describes; items held in
+// memory, in order, retried with backoff, the store degraded meanwhile.
 
 #include "store/file_lock.hpp"
 #include "store/match_store.hpp"

@@ -1,5 +1,5 @@
 #pragma once
-// How a MatchStore backend queues, batches and retries its writes (write_queue.hpp), and the
+// How a MatchStore backend queues, batches and retries its writes (store_write_queue.hpp), and the
 // test seams every backend has. Durations are wall-clock time on a steady clock.
 
 #include <chrono>

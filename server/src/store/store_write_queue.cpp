@@ -1,4 +1,4 @@
-#include "store/write_queue.hpp"
+#include "store/store_write_queue.hpp"
 
 #include <spdlog/spdlog.h>
 
@@ -9,22 +9,22 @@ namespace carrom::store {
 
 using Clock = std::chrono::steady_clock;
 
-WriteQueue::WriteQueue(std::string name, const StoreOptions& options, WriteBatch write_batch,
-                       std::function<void()> after_commit)
+StoreWriteQueue::StoreWriteQueue(std::string name, const StoreOptions& options,
+                                 WriteBatch write_batch, std::function<void()> after_commit)
     : name_(std::move(name)), options_(options), write_batch_(std::move(write_batch)),
       after_commit_(std::move(after_commit)) {
     options_.max_batch = std::max<std::size_t>(options_.max_batch, 1);
 }
 
-WriteQueue::~WriteQueue() {
+StoreWriteQueue::~StoreWriteQueue() {
     stop();
 }
 
-void WriteQueue::start() {
+void StoreWriteQueue::start() {
     writer_ = std::thread([this] { writer_loop(); });
 }
 
-void WriteQueue::stop() {
+void StoreWriteQueue::stop() {
     {
         const std::lock_guard lock(mutex_);
         if (!stopping_) {
@@ -38,7 +38,7 @@ void WriteQueue::stop() {
     }
 }
 
-void WriteQueue::enqueue(WriteItem item) {
+void StoreWriteQueue::enqueue(WriteItem item) {
     {
         const std::lock_guard lock(mutex_);
         if (queue_.size() + in_flight_ < options_.max_pending && !stopping_) {
@@ -59,13 +59,13 @@ void WriteQueue::enqueue(WriteItem item) {
     }
 }
 
-bool WriteQueue::flush(std::chrono::milliseconds timeout) {
+bool StoreWriteQueue::flush(std::chrono::milliseconds timeout) {
     std::unique_lock lock(mutex_);
     const std::uint64_t target = queued_total_;
     return done_cv_.wait_for(lock, timeout, [&] { return done_total_ >= target; });
 }
 
-void WriteQueue::writer_loop() {
+void StoreWriteQueue::writer_loop() {
     std::deque<WriteItem> batch; // taken from the queue; failed items stay here, in order
     auto backoff = options_.retry_initial;
     for (;;) {
@@ -107,7 +107,7 @@ void WriteQueue::writer_loop() {
     }
 }
 
-bool WriteQueue::write(std::deque<WriteItem>& batch) {
+bool StoreWriteQueue::write(std::deque<WriteItem>& batch) {
     std::vector<WriteItem> items(std::make_move_iterator(batch.begin()),
                                  std::make_move_iterator(batch.end()));
     batch.clear();
@@ -176,7 +176,7 @@ bool WriteQueue::write(std::deque<WriteItem>& batch) {
     return true;
 }
 
-void WriteQueue::report_failure(const std::string& error, std::size_t waiting) {
+void StoreWriteQueue::report_failure(const std::string& error, std::size_t waiting) {
     ++failures_in_outage_;
     ++failures_since_log_;
     const auto now = Clock::now();
@@ -190,7 +190,7 @@ void WriteQueue::report_failure(const std::string& error, std::size_t waiting) {
     failures_since_log_ = 0;
 }
 
-StoreHealth WriteQueue::health() const {
+StoreHealth StoreWriteQueue::health() const {
     StoreHealth h;
     h.errors_total = errors_total_.load(std::memory_order_relaxed);
     h.dropped_total = dropped_total_.load(std::memory_order_relaxed);

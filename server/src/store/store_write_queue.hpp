@@ -33,19 +33,19 @@
 
 namespace carrom::store {
 
-class WriteQueue {
+class StoreWriteQueue {
 public:
     // Writes the items in one transaction and returns those it left out as invalid; throws (any
     // std::exception) when the transaction failed and nothing was written.
     using WriteBatch = std::function<std::vector<WriteRefusal>(std::span<WriteItem>)>;
 
     // name: how log lines name the store (a path, or a URL without its password).
-    WriteQueue(std::string name, const StoreOptions& options, WriteBatch write_batch,
-               std::function<void()> after_commit = {});
+    StoreWriteQueue(std::string name, const StoreOptions& options, WriteBatch write_batch,
+                    std::function<void()> after_commit = {});
     // stop().
-    ~WriteQueue();
-    WriteQueue(const WriteQueue&) = delete;
-    WriteQueue& operator=(const WriteQueue&) = delete;
+    ~StoreWriteQueue();
+    StoreWriteQueue(const StoreWriteQueue&) = delete;
+    StoreWriteQueue& operator=(const StoreWriteQueue&) = delete;
 
     void start();
     // Writes what is queued (for up to close_timeout; then what is left is dropped and counted)
