@@ -1,9 +1,10 @@
 // Identities and ratings end to end (docs/ratings.md): carrom-server --data as a real process;
 // carrom-bot processes with --identity play a rated match and both ratings change, and survive a
-// restart unchanged; names held by identities; rated rooms' refusals; quick match pairing by
-// rating; the players' API and its bad inputs.
+// restart unchanged (on SQLite and on PostgreSQL); names held by identities; rated rooms' refusals;
+// quick match pairing by rating; the players' API and its bad inputs.
 #include "harness.hpp"
 
+#include "support/postgres_instance.hpp"
 #include "support/server_process.hpp"
 #include "support/temp_dir.hpp"
 
@@ -87,9 +88,10 @@ json get_json(const test_support::ServerProcess& server, const std::string& targ
     return json::parse(answer.body, nullptr, false);
 }
 
-TEST(RatingsProcess, TwoBotProcessesWithIdentitiesPlayARatedMatchAndBothRatingsMove) {
-    RatingsDir dir;
-    auto server = start_rated_server(dir.file("c.db"));
+// Two carrom-bot processes with keys play a rated match through a server on data; both ratings
+// move, and a restart on the same data keeps them and applies nothing again.
+void play_a_rated_match_then_restart(const std::string& data, const RatingsDir& dir) {
+    auto server = start_rated_server(data);
     ASSERT_NE(server->port(), 0) << server->log();
     const std::string bot = CARROM_BOT_PATH;
     const std::string common = " --url " + server->url() +
@@ -157,6 +159,19 @@ TEST(RatingsProcess, TwoBotProcessesWithIdentitiesPlayARatedMatchAndBothRatingsM
     // The name stays Asha's after the restart: another key, or a guest, cannot take it.
     EXPECT_EQ(hello_refusal(server->url(), "ASHA", key_of('5')), "name_taken");
     EXPECT_EQ(hello_refusal(server->url(), "asha", std::nullopt), "name_taken");
+}
+
+TEST(RatingsProcess, TwoBotProcessesWithIdentitiesPlayARatedMatchAndBothRatingsMove) {
+    RatingsDir dir;
+    play_a_rated_match_then_restart(dir.file("c.db"), dir);
+}
+
+// The same on PostgreSQL (--data postgresql://...): the ratings tables, the update with the
+// result, and a restart on the same database.
+TEST(RatingsProcess, OnPostgresqlARatedMatchMovesBothRatingsAndARestartKeepsThem) {
+    RatingsDir dir;
+    test_support::PostgresInstance postgres;
+    play_a_rated_match_then_restart(postgres.url(postgres.create_database()), dir);
 }
 
 TEST(RatingsProcess, NamesKeysAndRatedRoomsAreRefusedWithTheirCodes) {

@@ -32,15 +32,18 @@ std::string query(const std::string& database, const std::string& sql) {
     return ran.out;
 }
 
+// A store opened on the database, match m1 created in it, the store closed.
+void store_one_match(const std::string& database) {
+    auto opened =
+        PostgresMatchStore::open(test::postgres_server().url(database), test::fast_options());
+    ASSERT_NE(opened.store, nullptr) << opened.error->message;
+    opened.store->create(test::created("m1"));
+    ASSERT_TRUE(opened.store->flush(test::kFlush));
+}
+
 TEST(PostgresStoreOpen, ANewDatabaseGetsTheSchemaWithTheReservedClusterColumns) {
-    auto& server = test::postgres_server();
-    const std::string database = server.create_database();
-    {
-        auto opened = PostgresMatchStore::open(server.url(database), test::fast_options());
-        ASSERT_NE(opened.store, nullptr) << opened.error->message;
-        opened.store->create(test::created("m1"));
-        ASSERT_TRUE(opened.store->flush(test::kFlush));
-    }
+    const std::string database = test::postgres_server().create_database();
+    ASSERT_NO_FATAL_FAILURE(store_one_match(database));
     EXPECT_EQ(query(database, "SELECT application, version FROM carrom_schema"),
               "carrom-match-store|2\n");
     EXPECT_EQ(query(database, "SELECT table_name FROM information_schema.tables WHERE "
@@ -52,18 +55,13 @@ TEST(PostgresStoreOpen, ANewDatabaseGetsTheSchemaWithTheReservedClusterColumns) 
 }
 
 TEST(PostgresStoreOpen, ASchemaOneDatabaseGetsTheRatingsTablesAndKeepsItsMatches) {
-    auto& server = test::postgres_server();
-    const std::string database = server.create_database();
-    {
-        auto opened = PostgresMatchStore::open(server.url(database), test::fast_options());
-        ASSERT_NE(opened.store, nullptr) << opened.error->message;
-        opened.store->create(test::created("m1"));
-        ASSERT_TRUE(opened.store->flush(test::kFlush));
-    }
+    const std::string database = test::postgres_server().create_database();
+    ASSERT_NO_FATAL_FAILURE(store_one_match(database));
     // Back to schema 1: without migration 2's tables.
     query(database, "DROP TABLE rating_changes, rated_seats, ratings, identities; "
                     "UPDATE carrom_schema SET version = 1");
-    auto opened = PostgresMatchStore::open(server.url(database), test::fast_options());
+    auto opened =
+        PostgresMatchStore::open(test::postgres_server().url(database), test::fast_options());
     ASSERT_NE(opened.store, nullptr) << opened.error->message;
     EXPECT_EQ(query(database, "SELECT version FROM carrom_schema"), "2\n");
     EXPECT_EQ(query(database, "SELECT count(*) FROM information_schema.tables WHERE "

@@ -41,7 +41,18 @@ void rated_match(MatchStore& store, const std::string& id, const IdentifiedPlaye
     store.append(id, 0, game_end_entry(loser, time_ms));
 }
 
-using StoreRatings = StoreTest;
+// Two identified players, Ann and Bea, on a new store of each backend.
+class StoreRatings : public StoreTest {
+protected:
+    std::unique_ptr<MatchStore> open_with_ann_and_bea() {
+        auto store = open();
+        store->save_player(ann);
+        store->save_player(bea);
+        return store;
+    }
+    const IdentifiedPlayer ann = player_named("Ann");
+    const IdentifiedPlayer bea = player_named("Bea");
+};
 CARROM_STORE_BACKENDS(StoreRatings);
 
 PlayerRating only_rating(MatchStore& store, const IdentifiedPlayer& player) {
@@ -52,18 +63,17 @@ PlayerRating only_rating(MatchStore& store, const IdentifiedPlayer& player) {
 }
 
 TEST_P(StoreRatings, PlayersAreKeptByKeyHashWithTheirLatestName) {
-    auto store = open();
-    IdentifiedPlayer ann = player_named("Ann");
-    store->save_player(ann);
-    ann.name = "Annie";
-    ann.name_key = "annie";
-    store->save_player(ann);
-    store->save_player(player_named("Bea"));
+    auto store = open_with_ann_and_bea();
+    IdentifiedPlayer renamed = ann;
+    renamed.name = "Annie";
+    renamed.name_key = "annie";
+    store->save_player(renamed);
     ASSERT_TRUE(store->flush(kFlush));
     const auto players = store->load_players();
     ASSERT_TRUE(players.ok());
     ASSERT_EQ(players.value.size(), 2U);
-    EXPECT_TRUE(std::find(players.value.begin(), players.value.end(), ann) != players.value.end());
+    EXPECT_TRUE(std::find(players.value.begin(), players.value.end(), renamed) !=
+                players.value.end());
 }
 
 TEST_P(StoreRatings, TwoKeysCannotHoldOneNameKey) {
@@ -78,11 +88,7 @@ TEST_P(StoreRatings, TwoKeysCannotHoldOneNameKey) {
 }
 
 TEST_P(StoreRatings, ARatedResultUpdatesBothPlayersAsGlicko2Says) {
-    auto store = open();
-    const IdentifiedPlayer ann = player_named("Ann");
-    const IdentifiedPlayer bea = player_named("Bea");
-    store->save_player(ann);
-    store->save_player(bea);
+    auto store = open_with_ann_and_bea();
     rated_match(*store, "m1", ann, bea, 0); // Ann forfeits: Bea wins
     ASSERT_TRUE(store->flush(kFlush));
     const PlayerRating a = only_rating(*store, ann);
@@ -101,13 +107,9 @@ TEST_P(StoreRatings, ARatedResultUpdatesBothPlayersAsGlicko2Says) {
 }
 
 TEST_P(StoreRatings, AResultIsAppliedOnceAlsoWhenItsEndComesAgainAfterAReopen) {
-    const IdentifiedPlayer ann = player_named("Ann");
-    const IdentifiedPlayer bea = player_named("Bea");
     PlayerRating after_first;
     {
-        auto store = open();
-        store->save_player(ann);
-        store->save_player(bea);
+        auto store = open_with_ann_and_bea();
         rated_match(*store, "m1", ann, bea, 1);
         store->append("m1", 1, game_end_entry(0, 6000)); // a second end of the same match
         ASSERT_TRUE(store->flush(kFlush));
@@ -123,11 +125,7 @@ TEST_P(StoreRatings, AResultIsAppliedOnceAlsoWhenItsEndComesAgainAfterAReopen) {
 }
 
 TEST_P(StoreRatings, MatchesWithoutTwoDifferentRatedPlayersChangeNoRating) {
-    auto store = open();
-    const IdentifiedPlayer ann = player_named("Ann");
-    const IdentifiedPlayer bea = player_named("Bea");
-    store->save_player(ann);
-    store->save_player(bea);
+    auto store = open_with_ann_and_bea();
     store->create(created("one_seat", "Ann", "Bot (medium)")); // a bot seat is never rated
     store->set_rated_seat("one_seat", 0, ann.key_hash);
     store->append("one_seat", 0, game_end_entry(1, 5000));
@@ -140,11 +138,7 @@ TEST_P(StoreRatings, MatchesWithoutTwoDifferentRatedPlayersChangeNoRating) {
 }
 
 TEST_P(StoreRatings, AMatchCutOffAndNeverFinishedIsNotRated) {
-    auto store = open();
-    const IdentifiedPlayer ann = player_named("Ann");
-    const IdentifiedPlayer bea = player_named("Bea");
-    store->save_player(ann);
-    store->save_player(bea);
+    auto store = open_with_ann_and_bea();
     store->create(created("cut", "Ann", "Bea"));
     store->set_rated_seat("cut", 0, ann.key_hash);
     store->set_rated_seat("cut", 1, bea.key_hash);
@@ -154,11 +148,7 @@ TEST_P(StoreRatings, AMatchCutOffAndNeverFinishedIsNotRated) {
 }
 
 TEST_P(StoreRatings, DaysAwayAgeBothRatingsBeforeTheNextGame) {
-    auto store = open();
-    const IdentifiedPlayer ann = player_named("Ann");
-    const IdentifiedPlayer bea = player_named("Bea");
-    store->save_player(ann);
-    store->save_player(bea);
+    auto store = open_with_ann_and_bea();
     rated_match(*store, "m1", ann, bea, 1, 0);
     ASSERT_TRUE(store->flush(kFlush));
     const std::array<RatedSeat, 2> before{RatedSeat{ann.key_hash, only_rating(*store, ann)},
