@@ -14,7 +14,7 @@ namespace carrom::server {
 
 inline constexpr int kPlayerMatchListLimit = 20; // the last matches GET /players/NAME lists
 inline constexpr int kDefaultLeaderboardLimit = 50;
-inline constexpr int kMaxLeaderboardLimit = 100;
+inline constexpr int kMaxLeaderboardLimit = store::kMaxLeaderboardRows;
 
 // A query's key=value pairs in order (views into query; values still percent-encoded); the
 // match API's and these endpoints' parameters.

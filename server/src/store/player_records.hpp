@@ -33,6 +33,9 @@ struct PlayerRating {
     friend bool operator==(const PlayerRating&, const PlayerRating&) = default;
 };
 
+// MatchStore::leaderboard's limit is clamped to 1..this.
+inline constexpr int kMaxLeaderboardRows = 100;
+
 struct LeaderboardRow {
     std::string name;
     PlayerRating rating;

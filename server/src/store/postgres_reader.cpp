@@ -14,8 +14,6 @@ namespace {
 
 using ReadTransaction = pqxx::transaction<pqxx::repeatable_read, pqxx::read_only>;
 
-constexpr int kMaxLeaderboardLimit = 100;
-
 // The columns key_sha256, name, name_key, created_ms.
 IdentifiedPlayer player_fields(const pqxx::row& row) {
     return IdentifiedPlayer{key_hash_field(row[0]), row[1].as<std::string>(),
@@ -171,7 +169,7 @@ Loaded<std::vector<LeaderboardRow>> PostgresReader::leaderboard(rules::RuleSet r
                  "WHERE r.rule_set = $1 AND r.deviation < $2 "
                  "ORDER BY r.rating DESC, r.games DESC, i.name_key COLLATE \"C\" LIMIT $3",
                  std::string(rules::to_string(rule_set)), ratings::kProvisionalDeviation,
-                 std::clamp(limit, 1, kMaxLeaderboardLimit))) {
+                 std::clamp(limit, 1, kMaxLeaderboardRows))) {
             out.push_back(
                 LeaderboardRow{row[0].as<std::string>(), rating_fields(row, 1, rule_set)});
         }

@@ -10,8 +10,6 @@
 namespace carrom::store::sqlite {
 namespace {
 
-constexpr int kMaxLeaderboardLimit = 100;
-
 // The rating columns rating, deviation, volatility, games, wins, losses, draws, last_game_ms
 // from column `first` on.
 PlayerRating rating_columns(SQLite::Statement& row, int first, rules::RuleSet rule_set) {
@@ -113,7 +111,7 @@ Loaded<std::vector<LeaderboardRow>> SqlitePlayerReader::leaderboard(rules::RuleS
                  "ORDER BY r.rating DESC, r.games DESC, i.name_key LIMIT ?");
         row.bind(1, std::string(rules::to_string(rule_set)));
         row.bind(2, ratings::kProvisionalDeviation);
-        row.bind(3, std::clamp(limit, 1, kMaxLeaderboardLimit));
+        row.bind(3, std::clamp(limit, 1, kMaxLeaderboardRows));
         while (row.executeStep()) {
             out.push_back(
                 LeaderboardRow{row.getColumn(0).getString(), rating_columns(row, 1, rule_set)});
