@@ -1,15 +1,21 @@
 #!/usr/bin/env node
 // The web client's pictures in docs/img, made the way a player sees them:
 //
-//   node scripts/web_screenshots.mjs [--server PATH] [--out docs/img] [--only singles|doubles|replay]
+//   node scripts/web_screenshots.mjs [--server PATH] [--out docs/img] [--only singles|doubles|replay|texts]
 //
 // web-aim.png: 900 x 900, a game against a server bot, the break being aimed (the pull, the
-// guide and the power ring). web-phone.png: 390 x 844 at 2 device px per CSS px, touch, the
-// board after the break against a server bot. web-doubles-side.png: 900 x 900, a doubles game of
+// guide, the power ring and, with the page's engine, the aim assist). web-phone.png: 390 x 844 at 2 device px per CSS px, touch, the
+// board after the break against a server bot (the first-game tips skipped, the log under the
+// board). web-rules.png: the same phone, How to play opened from the match (freestyle).
+// web-doubles-side.png: 900 x 900, a doubles game of
 // four pages (ICF rules), the right seat's view (a quarter turn: its own baseline at the
 // bottom, its partner across) aiming its first shot after the break. web-replay.png: 900 x 900,
 // the replay page (#/replay/ID) of a game the page played against a server bot (freestyle to
 // 40 points, on a server with a match store), paused in the motion of the game's last stroke.
+// The texts a newcomer reads (900 x 900, against server bots): web-foul.png, the striker sent
+// into a pocket after the break (warnings, and what it cost); web-game-over-loser.png, three
+// missed 1 s shot clocks; web-game-over-winner.png, the opponent left (no rematch);
+// web-board-summary.png, the card after the first of two ICF boards against a hard bot.
 
 import fs from 'node:fs';
 import os from 'node:os';
@@ -22,9 +28,8 @@ const wanted = (name) => only === 'all' || only === name;
 
 const { launchBrowser, pageUrl, run, startServer, startWebServer } = await import(path.join(root, 'tests/web/lib/harness.mjs'));
 const { Player } = await import(path.join(root, 'tests/web/lib/player.mjs'));
-const { breakShot } = await import(path.join(root, 'tests/web/lib/match.mjs'));
+const { breakShot, playUntilOver } = await import(path.join(root, 'tests/web/lib/match.mjs'));
 const { chooseShot } = await import(path.join(root, 'tests/web/lib/shot_chooser.mjs'));
-const { playUntilOver } = await import(path.join(root, 'tests/web/lib/match.mjs'));
 
 // A game against a server bot on a server with a match store, then its replay page paused in
 // the last stroke's motion.
@@ -105,6 +110,82 @@ async function doublesPicture(t, web, server, file) {
   await ravi.page.mouse.up();
 }
 
+// The texts pictures (see the top); each from a fresh page.
+async function textsPictures(t) {
+  const view = { viewport: { width: 900, height: 900 } };
+  const open = async (server, name) => Player.open(await t.browser.newContext(view), name,
+    pageUrl(await startWebServer(server), server), t.errors);
+  const shot = async (p, name) => {
+    await p.page.screenshot({ path: path.join(out, name) });
+    console.log(`saved ${path.join(out, name)}`);
+  };
+
+  const calm = await startServer(['--shot-clock', '0', '--time-scale', '4', '--bot-think-ms', '100', '--bot-seed', '3']);
+  let a = await open(calm, 'foul');
+  await a.fillLobby({ name: 'Asha', ruleSet: 'icf', botLevel: 'easy' });
+  await a.press('#play-bot');
+  let s = await a.waitFor('our break', (st) => st.inRoom && st.myTurn && !st.animating && st.aim.phase === 'idle');
+  await a.shoot(breakShot(s.aim.side));
+  s = await a.waitFor('our next turn', (st, turn) => st.turn !== turn && st.myTurn && !st.animating
+    && st.aim.phase === 'idle', 60000, s.turn);
+  // The striker straight into a bottom pocket, from the first place on the baseline with a
+  // clear way there (no piece within 32 px of the path).
+  const pieces = s.board.filter((b) => !b.pocketed && b.kind !== 'striker');
+  const gap = (x, px) => Math.min(...pieces.map((b) => {
+    const [dx, dy] = [px - x, 543 - 520];
+    const k = Math.max(0, Math.min(1, ((b.x - x) * dx + (b.y - 520) * dy) / (dx * dx + dy * dy)));
+    return Math.hypot(b.x - x - k * dx, b.y - 520 - k * dy);
+  }));
+  let aimAt = null;
+  for (let x = 113; x <= 487 && !aimAt; x += 2) {
+    for (const px of [57, 543]) if (!aimAt && gap(x, px) > 32) aimAt = { x, px };
+  }
+  const dist = Math.hypot(aimAt.px - aimAt.x, 23);
+  await a.shoot({ x: aimAt.x, angle: Math.atan2(543 - 520, aimAt.px - aimAt.x), power: Math.min(25, 5 + dist / 20) });
+  // As soon as the foul is said (the server's bot plays its turn at once).
+  await a.waitFor('the foul said', (st) => st.log.some((l) => l.text.startsWith('Foul by Asha: The striker')), 30000);
+  await shot(a, 'web-foul.png');
+
+  const quick = await startServer(['--shot-clock', '1', '--bot-shot-clock', '1', '--time-scale', '8', '--bot-think-ms', '50']);
+  a = await open(quick, 'loser');
+  await a.fillLobby({ name: 'Asha', botLevel: 'easy' });
+  await a.press('#play-bot');
+  await a.waitFor('the game over', (st) => st.phase === 'game_over' && !st.animating && st.gameEnd !== null, 60000);
+  await shot(a, 'web-game-over-loser.png');
+
+  const friends = await startServer(['--shot-clock', '0', '--no-bots']);
+  a = await open(friends, 'winner');
+  await a.fillLobby({ name: 'Asha' });
+  await a.press('#create');
+  const { code } = await a.waitFor('the room', (st) => st.inRoom && st.phase === 'waiting');
+  const b = await open(friends, 'leaver');
+  await b.fillLobby({ name: 'Ravi', code });
+  await b.press('#join');
+  await a.waitFor('Ravi seated', (st) => st.phase === 'aiming');
+  await b.leaveAndForfeit();
+  await a.waitFor('the forfeit', (st) => st.phase === 'game_over' && !st.seats[1].occupied);
+  await shot(a, 'web-game-over-winner.png');
+
+  const boards = await startServer(['--shot-clock', '0', '--time-scale', '16', '--bot-think-ms', '20', '--bot-seed', '3']);
+  a = await open(boards, 'boards');
+  await a.fillLobby({ name: 'Asha', ruleSet: 'icf', targetPoints: 99, boards: 2, botLevel: 'hard' });
+  await a.press('#play-bot');
+  let shots = 0;
+  for (;;) {
+    s = await a.state();
+    if (s.boardSummary !== null && s.boardNumber === 2) break;
+    if (s.inRoom && s.myTurn && !s.animating && s.aim.phase === 'idle') {
+      await a.shoot(s.shots === 0 ? breakShot(s.aim.side) : chooseShot(s.board, s.aim.side, shots));
+      shots += 1;
+      await a.waitFor('the shot result', (st) => st.turn !== st.shotSentTurn || st.boardSummary !== null, 30000);
+    } else {
+      await new Promise((r) => { setTimeout(r, 50); });
+    }
+  }
+  await a.waitFor('the card drawn', (st) => !st.animating && st.boardSummary !== null);
+  await shot(a, 'web-board-summary.png');
+}
+
 run('web_screenshots', 300000, async (t) => {
   const server = await startServer(['--shot-clock', '30', '--bot-think-ms', '100']);
   const web = await startWebServer(server);
@@ -120,16 +201,19 @@ run('web_screenshots', 300000, async (t) => {
     await replayPicture(t, file);
     console.log(`saved ${file}`);
   }
+  if (wanted('texts')) await textsPictures(t);
   if (!wanted('singles')) return;
   const desk = await Player.open(await t.browser.newContext({ viewport: { width: 900, height: 900 } }), 'desktop', pageUrl(web, server), t.errors);
   await desk.fillLobby({ name: 'Asha', ruleSet: 'icf', botLevel: 'easy' });
   await desk.press('#play-bot');
-  let s = await desk.waitFor('our break', (st) => st.inRoom && st.myTurn && !st.animating && st.aim.phase === 'idle');
+  let s = await desk.waitFor('our break', (st) => st.inRoom && st.myTurn && !st.animating && st.aim.phase === 'idle'
+    && (st.engine.loaded || st.engine.error !== null));
   const from = await desk.toClient(s.aim.x, s.aim.y);
   const to = await desk.toClient(s.aim.x + 40, s.aim.y + 110);
   await desk.page.mouse.move(from.x, from.y);
   await desk.page.mouse.down();
   await desk.page.mouse.move(to.x, to.y, { steps: 6 });
+  await desk.waitFor('the aim assist', (st) => st.assist.shown || !st.engine.loaded);
   await desk.page.screenshot({ path: path.join(out, 'web-aim.png') });
   await desk.page.mouse.up();
 
@@ -142,6 +226,9 @@ run('web_screenshots', 300000, async (t) => {
   s = await phone.waitFor('our break', (st) => st.inRoom && st.myTurn && !st.animating && st.aim.phase === 'idle');
   await phone.shoot(breakShot(s.aim.y));
   await phone.waitFor('the break over', (st, turn) => st.turn !== turn && !st.animating, 30000, s.turn);
+  await phone.press('#coach-skip');
   await phone.page.screenshot({ path: path.join(out, 'web-phone.png') });
-  console.log(`saved ${path.join(out, 'web-aim.png')} and ${path.join(out, 'web-phone.png')}`);
+  await phone.press('#help');
+  await phone.page.screenshot({ path: path.join(out, 'web-rules.png') });
+  console.log(`saved ${['web-aim.png', 'web-phone.png', 'web-rules.png'].map((f) => path.join(out, f)).join(', ')}`);
 });

@@ -7,6 +7,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace carrom::client::app {
 
@@ -31,6 +32,10 @@ struct AppOptions {
     // With a screenshot: also wait until this many shot results have arrived and the board is
     // drawn at rest again.
     int after_shots = 0;
+    // With a screenshot: wait for the card between two boards (--board-summary), for the
+    // game-over panel (--game-over).
+    bool board_summary_shot = false;
+    bool game_over_shot = false;
     std::string report_path; // with a screenshot: what it shows as JSON (board_report.hpp)
     double timeout_s = 0.0;  // > 0: exit with code 3 if still running after this many seconds
     int bench_frames = 0;    // > 0: render that many demo frames and print frame times as JSON
@@ -46,6 +51,10 @@ struct AppOptions {
     double replay_at_s = -1.0;
     // Non-empty: write each frame drawn in a room and each shot sent there (frame_log.hpp).
     std::string frame_log_path;
+    // The settings file (settings_file.hpp); empty: $XDG_CONFIG_HOME/carrom/settings.json.
+    std::string settings_path;
+    // --input: keys and clicks to give the window unattended (input_script_mode.hpp).
+    std::vector<std::string> input_script;
 };
 
 // Runs until the window closes; returns the process exit code.

@@ -2,12 +2,16 @@
 
 #include "carrom/client/demo_link.hpp"
 #include "carrom/client/game_over_text.hpp"
+#include "carrom/client/settings_file.hpp"
 #include "draw_util.hpp"
 #include "network_link.hpp"
 #include "unattended_modes.hpp"
 #include "window_output.hpp"
 
+#include <nlohmann/json.hpp>
+
 #include <chrono>
+#include <cstdlib>
 #include <ctime>
 #include <iostream>
 #include <utility>
@@ -21,12 +25,20 @@ bool fixed_step(const AppOptions& o) {
     return o.demo && (!o.screenshot_path.empty() || o.bench_frames > 0);
 }
 
+std::string settings_file(const AppOptions& o) {
+    if (!o.settings_path.empty()) {
+        return o.settings_path;
+    }
+    return settings_path(std::getenv("XDG_CONFIG_HOME"), std::getenv("HOME"));
+}
+
 } // namespace
 
 AppWindow::AppWindow(const AppOptions& options, const sf::Font& font)
     : options_(options), font_(font), clock_(fixed_step(options)),
       geometry_(make_board_geometry(physics_)), model_(physics_), aim_(physics_),
-      board_painter_(geometry_), hud_(font), lobby_(font),
+      aim_assist_(physics_), board_painter_(geometry_), hud_(font), lobby_(font, options.name),
+      menus_(settings_file(options), load_settings(settings_file(options))),
       sound_(!options.mute && options.bench_frames == 0 && options.screenshot_path.empty()),
       session_(make_factory(), options.name, network_session_config(options.identity)) {}
 
@@ -48,10 +60,35 @@ void AppWindow::handle_event(const sf::Event& e) {
     if (handle_window_event(window_, e, layout_, layout_seats_)) {
         return;
     }
+    if (handle_menu_input(e)) {
+        return;
+    }
     if (session_.phase() == SessionPhase::Lobby) {
-        if (auto request = lobby_.on_event(e, layout_.board)) {
+        if (auto request = lobby_.on_event(e, lobby_area())) {
+            if (lobby_.name() != options_.name) {
+                // Another name: a new player on a new connection.
+                options_.name = lobby_.name();
+                session_ = ClientSession(make_factory(), options_.name, network_session_config());
+                session_.start(clock_.now());
+            }
             session_.request(*request);
         }
+        switch (lobby_.take_menu()) {
+        case LobbyView::Menu::Rules:
+            menus_.open_rules(lobby_.rule_set());
+            break;
+        case LobbyView::Menu::Settings:
+            menus_.open_settings();
+            break;
+        case LobbyView::Menu::None:
+            break;
+        }
+        return;
+    }
+    if (model_.board_summary_shown(clock_.now()) && BoardSummaryPanel::dismisses(e)) {
+        model_.dismiss_board_summary(); // the card between boards; the event still plays on
+    }
+    if (model_.view().in_room && handle_emote_key(e)) {
         return;
     }
     if (model_.view().in_room && model_.view().phase == proto::Phase::GameOver) {
@@ -59,6 +96,32 @@ void AppWindow::handle_event(const sf::Event& e) {
     } else if (model_.view().in_room) {
         handle_match_input(e);
     }
+}
+
+bool AppWindow::handle_menu_input(const sf::Event& e) {
+    const MatchView& v = model_.view();
+    const MatchMenus::Outcome out = menus_.on_event(e, v.in_room, v.rule_set);
+    if (out.want_leave) {
+        want_leave();
+    } else if (out.leave) {
+        back_to_lobby();
+    }
+    return out.used;
+}
+
+void AppWindow::want_leave() {
+    const MatchView& v = model_.view();
+    const bool running =
+        v.you >= 0 && (v.phase == proto::Phase::Aiming || v.phase == proto::Phase::Moving ||
+                       v.phase == proto::Phase::BoardOver);
+    if (!running) {
+        back_to_lobby();
+        return;
+    }
+    aim_.cancel();
+    menus_.ask_leave(v.seats.size() > 2 ? "Your team loses this game by forfeit."
+                                        : "You lose this game: " + model_.seat_name(1 - v.you) +
+                                              " wins it by forfeit.");
 }
 
 void AppWindow::handle_game_over_input(const sf::Event& e) {
@@ -71,6 +134,7 @@ void AppWindow::handle_game_over_input(const sf::Event& e) {
 }
 
 void AppWindow::back_to_lobby() {
+    menus_.close();
     session_.leave_room();
     model_.reset();
     aim_.end_turn();
@@ -78,6 +142,28 @@ void AppWindow::back_to_lobby() {
     shot_sent_turn_ = -1;
     rematch_asked_ = false;
     announced_room_.clear();
+}
+
+bool AppWindow::handle_emote_key(const sf::Event& e) {
+    if (e.type != sf::Event::KeyPressed) {
+        return false;
+    }
+    if (e.key.code == sf::Keyboard::E) {
+        model_.emotes().set_all_muted(!model_.emotes().all_muted());
+        model_.log().post(model_.emotes().all_muted() ? "Emotes muted (E shows them)"
+                                                      : "Emotes shown (E mutes them)",
+                          Tone::Info, clock_.now());
+        return true;
+    }
+    const int index = static_cast<int>(e.key.code) - static_cast<int>(sf::Keyboard::Num1);
+    const MatchView& v = model_.view();
+    if (index < 0 || index >= static_cast<int>(proto::kEmoteNames.size()) || v.you < 0 ||
+        v.phase == proto::Phase::Waiting) {
+        return false;
+    }
+    session_.send_game(
+        proto::EmoteMessage{proto::kEmoteNames[static_cast<std::size_t>(index)].value});
+    return true;
 }
 
 void AppWindow::handle_match_input(const sf::Event& e) {
@@ -177,14 +263,23 @@ void AppWindow::update(double now) {
     if (seats != layout_seats_) {
         layout_seats_ = seats;
         const sf::Vector2u size = window_.getSize();
-        layout_ = make_layout(size.x, size.y, layout_seats_);
+        layout_ = make_layout(size.x, size.y, layout_seats_, true);
     }
     // Render first: the aim starts in the very frame the board comes to rest.
     bodies_ = model_.render(now);
+    if (menus_.settings().reduced_motion) {
+        // Reduced motion: a pocketed piece vanishes at once instead of dropping into the pocket.
+        std::erase_if(bodies_, [](const RenderedBody& b) { return b.falling; });
+    }
     sync_aim(now);
     announce_room();
+    const Settings& settings = menus_.settings();
+    if (model_.countdown_tick(now)) {
+        // the shot clock's last seconds
+        sound_.play(SoundCue{0.0, SoundKind::Click, 0.7}, settings.volume / 100.0, settings.muted);
+    }
     for (const SoundCue& cue : model_.take_sounds()) {
-        sound_.play(cue);
+        sound_.play(cue, settings.volume / 100.0, settings.muted);
     }
 }
 
@@ -212,7 +307,7 @@ int AppWindow::run() {
     unattended_ = make_unattended_mode(options_);
     const sf::Vector2u size = window_.getSize();
     window_.setView(sf::View(sf::FloatRect(0.0f, 0.0f, f(size.x), f(size.y))));
-    layout_ = make_layout(size.x, size.y, layout_seats_);
+    layout_ = make_layout(size.x, size.y, layout_seats_, true);
     if (options_.request) {
         session_.request(*options_.request);
     }
@@ -275,9 +370,55 @@ std::optional<int> AppWindow::unattended_frame(int frame) {
         shown_,
         board_painter_.repaints(),
         hud_.bar_repaints(),
-        unattended_input_};
+        unattended_input_,
+        model_.board_summary_shown(clock_.now()),
+        ui_json()};
     unattended_->on_frame(f);
     return unattended_->done();
+}
+
+std::string AppWindow::ui_json() const {
+    const auto rect = [](const Rect& r) {
+        return nlohmann::json{{"x", r.x}, {"y", r.y}, {"w", r.w}, {"h", r.h}};
+    };
+    nlohmann::json messages = nlohmann::json::array();
+    for (const auto& [text, r] : hud_.message_rects()) {
+        nlohmann::json m = rect(r);
+        m["text"] = text;
+        messages.push_back(m);
+    }
+    const auto rects = [&rect](const std::vector<Rect>& list) {
+        nlohmann::json out = nlohmann::json::array();
+        for (const Rect& r : list) {
+            out.push_back(rect(r));
+        }
+        return out;
+    };
+    const Settings& s = menus_.settings();
+    return nlohmann::json{
+        {"open", menus_.open_name()},
+        {"tip", menus_.tip_step()},
+        {"rules_tab", menus_.rules_tab()},
+        {"leave_text", menus_.open() == MatchMenus::Open::Leave ? menus_.leave_consequence() : ""},
+        {"settings",
+         {{"volume", s.volume},
+          {"muted", s.muted},
+          {"reduced_motion", s.reduced_motion},
+          {"coached", s.coached}}},
+        {"side", rect(layout_.side)},
+        {"messages", messages},
+        {"bar_buttons", rects(menus_.bar_buttons())},
+        {"dialog_buttons", rects(menus_.dialog_buttons())},
+        {"tips_buttons", rects(menus_.tips_buttons())},
+        {"lobby", !model_.view().in_room},
+        {"lobby_buttons", rects(lobby_.control_rects(lobby_area()))},
+        {"lobby_choice",
+         {{"name", lobby_.name()},
+          {"rule_set", std::string(proto::to_string(lobby_.rule_set()))},
+          {"bot_level", std::string(proto::to_string(lobby_.bot_level()))}}},
+        {"rule_set", std::string(proto::to_string(model_.view().rule_set))},
+        {"session", session_.phase() == SessionPhase::Lobby ? "lobby" : "other"}}
+        .dump();
 }
 
 // "room CODE" on stdout once per room, for scripts that start a second player (or a bot) with

@@ -7,6 +7,8 @@
 #include "app.hpp"
 #include "blitter.hpp"
 #include "board_painter.hpp"
+#include "board_summary_panel.hpp"
+#include "carrom/client/aim_assist.hpp"
 #include "carrom/client/aim_controller.hpp"
 #include "carrom/client/board_geometry.hpp"
 #include "carrom/client/client_session.hpp"
@@ -18,6 +20,7 @@
 #include "game_over_panel.hpp"
 #include "hud_painter.hpp"
 #include "lobby_view.hpp"
+#include "match_menus.hpp"
 #include "reconnect_panel.hpp"
 #include "sound_player.hpp"
 #include "unattended_mode.hpp"
@@ -42,16 +45,30 @@ private:
     void handle_event(const sf::Event& e);
     void handle_match_input(const sf::Event& e);
     void handle_game_over_input(const sf::Event& e);
+    // The menus' share of an event (match_menus.hpp); true when it was theirs.
+    bool handle_menu_input(const sf::Event& e);
+    // Leave pressed: asks first while our game runs (leaving forfeits it), else leaves.
+    void want_leave();
+    // What the menus and the side area show, as JSON for the screenshot report.
+    std::string ui_json() const;
     void back_to_lobby();
     void update(double now);
     void sync_aim(double now);
     void draw(double now);
     void draw_aim();
+    // The first-contact guide of the pull in progress (rooms with aim assist).
+    void draw_aim_assist(sf::VertexArray& tris, const ScreenMapping& m);
+    // Each seat's emote on show, beside its side of the board.
+    void draw_emotes(double now);
+    // Keys 1-8 send an emote (a seated player in a started game); E mutes or shows them all.
+    bool handle_emote_key(const sf::Event& e);
     void draw_status_panel(const std::string& title, const std::string& detail);
     void announce_room();
     // Hands the frame just drawn (number `frame`) to the unattended mode; its exit code when it
     // ends the run.
     std::optional<int> unattended_frame(int frame);
+    // Where the lobby is drawn: the board's square without a side area.
+    Rect lobby_area() const { return make_layout(window_.getSize().x, window_.getSize().y).board; }
     ScreenMapping mapping() const {
         return make_mapping(layout_.board, physics_.board_size_px, model_.view_side());
     }
@@ -63,11 +80,14 @@ private:
     BoardGeometry geometry_;
     MatchModel model_;
     AimController aim_;
+    AimAssist aim_assist_;
     Blitter blitter_;
     BoardPainter board_painter_;
     HudPainter hud_;
     LobbyView lobby_;
+    MatchMenus menus_;
     GameOverPanel game_over_;
+    BoardSummaryPanel board_summary_;
     ReconnectPanel reconnect_panel_;
     SoundPlayer sound_;
     ClientSession session_;

@@ -1,5 +1,7 @@
 #include "app_window.hpp"
 
+#include "carrom/client/board_summary_text.hpp"
+#include "carrom/client/emote_board.hpp"
 #include "carrom/client/game_over_text.hpp"
 #include "carrom/client/reconnect_text.hpp"
 #include "draw_util.hpp"
@@ -10,6 +12,59 @@
 #include <numbers>
 
 namespace carrom::client::app {
+
+void AppWindow::draw_aim_assist(sf::VertexArray& tris, const ScreenMapping& m) {
+    const MatchView& v = model_.view();
+    if (!v.aim_assist || !aim_.placement().legal) {
+        return;
+    }
+    const ShotIntent shot = aim_.pending_shot();
+    const std::vector<BodyState> board = model_.board_now();
+    const auto contact =
+        aim_assist_.guide(board, aim_.side(), Shot{shot.x_px, shot.angle_rad, shot.power});
+    if (!contact) {
+        return;
+    }
+    // The striker's path to the contact, its outline there, and the piece's direction: a line
+    // from the piece's centre as long as the piece would roll freely (v / k), at most 200 px.
+    const sf::Color guide(150, 230, 255, 200);
+    const double w = std::max(m.length_to_screen(1.5), 1.0);
+    add_line(tris, m.to_screen(aim_.striker_px()), m.to_screen(contact->striker_px), w, guide);
+    add_arc(tris, m.to_screen(contact->striker_px), m.length_to_screen(physics_.striker_radius_px),
+            w, 0.0, 2.0 * std::numbers::pi, guide, 40);
+    const double roll_px = std::min(
+        std::sqrt(length_squared(contact->piece_vel_px_s)) / physics_.damping_per_s, 200.0);
+    const Vec2 end = contact->piece_px + contact->piece_direction * roll_px;
+    add_line(tris, m.to_screen(contact->piece_px), m.to_screen(end),
+             std::max(m.length_to_screen(2.5), 1.5), sf::Color(255, 210, 80, 230));
+    add_disc(tris, m.to_screen(end), std::max(m.length_to_screen(3.0), 2.0),
+             sf::Color(255, 210, 80, 230), 16);
+}
+
+void AppWindow::draw_emotes(double now) {
+    const MatchView& v = model_.view();
+    const ScreenMapping m = mapping();
+    const Vec2 centre = physics_.centre();
+    for (const ShownEmote& e : model_.emotes().visible(now)) {
+        if (e.seat < 0 || static_cast<std::size_t>(e.seat) >= v.seats.size()) {
+            continue;
+        }
+        // Just inside the seat's side of the board, towards its right-hand corner, clear of its
+        // striker and of the pieces in the middle.
+        const rules::Side side = model_.seat_side(e.seat);
+        const Vec2 on_side = baseline_point(physics_, side, centre.x + 150.0);
+        const Vec2 inward =
+            (centre - on_side) * (1.0 / std::sqrt(length_squared(centre - on_side)));
+        const Vec2 at = m.to_screen(on_side - inward * 40.0);
+        const std::string text = seat_name(v, e.seat) + ": " + emote_text(e.emote);
+        const auto size = static_cast<unsigned>(std::max(13.0, m.length_to_screen(13.0)));
+        const double text_w = hud_.texts().width(text, size);
+        const Rect box{at.x - text_w / 2.0 - 10.0, at.y - size * 0.9, text_w + 20.0, size * 1.8};
+        draw_panel(window_, box, sf::Color(255, 244, 214, 235));
+        hud_.texts().draw(window_, text, size, f(at.x), f(at.y), sf::Color(36, 22, 14),
+                          Align::Centre);
+    }
+}
 
 void AppWindow::draw_aim() {
     aim_striker_drawn_.reset();
@@ -36,6 +91,7 @@ void AppWindow::draw_aim() {
                     m.length_to_screen(4.0), -std::numbers::pi / 2.0,
                     -std::numbers::pi / 2.0 + 2.0 * std::numbers::pi * frac,
                     sf::Color(red, green, 40), 48);
+            draw_aim_assist(tris, m);
             window_.draw(tris);
             const Vec2 label = m.to_screen(s + Vec2{0.0, 0.0}) +
                                Vec2{0.0, -m.length_to_screen(physics_.striker_radius_px + 22.0)};
@@ -43,7 +99,14 @@ void AppWindow::draw_aim() {
                               static_cast<unsigned>(std::max(12.0, m.length_to_screen(11.0))),
                               f(label.x), f(label.y), sf::Color::White, Align::Centre);
         }
-        board_painter_.draw_striker(window_, blitter_, m, s, 1.0, !aim_.placement().legal);
+        std::optional<std::pair<Vec2, double>> blocking;
+        for (const RenderedBody& b : bodies_) {
+            if (b.id == aim_.placement().blocking_id) {
+                blocking = std::pair{b.pos_px, physics_.radius(b.kind)};
+            }
+        }
+        board_painter_.draw_striker(window_, blitter_, m, s, 1.0, !aim_.placement().legal,
+                                    blocking);
         aim_striker_drawn_ = s;
         if (!aim_.placement().legal) {
             const Vec2 label =
@@ -98,21 +161,35 @@ void AppWindow::draw(double now) {
         board_painter_.draw_board(window_, blitter_, m, band);
         board_painter_.draw_pieces(window_, blitter_, m, bodies_);
         draw_aim();
+        const MatchView& v = model_.view();
+        const bool playing =
+            v.you >= 0 && (v.phase == proto::Phase::Aiming || v.phase == proto::Phase::Moving);
+        const double tips_h =
+            menus_.draw_tips(window_, blitter_, hud_.texts(), layout_.side, playing, v.rule_set);
+        const double bar_w = menus_.layout_bar(hud_.texts(), layout_.bottom_bar);
+        Sketch bar_buttons;
+        menus_.sketch_bar(bar_buttons);
         // While the link is lost the card over the board has the details; the bar its title.
         const bool linked = phase == SessionPhase::InRoom || phase == SessionPhase::Joining;
         const ReconnectText card =
             reconnect_text(phase, session_.reconnect_info(now), session_.status_text());
         ConnectionLine line{linked ? session_.status_text() : card.title, linked,
                             session_.rtt_ms()};
-        hud_.draw(window_, blitter_, layout_, model_, line, now);
+        hud_.draw(window_, blitter_, layout_, model_, line, now, tips_h, bar_w, bar_buttons);
+        draw_emotes(now);
         if (model_.view().phase == proto::Phase::GameOver) {
             game_over_.draw(window_, blitter_, hud_.texts(), layout_.board,
                             game_over_text(model_.view(), rematch_asked_));
+        }
+        if (model_.board_summary_shown(now)) {
+            board_summary_.draw(window_, blitter_, hud_.texts(), layout_.board,
+                                board_summary_text(model_.view()));
         }
         if (phase == SessionPhase::Reconnecting || phase == SessionPhase::Failed ||
             phase == SessionPhase::Connecting || phase == SessionPhase::Greeting) {
             reconnect_panel_.draw(window_, hud_.texts(), layout_.board, card);
         }
+        menus_.draw_dialog(window_, blitter_, hud_.texts(), layout_.board, band);
         return;
     }
     window_.clear(BoardPainter::kMargin);
@@ -125,10 +202,10 @@ void AppWindow::draw(double now) {
     }
     switch (phase) {
     case SessionPhase::Lobby:
-        lobby_.draw(window_, layout_.board, options_.name, session_.status_text(), error, true);
+        lobby_.draw(window_, lobby_area(), session_.status_text(), error, true);
         break;
     case SessionPhase::Joining:
-        lobby_.draw(window_, layout_.board, options_.name, session_.status_text(), error, false);
+        lobby_.draw(window_, lobby_area(), session_.status_text(), error, false);
         break;
     case SessionPhase::Failed:
         draw_status_panel("Cannot connect", session_.status_text());
@@ -138,6 +215,7 @@ void AppWindow::draw(double now) {
                           session_.status_text());
         break;
     }
+    menus_.draw_dialog(window_, blitter_, hud_.texts(), layout_.board, band);
 }
 
 } // namespace carrom::client::app

@@ -302,15 +302,20 @@ void BoardPainter::draw_pieces(sf::RenderTarget& target, Blitter& blitter,
 
 void BoardPainter::draw_striker(sf::RenderTarget& target, Blitter& blitter,
                                 const ScreenMapping& mapping, Vec2 pos_px, double alpha,
-                                bool warning) {
-    draw_pieces(target, blitter, mapping,
-                {RenderedBody{0, BodyKind::Striker, pos_px, 1.0, alpha, false}});
+                                bool warning, std::optional<std::pair<Vec2, double>> blocking) {
+    draw_pieces(
+        target, blitter, mapping,
+        {RenderedBody{0, BodyKind::Striker, pos_px, 1.0, warning ? kOverlapAlpha : alpha, false}});
     if (warning) {
         overlay_.clear();
         const double r = mapping.length_to_screen(geometry_.striker_r_px);
-        add_disc(overlay_, mapping.to_screen(pos_px), r, sf::Color(220, 30, 30, 140), 48);
         add_arc(overlay_, mapping.to_screen(pos_px), r + 2.0, 3.0, 0.0, 2.0 * kPi,
                 sf::Color(230, 20, 20), 48);
+        if (blocking) {
+            add_arc(overlay_, mapping.to_screen(blocking->first),
+                    mapping.length_to_screen(blocking->second) + 2.0, 2.5, 0.0, 2.0 * kPi,
+                    sf::Color(255, 230, 60), 40);
+        }
         target.draw(overlay_);
     }
 }

@@ -11,6 +11,9 @@
 
 #include <SFML/Graphics.hpp>
 
+#include <optional>
+#include <utility>
+
 #include <memory>
 #include <vector>
 
@@ -39,9 +42,13 @@ public:
     // Pieces at their rendered positions (falling ones shrink and fade).
     void draw_pieces(sf::RenderTarget& target, Blitter& blitter, const ScreenMapping& mapping,
                      const std::vector<RenderedBody>& bodies);
-    // One striker, e.g. while aiming; `warning` draws it red (illegal placement).
+    // One striker, e.g. while aiming. `warning` (an illegal placement): the striker see-through
+    // (kOverlapAlpha) with a red ring, so the piece under it shows, and `blocking`, the piece in
+    // the way (its centre and radius, board px), outlined on top.
     void draw_striker(sf::RenderTarget& target, Blitter& blitter, const ScreenMapping& mapping,
-                      Vec2 pos_px, double alpha, bool warning);
+                      Vec2 pos_px, double alpha, bool warning,
+                      std::optional<std::pair<Vec2, double>> blocking = std::nullopt);
+    static constexpr double kOverlapAlpha = 0.45;
     // How often the board band and the piece atlas were painted (once per window size).
     long repaints() const { return repaints_; }
 

@@ -7,8 +7,9 @@ namespace carrom::client::app {
 
 void FinalStateMode::on_frame(UnattendedFrame& frame) {
     if (frame.at_end) {
-        done_ = write_final_state_file(
-            path_, final_state_json(frame.model.view(), frame.model.board_now()));
+        done_ = write_final_state_file(path_,
+                                       final_state_json(frame.model.view(), frame.model.board_now(),
+                                                        frame.model.transcript()));
     }
 }
 

@@ -72,10 +72,8 @@ Sketch GameOverPanel::sketch(TextCache& texts, const Rect& b, const GameOverText
     const double h = pad + title_h + line_h * 0.4 + line_h * static_cast<double>(reason.size()) +
                      line_h + line_h * 0.8 + line_h * static_cast<double>(waiting.size()) +
                      (waiting.empty() ? 0.0 : line_h * 0.4) + button_h + pad;
-    const Rect panel{std::round(b.x + (b.w - w) / 2.0), std::round(b.y + (b.h - h) / 2.0), w,
-                     std::round(h)};
     Sketch s;
-    s.panel(panel, kPanel, kGold, 2.0f);
+    const Rect panel = s.centred_panel(b, w, h, kPanel, kGold, 2.0f);
     const auto cx = static_cast<float>(panel.x + panel.w / 2.0);
     double y = panel.y + pad;
     s.text(text.title, title_size, cx, static_cast<float>(y + title_h / 2.0), kGold, Align::Centre);
@@ -92,7 +90,7 @@ Sketch GameOverPanel::sketch(TextCache& texts, const Rect& b, const GameOverText
     }
     y += waiting.empty() ? 0.0 : line_h * 0.4;
     // The buttons: [Rematch (R)] [Lobby (L)] for a player, [Lobby (L)] for a spectator.
-    const bool player = text.can_rematch || !text.waiting.empty();
+    const bool player = (text.can_rematch || !text.waiting.empty()) && !text.opponent_left;
     const double gap = std::round(pad * 0.8);
     const double button_w = std::round(player ? (w - 2 * pad - gap) / 2.0 : (w - 2 * pad) / 2.0);
     const unsigned label_size = static_cast<unsigned>(std::lround(button_h * 0.42));
@@ -119,14 +117,9 @@ Sketch GameOverPanel::sketch(TextCache& texts, const Rect& b, const GameOverText
 
 void GameOverPanel::draw(sf::RenderTarget& target, Blitter& blitter, TextCache& texts,
                          const Rect& board, const GameOverText& text) {
-    const bool same_board = board.x == sketch_board_.x && board.y == sketch_board_.y &&
-                            board.w == sketch_board_.w && board.h == sketch_board_.h;
-    if (!same_board || sketch_text_ != text) {
-        sketch_ = sketch(texts, board, text);
-        sketch_board_ = board;
-        sketch_text_ = text;
-    }
-    layer_.draw_overlay(target, blitter, texts, sketch_);
+    const Sketch& s = sketch_.get(
+        board, text, [&](const Rect& b, const GameOverText& t) { return sketch(texts, b, t); });
+    layer_.draw_overlay(target, blitter, texts, s);
 }
 
 std::optional<GameOverPanel::Choice> GameOverPanel::on_event(const sf::Event& e,

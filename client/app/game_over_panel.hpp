@@ -5,6 +5,7 @@
 
 #include "blitter.hpp"
 #include "cached_layer.hpp"
+#include "cached_sketch.hpp"
 #include "carrom/client/game_over_text.hpp"
 #include "carrom/client/screen_mapping.hpp"
 #include "sketch.hpp"
@@ -31,10 +32,7 @@ private:
     Sketch sketch(TextCache& texts, const Rect& board, const GameOverText& text);
 
     CachedLayer layer_;
-    // The last sketch and what it was made from (made again only when they change).
-    Sketch sketch_;
-    Rect sketch_board_;
-    std::optional<GameOverText> sketch_text_;
+    CachedSketch<GameOverText> sketch_;  // made again only when the board or the text changes
     std::optional<Rect> rematch_button_; // as last drawn; none while it cannot be pressed
     std::optional<Rect> lobby_button_;
 };

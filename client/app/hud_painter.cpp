@@ -3,6 +3,7 @@
 #include "board_painter.hpp"
 #include "carrom/client/plain_words.hpp"
 #include "draw_util.hpp"
+#include "game_over_panel.hpp"
 #include "palette.hpp"
 #include "text.hpp"
 
@@ -70,22 +71,29 @@ std::string queen_text(const MatchModel& model) {
 } // namespace
 
 void HudPainter::draw(sf::RenderTarget& target, Blitter& blitter, const ScreenLayout& layout,
-                      const MatchModel& model, const ConnectionLine& connection, double local_s) {
+                      const MatchModel& model, const ConnectionLine& connection, double local_s,
+                      double side_taken, double bar_taken, const Sketch& bar_buttons) {
     top_.draw(target, blitter, texts_, layout.top_bar, kBar,
               top_bar(layout.top_bar, model, local_s));
     if (layout.seat_bar.h > 0.0) {
         seat_.draw(target, blitter, texts_, layout.seat_bar, kBar,
                    seat_bar(layout.seat_bar, model, local_s));
     }
-    bottom_.draw(target, blitter, texts_, layout.bottom_bar, kBar,
-                 bottom_bar(layout.bottom_bar, model, connection));
+    Sketch bottom = bottom_bar(layout.bottom_bar, model, connection, bar_taken);
+    bottom.items.insert(bottom.items.end(), bar_buttons.items.begin(), bar_buttons.items.end());
+    bottom_.draw(target, blitter, texts_, layout.bottom_bar, kBar, bottom);
     Sketch over_board;
-    sketch_messages(over_board, layout.board, model, local_s);
+    const Rect& side = layout.side;
+    const double gap = side_taken > 0.0 ? 6.0 : 0.0;
+    sketch_messages(
+        over_board,
+        {side.x, side.y + side_taken + gap, side.w, std::max(side.h - side_taken - gap, 0.0)},
+        model, local_s);
     sketch_room_code(over_board, layout.board, model);
     over_board_.draw_overlay(target, blitter, texts_, over_board);
 }
 
-Sketch HudPainter::top_bar(const Rect& top, const MatchModel& model, double local_s) const {
+Sketch HudPainter::top_bar(const Rect& top, const MatchModel& model, double local_s) {
     Sketch s;
     if (model.view().seats.size() == 4) {
         // The seats at the left, across and right of the turned board (seat order runs
@@ -107,7 +115,7 @@ Sketch HudPainter::top_bar(const Rect& top, const MatchModel& model, double loca
     return s;
 }
 
-Sketch HudPainter::seat_bar(const Rect& area, const MatchModel& model, double local_s) const {
+Sketch HudPainter::seat_bar(const Rect& area, const MatchModel& model, double local_s) {
     Sketch s;
     const double side_w = std::round(area.w * 0.3);
     const Rect left{area.x, area.y, side_w, area.h};
@@ -133,7 +141,7 @@ Sketch HudPainter::seat_bar(const Rect& area, const MatchModel& model, double lo
 }
 
 void HudPainter::sketch_seat(Sketch& sk, const Rect& area, const MatchModel& model, int seat,
-                             bool right) const {
+                             bool right) {
     const MatchView& v = model.view();
     if (seat < 0 || static_cast<std::size_t>(seat) >= v.seats.size()) {
         return;
@@ -151,11 +159,13 @@ void HudPainter::sketch_seat(Sketch& sk, const Rect& area, const MatchModel& mod
                           : s.colour == proto::Colour::Black ? BodyKind::Black
                                                              : BodyKind::Striker;
     const PieceLook look = piece_look(kind);
-    sk.disc({coin_x, mid}, coin_r, look.rim);
-    sk.disc({coin_x, mid}, coin_r * 0.85, look.fill);
+    if (s.colour != proto::Colour::None) { // freestyle: no colours, no dot
+        sk.disc({coin_x, mid}, coin_r, look.rim);
+        sk.disc({coin_x, mid}, coin_r * 0.85, look.fill);
+    }
     const unsigned name_size = text_size(inner.h, 0.34);
     const unsigned score_size = text_size(inner.h, 0.62);
-    std::string name = s.occupied ? s.name : "(empty seat)";
+    std::string name = s.occupied ? s.name : "Free seat";
     if (s.occupied && !s.connected) {
         name += " (away)";
     }
@@ -176,18 +186,25 @@ void HudPainter::sketch_seat(Sketch& sk, const Rect& area, const MatchModel& mod
     const float text_x = static_cast<float>(right ? coin_x - coin_r - pad : coin_x + coin_r + pad);
     const Align align = right ? Align::Right : Align::Left;
     const float name_y = sub.empty() ? mid : mid - static_cast<float>(inner.h * 0.16);
-    sk.text(name, name_size, text_x, name_y, kText, align);
+    // The name and the line below it stay between the coin and the score (a long name shrinks,
+    // then ends in "...").
+    const std::string score = std::to_string(s.score);
+    const double text_w = inner.w - (2.0 * coin_r + 3.0 * pad) -
+                          static_cast<double>(texts_.width(score, score_size)) - pad;
+    const FittedText name_fit = fitted(name, name_size, text_w);
+    sk.text(name_fit.text, name_fit.size, text_x, name_y, kText, align);
     if (!sub.empty()) {
-        sk.text(sub, text_size(inner.h, 0.26), text_x, mid + static_cast<float>(inner.h * 0.22),
+        const FittedText sub_fit = fitted(sub, text_size(inner.h, 0.26), text_w);
+        sk.text(sub_fit.text, sub_fit.size, text_x, mid + static_cast<float>(inner.h * 0.22),
                 s.dues > 0 ? kAlert : kDim, align);
     }
     const float score_x = static_cast<float>(right ? inner.x + pad : inner.x + inner.w - pad);
-    sk.text(std::to_string(s.score), score_size, score_x, mid, to_play ? kGold : kText,
+    sk.text(score, score_size, score_x, mid, to_play ? kGold : kText,
             right ? Align::Left : Align::Right);
 }
 
 void HudPainter::sketch_centre(Sketch& sk, const Rect& area, const MatchModel& model,
-                               double local_s) const {
+                               double local_s) {
     const float mid = static_cast<float>(area.y + area.h / 2.0);
     sketch_status(sk, area, model, local_s, mid - static_cast<float>(area.h * 0.14));
     sk.text(queen_text(model), text_size(area.h, 0.24), static_cast<float>(area.x + area.w / 2.0),
@@ -195,7 +212,7 @@ void HudPainter::sketch_centre(Sketch& sk, const Rect& area, const MatchModel& m
 }
 
 void HudPainter::sketch_status(Sketch& sk, const Rect& area, const MatchModel& model,
-                               double local_s, float y) const {
+                               double local_s, float y) {
     const MatchView& v = model.view();
     const float cx = static_cast<float>(area.x + area.w / 2.0);
     std::string status;
@@ -229,55 +246,122 @@ void HudPainter::sketch_status(Sketch& sk, const Rect& area, const MatchModel& m
     }
     if (const auto left = model.shot_clock_left_s(local_s)) {
         const int secs = static_cast<int>(std::ceil(*left));
-        status += "  " + std::to_string(secs) + " s";
-        if (*left < 5.0) {
+        const bool hurry = *left <= MatchModel::kCountdownS;
+        status += "  " + std::to_string(secs) + (hurry && model.my_turn() ? " s left!" : " s");
+        if (hurry) {
             colour = kAlert;
         }
     }
-    sk.text(status, text_size(area.h, 0.34), cx, y, colour, Align::Centre);
+    // Within its area, a few px from each edge (a long bot name shrinks, then ends in "...").
+    const FittedText fit = fitted(status, text_size(area.h, 0.34), area.w - 16.0);
+    sk.text(fit.text, fit.size, cx, y, colour, Align::Centre);
+}
+
+const FittedText& HudPainter::fitted(const std::string& text, unsigned size, double width) {
+    if (fitted_.size() > 64) {
+        fitted_.clear();
+    }
+    const auto key = std::make_tuple(text, size, std::lround(width));
+    auto it = fitted_.find(key);
+    if (it == fitted_.end()) {
+        const unsigned min_size = std::max(10u, size * 3 / 4);
+        it = fitted_
+                 .emplace(key, texts_.fit(text, size, std::min(size, min_size),
+                                          static_cast<float>(std::max(0.0, width))))
+                 .first;
+    }
+    return it->second;
 }
 
 Sketch HudPainter::bottom_bar(const Rect& area, const MatchModel& model,
-                              const ConnectionLine& connection) const {
+                              const ConnectionLine& connection, double bar_taken) {
     Sketch sk;
     const MatchView& v = model.view();
     const float mid = static_cast<float>(area.y + area.h / 2.0);
-    const unsigned size = text_size(area.h, 0.48);
-    std::string left = "Room " + v.code + "  \xc2\xb7  " + rule_set_name(v.rule_set) +
-                       "  \xc2\xb7  Board " + std::to_string(v.board_number);
+    // Smaller beside the buttons, so that the room, the rule set and the link fit one line.
+    const unsigned size = text_size(area.h, bar_taken > 0.0 ? 0.4 : 0.48);
+    // A replay's status line is long (turn, speed, the end's reason): its room line names the
+    // rule set and the board only.
+    std::string left = connection.replay
+                           ? rule_set_name(v.rule_set)
+                           : "Room " + v.code + "  \xc2\xb7  " + rule_set_name(v.rule_set) + " " +
+                                 target_words(v.rule_set, v.options.target_points);
+    left += "  \xc2\xb7  Board " + std::to_string(v.board_number);
     if (v.spectators > 0) {
         left += "  \xc2\xb7  " + count_words(v.spectators, "spectator", "spectators");
     }
-    if (v.you < 0) {
+    if (v.you < 0 && !connection.replay) {
         left += "  \xc2\xb7  spectating";
     }
-    sk.text(left, size, static_cast<float>(area.x + 10.0), mid, kDim);
     std::string right = connection.text;
+    // The round trip only where the line has room for it (the buttons take the bar's right).
     if (connection.rtt_ms) {
         std::ostringstream rtt;
         rtt << "  \xc2\xb7  RTT " << static_cast<int>(std::lround(*connection.rtt_ms)) << " ms";
-        right += rtt.str();
+        const double room = area.w - bar_taken - 40.0;
+        if (static_cast<double>(texts_.width(left, size) + texts_.width(right + rtt.str(), size)) <
+            room) {
+            right += rtt.str();
+        }
     }
-    sk.text(right, size, static_cast<float>(area.x + area.w - 10.0), mid,
+    // The room line keeps clear of the connection (it shrinks, then ends in "...").
+    const double left_w =
+        area.w - bar_taken - 40.0 - static_cast<double>(texts_.width(right, size));
+    const FittedText left_fit = fitted(left, size, left_w);
+    sk.text(left_fit.text, left_fit.size, static_cast<float>(area.x + 10.0), mid, kDim);
+    sk.text(right, size, static_cast<float>(area.x + area.w - 10.0 - bar_taken), mid,
             connection.healthy ? kOk : kAlert, Align::Right);
     return sk;
 }
 
-void HudPainter::sketch_messages(Sketch& sk, const Rect& board, const MatchModel& model,
+void HudPainter::sketch_messages(Sketch& sk, const Rect& side, const MatchModel& model,
                                  double local_s) {
-    const std::vector<HudLine> lines = model.log().visible(local_s);
-    const double line_h = std::clamp(board.h * 0.036, 16.0, 30.0);
-    const unsigned size = static_cast<unsigned>(line_h * 0.6);
-    double y = board.y + board.h * 0.2; // between the top baseline and the centre circle
-    for (const HudLine& line : lines) {
-        const double w = static_cast<double>(texts_.width(line.text, size)) + line_h;
-        sk.panel({std::round(board.x + board.w / 2.0 - w / 2.0), std::round(y), std::round(w),
-                  std::round(line_h)},
-                 sf::Color(20, 12, 8, 190));
-        sk.text(line.text, size, static_cast<float>(board.x + board.w / 2.0),
-                static_cast<float>(y + line_h / 2.0), tone_colour(line.tone), Align::Centre);
-        y += line_h + 3.0;
+    messages_.clear();
+    if (side.w <= 0.0 || side.h <= 0.0) {
+        return;
     }
+    const std::vector<HudLine> lines = model.log().visible(local_s);
+    const double line_h = 20.0;
+    const unsigned size = 14;
+    const double pad = 8.0;
+    // Newest last, at the bottom of the list; the list starts at the top of the side area and
+    // the oldest lines leave at its top when it is full.
+    std::vector<std::pair<std::vector<std::string>, Tone>> wrapped;
+    double total = 0.0;
+    for (const HudLine& line : lines) {
+        wrapped.emplace_back(this->wrapped(line.text, size, side.w - 2.0 * pad), line.tone);
+        total += static_cast<double>(wrapped.back().first.size()) * line_h + 4.0;
+    }
+    double y = side.y + std::min(0.0, side.h - total);
+    for (std::size_t i = 0; i < wrapped.size(); ++i) {
+        const auto& [rows, tone] = wrapped[i];
+        const double h = static_cast<double>(rows.size()) * line_h;
+        if (y >= side.y - 0.5) {
+            const Rect r{side.x, std::round(y), side.w, h};
+            sk.panel(r, sf::Color(52, 34, 22, 235));
+            messages_.emplace_back(lines[i].text, r);
+            double row_y = y;
+            for (const std::string& row : rows) {
+                sk.text(row, size, static_cast<float>(side.x + pad),
+                        static_cast<float>(row_y + line_h / 2.0), tone_colour(tone));
+                row_y += line_h;
+            }
+        }
+        y += h + 4.0;
+    }
+}
+
+const std::vector<std::string>& HudPainter::wrapped(const std::string& text, unsigned size,
+                                                    double width) {
+    if (width != wrapped_width_ || wrapped_.size() > 64) {
+        wrapped_.clear();
+        wrapped_width_ = width;
+    }
+    auto it = wrapped_.find(text);
+    if (it == wrapped_.end()) {
+        it = wrapped_.emplace(text, wrap_text(texts_, text, size, width)).first;
+    }
+    return it->second;
 }
 
 void HudPainter::sketch_room_code(Sketch& sk, const Rect& board, const MatchModel& model) const {

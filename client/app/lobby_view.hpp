@@ -1,35 +1,71 @@
 #pragma once
-// The in-window lobby: singles or doubles, then create a room (alone or with server bots in the
-// other seats), quick match, or type a room code to join as a player or to watch. Also shows the
-// connection status and the last error.
+// The in-window lobby, as the web page's: the player's name, the rule set and the server bot's
+// level (each button steps to the next choice), singles or doubles, then create a room (alone or
+// with server bots in the other seats), quick match, or type a room code to join as a player or
+// to watch; How to play and Settings. Also shows the connection status and the last error. A
+// click on the name or the code field chooses where typing goes (the code field at first).
 
 #include "carrom/client/client_session.hpp"
 #include "carrom/client/screen_mapping.hpp"
+#include "carrom/proto/types.hpp"
 
 #include <SFML/Graphics.hpp>
 
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace carrom::client::app {
 
 class LobbyView {
 public:
-    explicit LobbyView(const sf::Font& font) : font_(font) {}
+    enum class Menu { None, Rules, Settings };
+
+    LobbyView(const sf::Font& font, std::string name) : font_(font), name_(std::move(name)) {}
 
     // A button press or Enter in the code field gives a room request.
     std::optional<RoomRequest> on_event(const sf::Event& event, const Rect& area);
-    void draw(sf::RenderTarget& target, const Rect& area, const std::string& name,
-              const std::string& status, const std::string& error, bool can_choose) const;
+    void draw(sf::RenderTarget& target, const Rect& area, const std::string& status,
+              const std::string& error, bool can_choose) const;
+    // How to play or Settings pressed since the last call.
+    Menu take_menu() { return std::exchange(menu_, Menu::None); }
+    const std::string& name() const { return name_; }
+    proto::RuleSet rule_set() const { return rule_set_; }
+    proto::BotLevel bot_level() const { return bot_level_; }
+    // Every control's rect in `area` (name, rule set, bot level, singles, doubles, create, bot,
+    // quick, code, join, watch, how to play, settings), for the screenshot report.
+    std::vector<Rect> control_rects(const Rect& area) const;
 
 private:
-    enum Control { kSingles, kDoubles, kCreate, kBot, kQuick, kCode, kJoin, kWatch, kControlCount };
+    enum Control {
+        kName,
+        kRuleSet,
+        kBotLevel,
+        kSingles,
+        kDoubles,
+        kCreate,
+        kBot,
+        kQuick,
+        kCode,
+        kJoin,
+        kWatch,
+        kHelp,
+        kSettings,
+        kControlCount
+    };
     Rect control_rect(Control c, const Rect& area) const;
     std::optional<RoomRequest> press(Control c);
+    std::string label(Control c) const;
 
     const sf::Font& font_;
+    std::string name_;
     std::string code_;
-    int seats_ = 2; // 2: singles, 4: doubles (for create, the bots and quick match)
+    bool typing_name_ = false; // where typed text goes: the name or the room code
+    int seats_ = 2;            // 2: singles, 4: doubles (for create, the bots and quick match)
+    proto::RuleSet rule_set_ = proto::RuleSet::Icf;
+    proto::BotLevel bot_level_ = proto::BotLevel::Medium;
+    Menu menu_ = Menu::None;
 };
 
 } // namespace carrom::client::app

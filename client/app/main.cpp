@@ -27,7 +27,9 @@ int main(int argc, char** argv) {
         ->capture_default_str();
     cli.add_option("--ca-file", options.ca_file,
                    "wss://: trust the certificate authorities in this PEM file too");
-    cli.add_option("--name", options.name, "Your name (1 to 24 bytes)")->capture_default_str();
+    cli.add_option("--name", options.name,
+                   "Your name (1 to 24 letters; accented letters count twice)")
+        ->capture_default_str();
     std::string identity_path = carrom::net::default_identity_path();
     cli.add_option("--identity", identity_path,
                    "Your player key's file, created with a new key when absent; 'none': play as "
@@ -80,6 +82,10 @@ int main(int argc, char** argv) {
     cli.add_option("--after-shots", options.after_shots,
                    "With --screenshot: also wait for this many shots to be played and at rest")
         ->check(CLI::Range(0, 1000));
+    cli.add_flag("--board-summary", options.board_summary_shot,
+                 "With --screenshot: wait for the card between two boards, then save it");
+    cli.add_flag("--game-over", options.game_over_shot,
+                 "With --screenshot: wait for the game-over panel, then save it");
     cli.add_option("--report", options.report_path,
                    "With --screenshot: write what the picture shows (room, turn, pieces) as JSON");
     cli.add_option("--timeout", options.timeout_s,
@@ -98,6 +104,13 @@ int main(int argc, char** argv) {
     cli.add_option("--frame-log", options.frame_log_path,
                    "Write each frame drawn in a room (positions, shot time, playout state) and "
                    "each shot sent as JSON lines to this file (docs/client.md)");
+    cli.add_option("--settings", options.settings_path,
+                   "The settings file (volume, mute, reduced motion; default "
+                   "$XDG_CONFIG_HOME/carrom/settings.json)");
+    cli.add_option("--input", options.input_script,
+                   "Keys and clicks to give the window unattended, e.g. l,Escape or bar:3,dialog:0 "
+                   "(docs/client.md)")
+        ->delimiter(',');
     std::string replay;
     auto* replay_opt = cli.add_option(
         "--replay", replay,
@@ -130,8 +143,8 @@ int main(int argc, char** argv) {
     }
 
     if (!carrom::proto::is_player_name(options.name)) {
-        std::cerr << "carrom-client: --name must be 1 to 24 bytes, not only spaces, without "
-                     "control characters\n";
+        std::cerr << "carrom-client: --name: type a name of 1 to 24 letters (accented letters "
+                     "count twice), not only spaces\n";
         return 2;
     }
     if (const std::string problem = carrom::cli::room_request_problem(room_flags);

@@ -1,5 +1,7 @@
 #include "replay_view.hpp"
 
+#include "carrom/client/game_over_text.hpp"
+
 #include "blitter.hpp"
 #include "board_painter.hpp"
 #include "carrom/client/match_model.hpp"
@@ -142,6 +144,8 @@ void ReplayView::sync_hud(double now) {
     const auto done = [](const Shown& s) { return s.part == 2 ? s.turn + 1 : s.turn; };
     if (!shown_) { // the first frame: from the start (--replay-at may open the replay anywhere)
         hud_model_.handle(replay_.room_state_at(0.0), now);
+    } else if (done(shown) < done(*shown_)) {
+        hud_model_.log().clear(); // back in time (Home, Left): later strokes' lines would mislead
     }
     // Only the newest outcome's messages when several were jumped over (the room state carries
     // the scores; older messages would only bury the board).
@@ -158,12 +162,15 @@ void ReplayView::sync_hud(double now) {
 }
 
 std::string ReplayView::status() const {
-    std::string text = "Replay  \xc2\xb7  Stroke " + std::to_string(replay_.stroke_number()) +
-                       " / " + std::to_string(replay_.stroke_count()) + "  \xc2\xb7  " +
-                       speed_text(replay_.speed());
-    if (replay_.finished()) {
-        text += "  \xc2\xb7  End";
-    } else if (!replay_.playing()) {
+    // Every input is a turn: strokes, shot clock expiries and forfeits.
+    std::string text = "Replay  \xc2\xb7  Turn " + std::to_string(replay_.turn_number()) + " / " +
+                       std::to_string(replay_.turns().size()) + "  \xc2\xb7  ";
+    if (replay_.finished()) { // the reason instead of the speed
+        const MatchView& v = hud_model_.view();
+        return text + (v.result ? "End: " + game_over_text(v, false).reason : std::string("End"));
+    }
+    text += speed_text(replay_.speed());
+    if (!replay_.playing()) {
         text += "  \xc2\xb7  Paused";
     }
     return text;
@@ -189,7 +196,7 @@ void ReplayView::draw(double now) {
     board_painter_.draw_pieces(window_, blitter_, m, bodies_);
     hud_model_.render(now); // only for the coins each seat has left (the pieces are the replay's)
     hud_.draw(window_, blitter_, layout_, hud_model_,
-              ConnectionLine{status(), replay_.mismatches() == 0, std::nullopt}, now);
+              ConnectionLine{status(), replay_.mismatches() == 0, std::nullopt, true}, now);
     const Rect& b = layout_.board;
     const auto size = static_cast<unsigned>(std::clamp(b.h * 0.022, 11.0, 18.0));
     hud_.texts().draw(window_,
@@ -219,7 +226,8 @@ std::optional<int> ReplayView::unattended_frame(int frame) {
                       std::nullopt,
                       board_painter_.repaints(),
                       hud_.bar_repaints(),
-                      unattended_input_};
+                      unattended_input_,
+                      false};
     unattended_->on_frame(f);
     return unattended_->done();
 }
@@ -235,7 +243,7 @@ int ReplayView::run() {
     window_.setFramerateLimit(144);
     const sf::Vector2u size = window_.getSize();
     window_.setView(sf::View(sf::FloatRect(0.0f, 0.0f, f(size.x), f(size.y))));
-    layout_ = make_layout(size.x, size.y, seat_count());
+    layout_ = make_layout(size.x, size.y, seat_count(), true);
     unattended_ = make_replay_unattended_mode(options_);
     using Clock = std::chrono::steady_clock;
     const auto started = Clock::now();

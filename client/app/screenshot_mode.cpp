@@ -15,7 +15,8 @@ void ScreenshotMode::on_frame(UnattendedFrame& frame) {
 }
 
 bool ScreenshotMode::due(const UnattendedFrame& frame) const {
-    if (frame.number < frames_) {
+    if (frame.number < frames_ || frame.input_pending || (board_summary_ && !frame.board_summary) ||
+        (game_over_ && !frame.at_end)) {
         return false;
     }
     return after_shots_ <= 0 || (frame.shots_seen >= after_shots_ && !frame.model.animating());
@@ -34,9 +35,13 @@ int ScreenshotMode::save(const UnattendedFrame& frame) const {
             drawn.push_back(
                 RenderedBody{-1, BodyKind::Striker, *frame.aim_striker, 1.0, 1.0, false});
         }
-        const ReportContext context{static_cast<double>(size.x), static_cast<double>(size.y),
-                                    frame.shots_seen, frame.overlay,
-                                    frame.model.prediction_stats()};
+        const ReportContext context{static_cast<double>(size.x),
+                                    static_cast<double>(size.y),
+                                    frame.shots_seen,
+                                    frame.overlay,
+                                    frame.model.prediction_stats(),
+                                    frame.ui,
+                                    &frame.model.transcript()};
         out << board_report_json(frame.model.view(), drawn, frame.mapping, context) << "\n";
         if (!out) {
             std::cerr << "carrom-client: could not write " << report_path_ << "\n";

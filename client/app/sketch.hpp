@@ -8,6 +8,7 @@
 
 #include <SFML/Graphics.hpp>
 
+#include <cmath>
 #include <string>
 #include <variant>
 #include <vector>
@@ -44,6 +45,14 @@ struct Sketch {
     void panel(const Rect& rect, sf::Color fill, sf::Color outline = sf::Color::Transparent,
                float outline_px = 0.0f) {
         items.emplace_back(SketchPanel{rect, fill, outline, outline_px});
+    }
+    // A panel w x h centred on `around`, its corner on whole px; returns where it lies.
+    Rect centred_panel(const Rect& around, double w, double h, sf::Color fill, sf::Color outline,
+                       float outline_px) {
+        const Rect rect{std::round(around.x + (around.w - w) / 2.0),
+                        std::round(around.y + (around.h - h) / 2.0), w, std::round(h)};
+        panel(rect, fill, outline, outline_px);
+        return rect;
     }
     void disc(Vec2 centre, double r, sf::Color colour) {
         items.emplace_back(SketchDisc{centre, r, colour});

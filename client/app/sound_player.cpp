@@ -83,15 +83,15 @@ SoundPlayer::SoundPlayer(bool enabled) {
     voices_.resize(12);
 }
 
-void SoundPlayer::play(const SoundCue& cue) {
-    if (!enabled_ || cue.volume <= 0.0) {
+void SoundPlayer::play(const SoundCue& cue, double volume, bool muted) {
+    if (!enabled_ || muted || cue.volume * volume <= 0.0) {
         return;
     }
     sf::Sound& voice = voices_[next_];
     next_ = (next_ + 1) % voices_.size();
     voice.stop();
     voice.setBuffer(buffers_[static_cast<std::size_t>(cue.kind)]);
-    voice.setVolume(static_cast<float>(100.0 * std::clamp(cue.volume, 0.0, 1.0)));
+    voice.setVolume(static_cast<float>(100.0 * std::clamp(cue.volume * volume, 0.0, 1.0)));
     voice.play();
 }
 

@@ -16,7 +16,8 @@ namespace carrom::client::app {
 class SoundPlayer {
 public:
     explicit SoundPlayer(bool enabled);
-    void play(const SoundCue& cue);
+    // At the settings' volume (0..1, times the cue's own); nothing while muted.
+    void play(const SoundCue& cue, double volume = 1.0, bool muted = false);
     bool enabled() const { return enabled_; }
 
 private:

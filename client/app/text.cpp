@@ -1,5 +1,6 @@
 #include "text.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace carrom::client::app {
@@ -63,6 +64,33 @@ float TextCache::draw(sf::RenderTarget& target, const std::string& text, unsigne
 
 float TextCache::width(const std::string& text, unsigned size) {
     return get(text, size).getLocalBounds().width;
+}
+
+FittedText TextCache::fit(const std::string& text, unsigned size, unsigned min_size,
+                          float width) const {
+    sf::Text t(sf::String::fromUtf8(text.begin(), text.end()), font_, size);
+    for (unsigned s = size; s >= min_size && s > 0; --s) {
+        t.setCharacterSize(s);
+        if (t.getLocalBounds().width <= width) {
+            return {text, s};
+        }
+    }
+    const unsigned s = std::max(min_size, 1u);
+    t.setCharacterSize(s);
+    sf::String kept = sf::String::fromUtf8(text.begin(), text.end()); // code points
+    while (!kept.isEmpty()) {
+        kept.erase(kept.getSize() - 1);
+        // No space before the dots ("Bot Kiran..." rather than "Bot Kiran ...").
+        while (!kept.isEmpty() && kept[kept.getSize() - 1] == U' ') {
+            kept.erase(kept.getSize() - 1);
+        }
+        t.setString(kept + sf::String("..."));
+        if (t.getLocalBounds().width <= width) {
+            break;
+        }
+    }
+    const std::basic_string<sf::Uint8> utf8 = (kept + sf::String("...")).toUtf8();
+    return {std::string(utf8.begin(), utf8.end()), s};
 }
 
 } // namespace carrom::client::app

@@ -58,6 +58,9 @@ struct UnattendedFrame {
     long board_paints = 0;                   // board band and piece atlas paints so far
     long hud_paints = 0;                     // HUD bar paints so far
     std::vector<sf::Event>& input;           // events for the window to handle next frame
+    bool board_summary = false;              // the card between two boards is drawn
+    std::string ui = "null";    // the menus and the side area as JSON (AppWindow::ui_json)
+    bool input_pending = false; // --input has tokens left (a screenshot waits for them)
 };
 
 class UnattendedMode {

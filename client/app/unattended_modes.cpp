@@ -3,6 +3,7 @@
 #include "auto_player.hpp"
 #include "final_state_mode.hpp"
 #include "frame_bench.hpp"
+#include "input_script_mode.hpp"
 #include "run_timeout.hpp"
 #include "screenshot_mode.hpp"
 
@@ -28,6 +29,10 @@ struct ModeSet {
 
 std::unique_ptr<UnattendedMode> make_modes(const AppOptions& options, ModeSet set) {
     std::vector<std::unique_ptr<UnattendedMode>> modes;
+    if (set.autoplay && !options.input_script.empty()) {
+        modes.push_back(
+            std::make_unique<InputScriptMode>(options.input_script, !options.request.has_value()));
+    }
     if (set.autoplay && options.autoplay) {
         modes.push_back(std::make_unique<AutoPlayer>(*options.autoplay, 1));
     }

@@ -17,7 +17,7 @@ bool handle_window_event(sf::RenderWindow& window, const sf::Event& e, ScreenLay
         const float w = static_cast<float>(e.size.width);
         const float h = static_cast<float>(e.size.height);
         window.setView(sf::View(sf::FloatRect(0.0f, 0.0f, w, h)));
-        layout = make_layout(w, h, seats);
+        layout = make_layout(w, h, seats, true);
         return true;
     }
     return false;

@@ -138,6 +138,11 @@ void DemoLink::send(const proto::ClientMessage& message) {
                    [&](const proto::Ping& p) {
                        answer(proto::Pong{p.nonce, clock_->to_ms(now)});
                    },
+                   [&](const proto::EmoteMessage& e) {
+                       if (room_) {
+                           room_->emote(*peer_, e);
+                       }
+                   },
                },
                message);
     note_turn(now);

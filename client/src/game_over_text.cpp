@@ -150,25 +150,26 @@ std::string score_line(const MatchView& v, const GameResult& r) {
     return out;
 }
 
+// A seat other than ours is empty: its player left after the game (no rematch until someone takes
+// the seat; the server starts one only when every seat asks).
+bool seat_empty(const MatchView& v) {
+    for (int seat = 0; seat < static_cast<int>(v.seats.size()); ++seat) {
+        if (seat != v.you && !v.seats[static_cast<std::size_t>(seat)].occupied) {
+            return true;
+        }
+    }
+    return false;
+}
+
 std::string rematch_wait(const MatchView& v) {
-    bool empty = false;
     int other_humans = 0;
     int other = -1;
     for (int seat = 0; seat < static_cast<int>(v.seats.size()); ++seat) {
         const SeatView& s = v.seats[static_cast<std::size_t>(seat)];
-        if (seat == v.you) {
-            continue;
-        }
-        if (!s.occupied) {
-            empty = true;
-        } else if (!s.bot || !doubles(v)) {
+        if (seat != v.you && s.occupied && (!s.bot || !doubles(v))) {
             ++other_humans;
             other = seat;
         }
-    }
-    if (empty) {
-        return doubles(v) ? "Waiting for players to join the room"
-                          : "Waiting for a player to join the room";
     }
     if (other_humans == 1) {
         return "Waiting for " + seat_name(v, other) + " to agree to a rematch";
@@ -190,8 +191,13 @@ GameOverText game_over_text(const MatchView& view, bool rematch_asked) {
     out.reason = reason_sentence(view, result);
     out.score = score_line(view, result);
     const bool seated = view.you >= 0;
-    out.can_rematch = seated && !rematch_asked;
-    if (seated && rematch_asked) {
+    const bool left = seated && seat_empty(view);
+    out.can_rematch = seated && !rematch_asked && !left;
+    out.opponent_left = left;
+    if (left) {
+        out.waiting = doubles(view) ? "A player left the room: no rematch"
+                                    : "Your opponent left the room: no rematch";
+    } else if (seated && rematch_asked) {
         out.waiting = rematch_wait(view);
     }
     return out;

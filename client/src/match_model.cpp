@@ -5,8 +5,10 @@
 #include "carrom/scene.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <type_traits>
+#include <utility>
 
 namespace carrom::client {
 namespace {
@@ -34,6 +36,7 @@ MatchModel::MatchModel(const PhysicsConfig& physics, const PlayoutConfig& playou
 
 void MatchModel::reset() {
     view_ = {};
+    emotes_.clear();
     playout_ = PlayoutClock(playout_config_);
     buffer_ = InterpolationBuffer(make_board_geometry(physics_), interpolation_config_);
     coins_ = {};
@@ -84,6 +87,24 @@ std::optional<double> MatchModel::shot_clock_left_s(double local_s) const {
     return seconds_until(server_clock_, *view_.deadline_ms, local_s);
 }
 
+std::optional<int> MatchModel::countdown_tick(double local_s) {
+    const auto left = shot_clock_left_s(local_s);
+    if (!left || !my_turn() || *left <= 0.0 || *left > kCountdownS) {
+        return std::nullopt;
+    }
+    const std::pair<int, int> tick{view_.turn, static_cast<int>(std::ceil(*left))};
+    if (last_tick_ == tick) {
+        return std::nullopt;
+    }
+    last_tick_ = tick;
+    return tick.second;
+}
+
+bool MatchModel::board_summary_shown(double local_s) const {
+    return view_.board_summary && view_.phase != proto::Phase::GameOver &&
+           local_s < view_.board_summary->shown_at_s + kBoardSummaryS;
+}
+
 std::string MatchModel::seat_name(int seat) const {
     return client::seat_name(view_, seat);
 }
@@ -116,6 +137,7 @@ void MatchModel::on_room_state(const proto::RoomState& m, double local_s) {
     view_.you = m.you;
     view_.rule_set = m.rule_set;
     view_.options = m.options;
+    view_.aim_assist = m.aim_assist;
     view_.spectators = m.spectators;
     view_.board_number = m.board_number;
     view_.turn = m.turn;
@@ -159,8 +181,7 @@ void MatchModel::on_room_state(const proto::RoomState& m, double local_s) {
     }
     buffer_.push(keyframe);
     if (joined) {
-        log_.post(m.you >= 0 ? "Joined room " + m.code : "Watching room " + m.code, Tone::Info,
-                  local_s);
+        say(m.you >= 0 ? "Joined room " + m.code : "Watching room " + m.code, Tone::Info, local_s);
     }
 }
 
@@ -265,65 +286,65 @@ void MatchModel::cue(int turn, double t_s, SoundKind kind, double volume) {
 }
 
 void MatchModel::on_event(const proto::Event& m, double local_s) {
-    std::visit(
-        Overloaded{
-            [&](const proto::CollisionEvent& e) {
-                cue(e.turn, e.t_s, SoundKind::Click, loudness_from_impulse(e.impulse));
-            },
-            [&](const proto::CushionEvent& e) {
-                cue(e.turn, e.t_s, SoundKind::Cushion, 0.8 * loudness_from_impulse(e.impulse));
-            },
-            [&](const proto::PocketEvent& e) { cue(e.turn, e.t_s, SoundKind::Pocket, 1.0); },
-            [&](const proto::FoulEvent& e) {
-                log_.post(seat_name(e.seat) + ": " + e.message, Tone::Foul, local_s);
-            },
-            [&](const proto::QueenEvent& e) {
-                view_.queen = e.queen;
-                log_.post(queen_sentence(e.queen, seat_name(e.queen.seat)), Tone::Info, local_s);
-            },
-            [&](const proto::DueEvent& e) { on_due(e, local_s); },
-            [&](const proto::TurnEvent& e) {
-                server_clock_.one_way(e.server_time_ms, local_s);
-                view_.turn = e.turn;
-                view_.to_play = e.seat;
-                view_.deadline_ms = e.deadline_ms;
-                view_.phase = proto::Phase::Aiming;
-                view_.aim_x_px.reset();
-                log_.post(e.seat == view_.you ? "Your turn" : seat_name(e.seat) + " to play",
-                          Tone::Info, local_s);
-            },
-            [&](const proto::BoardEndEvent& e) { on_board_end(e, local_s); },
-            [&](const proto::GameEndEvent& e) {
-                for (std::size_t i = 0; i < e.scores.size() && i < view_.seats.size(); ++i) {
-                    view_.seats[i].score = e.scores[i];
-                }
-                view_.winner = e.winner;
-                view_.phase = proto::Phase::GameOver;
-                view_.result =
-                    GameResult{e.winner, e.reason, e.scores, names_of(view_.seats), e.rule};
-            },
-            [&](const proto::PlayerDroppedEvent& e) {
-                if (e.seat >= 0 && static_cast<std::size_t>(e.seat) < view_.seats.size()) {
-                    view_.seats[static_cast<std::size_t>(e.seat)].connected = false;
-                }
-                const auto grace_s = (e.grace_deadline_ms - e.server_time_ms) / 1000;
-                log_.post(seat_name(e.seat) + " lost the connection; they have " +
-                              std::to_string(grace_s) + " s to come back",
-                          Tone::Error, local_s);
-            },
-            [&](const proto::PlayerReturnedEvent& e) {
-                if (e.seat >= 0 && static_cast<std::size_t>(e.seat) < view_.seats.size()) {
-                    view_.seats[static_cast<std::size_t>(e.seat)].connected = true;
-                }
-                log_.post(seat_name(e.seat) + " is back", Tone::Info, local_s);
-            },
-            [&](const proto::AimEvent& e) {
-                if (e.seat != view_.you && e.turn == view_.turn) {
-                    view_.aim_x_px = e.x_px;
-                }
-            },
-        },
-        m);
+    std::visit(Overloaded{
+                   [&](const proto::CollisionEvent& e) {
+                       cue(e.turn, e.t_s, SoundKind::Click, loudness_from_impulse(e.impulse));
+                   },
+                   [&](const proto::CushionEvent& e) {
+                       cue(e.turn, e.t_s, SoundKind::Cushion,
+                           0.8 * loudness_from_impulse(e.impulse));
+                   },
+                   [&](const proto::PocketEvent& e) { cue(e.turn, e.t_s, SoundKind::Pocket, 1.0); },
+                   [&](const proto::FoulEvent&) {}, // said with its stroke's shot_result
+                   [&](const proto::QueenEvent& e) {
+                       view_.queen = e.queen;
+                       say(queen_sentence(e.queen, seat_name(e.queen.seat)), Tone::Info, local_s);
+                   },
+                   [&](const proto::DueEvent& e) { on_due(e, local_s); },
+                   [&](const proto::TurnEvent& e) {
+                       server_clock_.one_way(e.server_time_ms, local_s);
+                       view_.turn = e.turn;
+                       view_.to_play = e.seat;
+                       view_.deadline_ms = e.deadline_ms;
+                       view_.phase = proto::Phase::Aiming;
+                       view_.aim_x_px.reset();
+                       // Not said: the status line names the seat to play ("Your turn").
+                   },
+                   [&](const proto::BoardEndEvent& e) { on_board_end(e, local_s); },
+                   [&](const proto::GameEndEvent& e) {
+                       for (std::size_t i = 0; i < e.scores.size() && i < view_.seats.size(); ++i) {
+                           view_.seats[i].score = e.scores[i];
+                       }
+                       view_.winner = e.winner;
+                       view_.phase = proto::Phase::GameOver;
+                       view_.board_summary.reset(); // the game-over panel says it
+                       view_.result =
+                           GameResult{e.winner, e.reason, e.scores, names_of(view_.seats), e.rule};
+                       on_forfeit_end(e, local_s);
+                   },
+                   [&](const proto::PlayerDroppedEvent& e) {
+                       if (e.seat >= 0 && static_cast<std::size_t>(e.seat) < view_.seats.size()) {
+                           view_.seats[static_cast<std::size_t>(e.seat)].connected = false;
+                       }
+                       const auto grace_s = (e.grace_deadline_ms - e.server_time_ms) / 1000;
+                       say(seat_name(e.seat) + " lost the connection; they have " +
+                               std::to_string(grace_s) + " s to come back",
+                           Tone::Error, local_s);
+                   },
+                   [&](const proto::PlayerReturnedEvent& e) {
+                       if (e.seat >= 0 && static_cast<std::size_t>(e.seat) < view_.seats.size()) {
+                           view_.seats[static_cast<std::size_t>(e.seat)].connected = true;
+                       }
+                       say(seat_name(e.seat) + " is back", Tone::Info, local_s);
+                   },
+                   [&](const proto::AimEvent& e) {
+                       if (e.seat != view_.you && e.turn == view_.turn) {
+                           view_.aim_x_px = e.x_px;
+                       }
+                   },
+                   [&](const proto::EmoteEvent& e) { emotes_.receive(e.seat, e.emote, local_s); },
+               },
+               m);
 }
 
 // Dues are the team's: partners owe them together. The server sends one `due` per seat of the
@@ -338,10 +359,23 @@ void MatchModel::on_due(const proto::DueEvent& e, double local_s) {
     if (said || e.owed <= 0) {
         return;
     }
+    say(dues_sentence(team_subject(view_, team), view_.seats.size() == 4, e.owed), Tone::Foul,
+        local_s);
+}
+
+// "Asha left the match: Ravi wins by forfeit", from the reader's side: good news for the
+// winners, a warning for the losers.
+void MatchModel::on_forfeit_end(const proto::GameEndEvent& e, double local_s) {
+    const int leaver = std::exchange(forfeit_seat_, -1);
+    if ((e.reason != "left" && e.reason != "forfeit") || leaver < 0 || e.winner < 0) {
+        return;
+    }
     const bool doubles = view_.seats.size() == 4;
-    log_.post(team_subject(view_, team) + (doubles ? " owe " : " owes ") +
-                  count_words(e.owed, "due", "dues"),
-              Tone::Foul, local_s);
+    const bool ours = view_.you >= 0 && team_of(view_, view_.you) == e.winner;
+    const std::string winner =
+        ours ? (doubles ? "your team" : "you") : team_subject(view_, e.winner);
+    say(forfeit_sentence(seat_name(leaver), e.reason, winner, doubles ? !ours : ours),
+        ours ? Tone::Good : (view_.you >= 0 ? Tone::Foul : Tone::Info), local_s);
 }
 
 // The board's winner is a team (its first seat): in doubles both partners are named.
@@ -350,11 +384,13 @@ void MatchModel::on_board_end(const proto::BoardEndEvent& e, double local_s) {
         view_.seats[i].score = e.scores[i];
     }
     view_.phase = proto::Phase::BoardOver;
+    view_.board_summary = BoardSummary{e.board, e.winner, e.points, local_s};
     const std::string board = "Board " + std::to_string(e.board);
-    log_.post(e.winner >= 0 ? board + " to " + team_subject(view_, e.winner) + " (+" +
-                                  std::to_string(e.points) + ")"
-                            : board + " ends, no winner",
-              Tone::Good, local_s);
+    // Freestyle scores each stroke: its board_end adds no points, so none are named.
+    const std::string points = e.points > 0 ? " (+" + std::to_string(e.points) + ")" : "";
+    say(e.winner >= 0 ? board + " to " + team_subject(view_, e.winner) + points
+                      : board + " ends, no winner",
+        Tone::Good, local_s);
 }
 
 void MatchModel::on_shot_result(const proto::ShotResult& m, double local_s) {
@@ -374,11 +410,31 @@ void MatchModel::on_shot_result(const proto::ShotResult& m, double local_s) {
     for (int id : m.pocketed) {
         kinds.push_back(kind_of(id));
     }
+    const auto seat = static_cast<std::size_t>(m.seat);
+    const int points = seat < m.points.size() ? m.points[seat] : 0;
+    const bool fouled = !m.fouls.empty();
+    const std::string name = seat_name(m.seat);
     if (!kinds.empty()) {
-        log_.post(seat_name(m.seat) + " pocketed " + pocket_list(kinds), Tone::Good, local_s);
+        say(name + " pocketed " + pocket_list(kinds) + stroke_points(points),
+            fouled ? Tone::Foul : Tone::Good, local_s);
+    }
+    for (const proto::Foul& foul : m.fouls) {
+        if (foul.rule == "forfeit") {
+            forfeit_seat_ = m.seat; // said with game_end, which gives the reason
+        } else {
+            say(foul_sentence(name, foul.message), Tone::Foul, local_s);
+        }
+    }
+    std::vector<BodyKind> returned;
+    for (int id : m.returned) {
+        returned.push_back(kind_of(id));
+    }
+    const std::string cost = fouled ? foul_cost(returned, points) : std::string();
+    if (!cost.empty()) {
+        say(cost, Tone::Foul, local_s);
     }
     if (m.extra_turn && !m.game_over && !m.board_over) {
-        log_.post(seat_name(m.seat) + " plays again", Tone::Info, local_s);
+        say(seat_name(m.seat) + " plays again", Tone::Info, local_s);
     }
 }
 
@@ -395,9 +451,17 @@ void MatchModel::drop_unconfirmed_prediction() {
     }
 }
 
+void MatchModel::say(std::string text, Tone tone, double local_s) {
+    transcript_.push_back(HudLine{text, tone, local_s});
+    if (transcript_.size() > kTranscriptLines) {
+        transcript_.pop_front();
+    }
+    log_.post(std::move(text), tone, local_s);
+}
+
 void MatchModel::on_error(const proto::Error& m, double local_s) {
     drop_unconfirmed_prediction(); // the shot was refused
-    log_.post(error_sentence(m), Tone::Error, local_s);
+    say(error_sentence(m), Tone::Error, local_s);
 }
 
 std::vector<RenderedBody> MatchModel::render(double local_s) {
@@ -430,10 +494,10 @@ std::vector<RenderedBody> MatchModel::render_predicted(double t_s, double local_
         if (stats.corrections > corrections_logged_) {
             char largest[32];
             std::snprintf(largest, sizeof largest, "%.2f", stats.stroke_max_difference_px);
-            log_.post("The server corrected the predicted shot: " +
-                          count_words(stats.corrections - corrections_logged_, "piece", "pieces") +
-                          " moved, by up to " + largest + " px",
-                      Tone::Info, local_s);
+            say("The server corrected the predicted shot: " +
+                    count_words(stats.corrections - corrections_logged_, "piece", "pieces") +
+                    " moved, by up to " + largest + " px",
+                Tone::Info, local_s);
             corrections_logged_ = stats.corrections;
         }
         return server;

@@ -119,4 +119,57 @@ std::string rule_set_name(proto::RuleSet rule_set) {
     return "Unknown rules";
 }
 
+std::string target_words(proto::RuleSet rule_set, int target_points) {
+    const std::string points = count_words(target_points, "point", "points");
+    switch (rule_set) {
+    case proto::RuleSet::Icf:
+    case proto::RuleSet::Seed:
+        return "to " + std::to_string(target_points) + ", scored at board end";
+    case proto::RuleSet::Freestyle:
+        return "first to " + points;
+    case proto::RuleSet::DiscPool:
+        break;
+    }
+    return "to " + points;
+}
+
+std::string foul_sentence(const std::string& name, const std::string& message) {
+    return "Foul by " + name + ": " + message;
+}
+
+std::string foul_cost(const std::vector<BodyKind>& returned, int points) {
+    std::vector<std::string> parts;
+    if (!returned.empty()) {
+        parts.push_back(pocket_list(returned) + " back to the centre");
+    }
+    if (points < 0) {
+        parts.push_back(count_words(-points, "point", "points"));
+    }
+    if (parts.empty()) {
+        return "";
+    }
+    return "Cost: " + (parts.size() == 1 ? parts[0] : parts[0] + " and " + parts[1]);
+}
+
+std::string stroke_points(int points) {
+    if (points == 0) {
+        return "";
+    }
+    return " (" + std::string(points > 0 ? "+" : "") + std::to_string(points) + ")";
+}
+
+std::string dues_sentence(const std::string& subject, bool plural, int owed) {
+    const std::string coin = owed == 1 ? "the next coin " : "the next coins ";
+    const std::string goes = owed == 1 ? " goes" : " go";
+    return subject + (plural ? " owe " : " owes ") + count_words(owed, "due", "dues") + ": " +
+           coin + (plural ? "they pocket" : subject + " pockets") + goes + " back to the centre";
+}
+
+std::string forfeit_sentence(const std::string& leaver, const std::string& reason,
+                             const std::string& winner, bool plural) {
+    const std::string what =
+        reason == "left" ? " left the match: " : " did not come back in time: ";
+    return leaver + what + winner + (plural ? " win" : " wins") + " by forfeit";
+}
+
 } // namespace carrom::client

@@ -209,6 +209,14 @@ int ReplayModel::stroke_number() const {
     return turn.stroke && time_s_ < turn.motion_s ? turn.stroke_number - 1 : turn.stroke_number;
 }
 
+int ReplayModel::turn_number() const {
+    if (turns_.empty() || finished()) {
+        return static_cast<int>(turns_.size());
+    }
+    const std::size_t i = current_turn();
+    return static_cast<int>(i) + (time_s_ < turns_[i].motion_s ? 0 : 1);
+}
+
 const rules::MatchState& ReplayModel::state_at_time(double time_s) const {
     if (turns_.empty()) {
         return initial_;

@@ -5,7 +5,7 @@
 
 namespace carrom::client {
 
-ScreenLayout make_layout(double window_w, double window_h, int seats) {
+ScreenLayout make_layout(double window_w, double window_h, int seats, bool side_area) {
     // Whole window px everywhere, so cached layers are copied pixel for pixel, without seams.
     const double w = std::max(std::round(window_w), 1.0);
     const double h = std::max(std::round(window_h), 1.0);
@@ -13,11 +13,31 @@ ScreenLayout make_layout(double window_w, double window_h, int seats) {
     const double bottom = std::round(std::clamp(h * 0.045, 24.0, 40.0));
     const double seat_h = seats > 2 ? top : 0.0;
     const double space_h = std::max(h - top - bottom - seat_h, 1.0);
-    const double side = std::min(w, space_h);
+    double side = std::min(w, space_h);
     ScreenLayout layout;
     layout.top_bar = {0.0, 0.0, w, top};
     layout.bottom_bar = {0.0, h - bottom, w, bottom};
     layout.seat_bar = {0.0, h - bottom - seat_h, w, seat_h};
+    if (side_area) {
+        const double beside =
+            std::floor(std::max(std::min(space_h, w - kSideAreaW - kSideAreaGap), 1.0));
+        const double under_h = std::round(std::clamp(space_h * 0.1, 56.0, 110.0));
+        const double under =
+            std::floor(std::max(std::min(w, space_h - under_h - kSideAreaGap), 1.0));
+        if (beside >= under) {
+            // The board and the side area as one block, centred.
+            const double x0 = std::floor((w - beside - kSideAreaGap - kSideAreaW) / 2.0);
+            const double y0 = top + std::floor((space_h - beside) / 2.0);
+            layout.board = {x0, y0, beside, beside};
+            layout.side = {x0 + beside + kSideAreaGap, y0, kSideAreaW, beside};
+        } else {
+            const double x0 = std::floor((w - under) / 2.0);
+            layout.board = {x0, top, under, under};
+            layout.side = {x0, top + under + kSideAreaGap, under,
+                           std::max(space_h - under - kSideAreaGap, 0.0)};
+        }
+        return layout;
+    }
     layout.board = {std::floor((w - side) / 2.0), top + std::floor((space_h - side) / 2.0), side,
                     side};
     return layout;

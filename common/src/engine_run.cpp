@@ -2,6 +2,7 @@
 // cache), the event loop (run_events) and the final state (finish).
 
 #include "broad_phase.hpp"
+#include "carrom/det_math.hpp"
 #include "contact_time.hpp"
 #include "engine_state.hpp"
 #include "event_queue.hpp"
@@ -254,7 +255,7 @@ void ExactEngine::Impl::remember_resting_layout() {
 void ExactEngine::Impl::run_events() {
     // The key of the end time: 0 when there is no end time. With travel keys it is measured
     // from now, so it is recomputed for each event.
-    double key_until = std::exp(-k * options.until_s);
+    double key_until = det::exp(-k * options.until_s);
     std::vector<int>& seeds = event_seeds;
     long pops = 0;
     while (!next.empty()) {

@@ -32,6 +32,7 @@
 // Units: px, s, px/s, mass in coin masses; impulses in coin masses times px/s. Body indices are
 // input order.
 
+#include "carrom/det_math.hpp"
 #include "carrom/exact_engine.hpp"
 
 #include "contact_solver.hpp"
@@ -172,7 +173,7 @@ struct ExactEngine::Impl {
     bool now_stale = false;
     double time_now() {
         if (now_stale) {
-            now = -std::log(u_now) * inv_k;
+            now = -det::log(u_now) * inv_k;
             now_stale = false;
         }
         return now;

@@ -4,6 +4,7 @@
 // queue is the array of keys, keys[i] == next[i].key (u = e^(-k t), or -S with travel_keys;
 // engine_state.hpp); predict fills it (event_queue.cpp).
 
+#include "carrom/det_math.hpp"
 #include "engine_state.hpp"
 
 #include <algorithm>
@@ -99,7 +100,7 @@ inline void ExactEngine::Impl::advance(double key) {
     // dt = -ln(1 - k s) / k = s (-ln(1 - x) / x), x = k s, which is 1 at x = 0 (and for a
     // subnormal x, where log1p(-x) == -x).
     const double x = k * s;
-    now += x == 0.0 ? s : s * (-std::log1p(-x) / x);
+    now += x == 0.0 ? s : s * (-det::log1p(-x) / x);
     // Keys are measured from now: every one moves up by the travel just made (-key). A key
     // of kNoEvent stays -infinity.
     double* const kp = keys.data();

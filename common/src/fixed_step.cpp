@@ -14,6 +14,7 @@
 // - Invalid options (dt not finite or <= 0) simulate nothing; substeps < 1 count as 1.
 
 #include "carrom/fixed_step.hpp"
+#include "carrom/det_math.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -171,7 +172,7 @@ FixedStepResult simulate_fixed_step(const PhysicsConfig& config, std::span<const
     const auto n = static_cast<long>(bodies.size());
     const long max_steps = std::max(kMaxFixedStepPairTests / std::max(n * (n - 1) / 2, 1L), 1L);
     const double k = config.damping_per_s;
-    const double full_damping = std::exp(-k * dt);
+    const double full_damping = det::exp(-k * dt);
     while (any_moving(result.bodies) && ctx.t_s < horizon) {
         if (result.steps >= max_steps) {
             result.truncated = true;
@@ -181,7 +182,7 @@ FixedStepResult simulate_fixed_step(const PhysicsConfig& config, std::span<const
         // Land exactly on the horizon instead of overshooting it (within a rounding slack).
         const bool last = next >= horizon - 1e-9 * dt;
         const double h = last ? horizon - ctx.t_s : dt;
-        const double damping = last ? std::exp(-k * h) : full_damping;
+        const double damping = last ? det::exp(-k * h) : full_damping;
         ctx.t_s = last ? horizon : next;
         ++result.steps;
         for (Body& body : result.bodies) {

@@ -1,4 +1,5 @@
 #include "carrom/scene.hpp"
+#include "carrom/det_math.hpp"
 
 #include <algorithm>
 #include <array>
@@ -33,7 +34,7 @@ Vec2 unit_at_degrees(int degrees) {
         return {0.0, sy};
     }
     const double rad = a * std::numbers::pi / 180.0;
-    return {sx * std::cos(rad), sy * std::sin(rad)};
+    return {sx * det::cos(rad), sy * det::sin(rad)};
 }
 
 constexpr double kCushionTolerancePx = 1e-6;
@@ -80,7 +81,7 @@ double baseline_x_max(const PhysicsConfig& config) {
 Body make_striker(const PhysicsConfig& config, Baseline baseline, const Shot& shot) {
     const double speed = shot.power * config.power_to_speed;
     const Vec2 pos{shot.x_px, baseline_y(config, baseline)};
-    const Vec2 vel{speed * std::cos(shot.angle_rad), speed * std::sin(shot.angle_rad)};
+    const Vec2 vel{speed * det::cos(shot.angle_rad), speed * det::sin(shot.angle_rad)};
     return {kStrikerId, BodyKind::Striker, pos, vel, false};
 }
 

@@ -1,4 +1,5 @@
 #include "carrom/trajectory.hpp"
+#include "carrom/det_math.hpp"
 
 #include "carrom/trajectory_cursor.hpp"
 
@@ -11,7 +12,7 @@ double travel_factor_s(double damping_per_s, double dt_s) {
     if (damping_per_s == 0.0) {
         return dt_s;
     }
-    return -std::expm1(-damping_per_s * dt_s) / damping_per_s;
+    return -det::expm1(-damping_per_s * dt_s) / damping_per_s;
 }
 
 std::vector<Body> state_at(const PhysicsConfig& config, const Trajectory& trajectory, double t_s) {

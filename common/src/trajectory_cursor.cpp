@@ -1,4 +1,5 @@
 #include "carrom/trajectory_cursor.hpp"
+#include "carrom/det_math.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -42,7 +43,7 @@ const std::vector<Body>& TrajectoryCursor::at(const PhysicsConfig& config,
         }
         const double dt = t_s - since_[i];
         b.pos_px += b.vel_px_s * travel_factor_s(k, dt);
-        b.vel_px_s *= std::exp(-k * dt);
+        b.vel_px_s *= det::exp(-k * dt);
     }
     return now_;
 }

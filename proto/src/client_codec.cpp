@@ -83,6 +83,9 @@ json encode_body(const Leave&) {
 json encode_body(const Ping& m) {
     return json{{"nonce", m.nonce}};
 }
+json encode_body(const EmoteMessage& m) {
+    return json{{"emote", to_string(m.emote)}};
+}
 
 // Decoders: each reads its fields from `r`; the caller checks r.ok().
 void decode_body(JsonReader& r, Hello& m) {
@@ -212,6 +215,9 @@ void decode_body(JsonReader&, Rematch&) {}
 void decode_body(JsonReader&, Leave&) {}
 void decode_body(JsonReader& r, Ping& m) {
     m.nonce = r.integer("nonce", 0, kMaxNonce);
+}
+void decode_body(JsonReader& r, EmoteMessage& m) {
+    m.emote = r.enumeration("emote", kEmoteNames, Emote::NiceShot);
 }
 
 } // namespace

@@ -148,7 +148,8 @@ json encode_body(const RoomState& m) {
              {"bodies", std::move(bodies)},
              {"motion",
               {{"damping_per_s", m.motion.damping_per_s},
-               {"contact_snapshots", m.motion.contact_snapshots}}}};
+               {"contact_snapshots", m.motion.contact_snapshots}}},
+             {"aim_assist", m.aim_assist}};
     if (m.shot_clock_deadline_ms) {
         out["shot_clock_deadline_ms"] = *m.shot_clock_deadline_ms;
     }
@@ -199,6 +200,9 @@ void decode_body(JsonReader& r, RoomState& m) {
             m.motion.contact_snapshots = o.boolean("contact_snapshots");
             r.merge(o.error());
         }
+    }
+    if (r.has("aim_assist")) {
+        m.aim_assist = r.boolean("aim_assist");
     }
 }
 
@@ -302,6 +306,9 @@ json encode_event(const PlayerReturnedEvent& e) {
 json encode_event(const AimEvent& e) {
     return json{{"seat", e.seat}, {"turn", e.turn}, {"x", e.x_px}};
 }
+json encode_event(const EmoteEvent& e) {
+    return json{{"seat", e.seat}, {"emote", to_string(e.emote)}};
+}
 
 int read_turn(JsonReader& r) {
     return static_cast<int>(r.integer("turn", 0, kMaxTurn));
@@ -377,6 +384,10 @@ void decode_event(JsonReader& r, AimEvent& e) {
     e.seat = read_seat(r, "seat");
     e.turn = read_turn(r);
     e.x_px = r.number("x", {0.0, kMaxCoordinatePx});
+}
+void decode_event(JsonReader& r, EmoteEvent& e) {
+    e.seat = read_seat(r, "seat");
+    e.emote = r.enumeration("emote", kEmoteNames, Emote::NiceShot);
 }
 
 json encode_body(const Event& m) {

@@ -27,6 +27,9 @@ std::string_view to_string(QueenState value) {
 std::string_view to_string(BotLevel value) {
     return name_or_unknown(kBotLevelNames, value);
 }
+std::string_view to_string(Emote value) {
+    return name_or_unknown(kEmoteNames, value);
+}
 std::string_view baseline_name(Baseline value) {
     return name_or_unknown(rules::kSideNames, value);
 }
@@ -51,6 +54,9 @@ bool parse(std::string_view text, QueenState& out) {
 }
 bool parse(std::string_view text, BotLevel& out) {
     return parse_into(kBotLevelNames, text, out);
+}
+bool parse(std::string_view text, Emote& out) {
+    return parse_into(kEmoteNames, text, out);
 }
 bool parse(std::string_view text, Baseline& out) {
     return parse_into(rules::kSideNames, text, out);

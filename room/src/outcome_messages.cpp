@@ -48,7 +48,7 @@ std::string_view rule_sentence(rules::RuleCode code) {
     case RuleCode::ShotClockExpired:
         return "The shot clock ran out; the turn passes.";
     case RuleCode::MissedTurns:
-        return "Too many turns were missed in a row.";
+        return "Too many turns were missed in a row: the game is lost.";
     case RuleCode::Forfeit:
         return "A player forfeited.";
     case RuleCode::BoardCleared:
@@ -63,6 +63,22 @@ std::string_view rule_sentence(rules::RuleCode code) {
         return "All boards have been played.";
     }
     return "A rule applied.";
+}
+
+std::string foul_sentence(const rules::Foul& foul, const rules::MatchState& after) {
+    std::string sentence(rule_sentence(foul.code));
+    const auto seat = static_cast<std::size_t>(foul.seat);
+    if (foul.code != rules::RuleCode::ShotClockExpired || seat >= after.missed_turns.size() ||
+        after.phase == rules::Phase::GameOver) {
+        return sentence;
+    }
+    // The clock's misses in a row that still leave the game running (the next one at the limit
+    // loses it): a stroke sets the count back to 0.
+    const int left = after.config.missed_turns_to_lose - after.missed_turns[seat];
+    if (left == 1) {
+        return sentence + " One more missed turn in a row loses the game.";
+    }
+    return sentence + " " + std::to_string(left) + " more missed turns in a row lose the game.";
 }
 
 std::string_view game_end_reason(rules::RuleCode code) {
@@ -147,8 +163,7 @@ proto::ShotResult to_shot_result(const rules::ShotOutcome& outcome,
         r.returned.push_back(piece.id);
     }
     for (const auto& foul : outcome.fouls) {
-        r.fouls.push_back(
-            {std::string(rules::to_string(foul.code)), std::string(rule_sentence(foul.code))});
+        r.fouls.push_back({std::string(rules::to_string(foul.code)), foul_sentence(foul, after)});
     }
     r.points = per_seat(after, outcome.score_changes);
     r.scores = per_seat(after, after.scores);
@@ -170,7 +185,7 @@ std::vector<proto::Event> rule_events(const rules::ShotOutcome& outcome,
     std::vector<proto::Event> events;
     for (const auto& foul : outcome.fouls) {
         events.push_back(proto::FoulEvent{foul.seat, std::string(rules::to_string(foul.code)),
-                                          std::string(rule_sentence(foul.code))});
+                                          foul_sentence(foul, after)});
     }
     if (outcome.queen_after.status != outcome.queen_before.status ||
         outcome.queen_after.seat != outcome.queen_before.seat) {

@@ -388,6 +388,7 @@ proto::RoomState Room::room_state(int you) const {
     state.shot_clock_deadline_ms = shot_clock_deadline_ms();
     state.server_time_ms = clock_.now_ms();
     state.motion = {config_.physics.damping_per_s, config_.contact_snapshots};
+    state.aim_assist = config_.aim_assist;
     state.phase = phase();
     state.queen = to_proto(match_.queen);
     state.winner = match_.result && match_.result->winner_team ? *match_.result->winner_team : -1;

@@ -85,6 +85,25 @@ void Room::aim(Peer& peer, const proto::Aim& aim) {
     broadcast(proto::Event{proto::AimEvent{seat, aim.turn, aim.x_px}}, MessageKind::Cue, &peer);
 }
 
+void Room::emote(Peer& peer, const proto::EmoteMessage& emote) {
+    const int seat = seat_of(peer);
+    if (seat < 0) {
+        send_error(peer, is_member(peer) ? proto::code::kSpectator : proto::code::kNotInRoom,
+                   "Only seated players can send emotes.");
+        return;
+    }
+    if (!started_) {
+        send_error(peer, proto::code::kWrongPhase, "Emotes can be sent once the game starts.");
+        return;
+    }
+    if (!seats_[static_cast<std::size_t>(seat)].emotes.try_take(clock_.now_ms())) {
+        send_error(peer, proto::code::kEmoteTooFast,
+                   "Too many emotes; wait a moment before the next one.");
+        return;
+    }
+    broadcast(proto::Event{proto::EmoteEvent{seat, emote.emote}}, MessageKind::Cue);
+}
+
 void Room::shoot(Peer& peer, const proto::Shoot& shoot) {
     int seat = -1;
     if (!check_member_input(peer, seat)) {

@@ -80,6 +80,10 @@ int main(int argc, char** argv) {
     app.add_option("--shot-clock", s.shot_clock_s, "Default seconds per stroke (0 = off)")
         ->envname("CARROM_SHOT_CLOCK")
         ->check(CLI::Range(0.0, 600.0));
+    app.add_option("--bot-shot-clock", s.bot_shot_clock_s,
+                   "Default seconds per stroke in a room with a server bot (at least --shot-clock)")
+        ->envname("CARROM_BOT_SHOT_CLOCK")
+        ->check(CLI::Range(0.0, 600.0));
     app.add_option("--shutdown-grace", s.shutdown_grace_s,
                    "Seconds to close connections on SIGINT/SIGTERM")
         ->envname("CARROM_SHUTDOWN_GRACE")

@@ -1,5 +1,7 @@
 #include "server_core.hpp"
 
+#include "bot_seat_name.hpp"
+
 #include "room_actor.hpp"
 
 #include "carrom/proto/journal_replay.hpp"
@@ -52,10 +54,16 @@ void ServerCore::remove_address(const std::string& address) {
 }
 
 std::variant<std::shared_ptr<RoomActor>, proto::Error>
-ServerCore::create_room(proto::RuleSet rule_set, const proto::RoomOptions& options, int seats) {
+ServerCore::create_room(proto::RuleSet rule_set, const proto::RoomOptions& options, int seats,
+                        bool server_bots) {
     room::RoomConfig config;
     config.rule_set = rule_set;
-    config.rules = room::make_rules_config(rule_set, options, settings.shot_clock_s);
+    // A game against the server's bots gives its players the longer of the two default clocks;
+    // --shot-clock 0 turns every default clock off.
+    const double default_clock_s = server_bots && settings.shot_clock_s > 0.0
+                                       ? std::max(settings.shot_clock_s, settings.bot_shot_clock_s)
+                                       : settings.shot_clock_s;
+    config.rules = room::make_rules_config(rule_set, options, default_clock_s);
     config.rules.seat_count = seats;
     config.snapshot_hz = settings.snapshot_hz;
     config.contact_snapshots = settings.contact_snapshots;
@@ -101,20 +109,6 @@ std::optional<proto::RuleSet> wire_rule_set(rules::RuleSet rule_set) {
     return std::nullopt;
 }
 
-// A bot seat's level from its name as the server gives it ("Bot (hard)"); medium otherwise.
-proto::BotLevel bot_level(std::string_view name) {
-    constexpr std::string_view kPrefix = "Bot (";
-    proto::BotLevel level = proto::BotLevel::Medium;
-    if (name.size() > kPrefix.size() + 1 && name.substr(0, kPrefix.size()) == kPrefix &&
-        name.back() == ')') {
-        const std::string_view text = name.substr(kPrefix.size(), name.size() - kPrefix.size() - 1);
-        if (!proto::parse(text, level)) {
-            level = proto::BotLevel::Medium;
-        }
-    }
-    return level;
-}
-
 } // namespace
 
 int ServerCore::restore_matches() {
@@ -155,7 +149,7 @@ int ServerCore::restore_matches() {
                     bots_missing = true;
                     break;
                 }
-                seats[i].bot = bots(bot_level(journal_seats[i].name));
+                seats[i].bot = bots(bot_level_of_name(journal_seats[i].name));
             }
         }
         if (bots_missing) {

@@ -84,7 +84,8 @@ struct ServerCore {
 
     // A new room of `seats` seats (2 or 4; counted in metrics, logged), or an error.
     std::variant<std::shared_ptr<RoomActor>, proto::Error>
-    create_room(proto::RuleSet rule_set, const proto::RoomOptions& options, int seats = 2);
+    create_room(proto::RuleSet rule_set, const proto::RoomOptions& options, int seats = 2,
+                bool server_bots = false);
     void remove_room(const std::string& code);
 
     // At start, before the I/O threads run: every unfinished match in the store whose journal

@@ -2,6 +2,8 @@
 // join_room, quick_match and its wait for partners (then bots), entering a room.
 #include "ws_session.hpp"
 
+#include "bot_seat_name.hpp"
+
 #include "room_actor.hpp"
 #include "server_core.hpp"
 
@@ -113,7 +115,7 @@ void WsSession::enter_bot_room(proto::RuleSet rule_set, const proto::RoomOptions
     for (const int seat : bot_seats) {
         bots.emplace_back(seat, core_.bots(level));
     }
-    auto created = core_.create_room(rule_set, options, seats);
+    auto created = core_.create_room(rule_set, options, seats, true);
     if (auto* error = std::get_if<proto::Error>(&created)) {
         send_error(error->code, error->message);
         return;
@@ -125,10 +127,9 @@ void WsSession::enter_bot_room(proto::RuleSet rule_set, const proto::RoomOptions
     for (const auto& other : others) {
         other->assign_room(room);
     }
-    const std::string bot_name = "Bot (" + std::string(proto::to_string(level)) + ")";
-    room->post([bots = std::move(bots), bot_name](room::Room& r) {
+    room->post([bots = std::move(bots), level, seats](room::Room& r) {
         for (const auto& [seat, brain] : bots) {
-            (void)r.seat_bot(bot_name, brain, seat);
+            (void)r.seat_bot(bot_seat_name(level, seat, seats), brain, seat);
         }
     });
 }

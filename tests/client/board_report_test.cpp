@@ -69,7 +69,7 @@ TEST(BoardReport, BodiesInBoardAndWindowPxThroughTheTurnedView) {
 
 TEST(BoardReport, OverlayRect) {
     const ScreenMapping m = make_mapping({0.0, 0.0, 600.0, 600.0}, 600.0);
-    ReportContext c{600.0, 700.0, 1, Rect{10.0, 20.0, 30.0, 40.0}, {}};
+    ReportContext c{600.0, 700.0, 1, Rect{10.0, 20.0, 30.0, 40.0}, {}, "null", nullptr};
     const auto j = nlohmann::json::parse(board_report_json(two_seats(), {}, m, c));
     EXPECT_EQ(j.at("overlay"),
               (nlohmann::json{{"x", 10.0}, {"y", 20.0}, {"w", 30.0}, {"h", 40.0}}));
@@ -77,7 +77,7 @@ TEST(BoardReport, OverlayRect) {
 
 TEST(BoardReport, PredictionFigures) {
     const ScreenMapping m = make_mapping({0.0, 0.0, 600.0, 600.0}, 600.0);
-    ReportContext c{600.0, 700.0, 1, std::nullopt, {}};
+    ReportContext c{600.0, 700.0, 1, std::nullopt, {}, "null", nullptr};
     c.prediction.strokes = 7;
     c.prediction.corrections = 2;
     c.prediction.max_difference_px = 5.5;

@@ -96,7 +96,22 @@ TEST(GameOverText, AfterAskingForARematchItWaitsForTheOpponent) {
     EXPECT_EQ(t.waiting, "Waiting for Bot (medium) to agree to a rematch");
     MatchView alone = ended(0, 0, "left", {2, 0});
     alone.seats[1] = SeatView{};
-    EXPECT_EQ(game_over_text(alone, true).waiting, "Waiting for a player to join the room");
+    EXPECT_EQ(game_over_text(alone, true).waiting, "Your opponent left the room: no rematch");
+}
+
+TEST(GameOverText, NoRematchIsOfferedOnceTheOpponentLeft) {
+    MatchView v = ended(0, 0, "left", {2, 0});
+    v.result->names = {"Ana", "Bot (medium)"};
+    v.seats[1] = SeatView{};
+    const GameOverText t = game_over_text(v, false);
+    EXPECT_FALSE(t.can_rematch);
+    EXPECT_TRUE(t.opponent_left);
+    EXPECT_EQ(t.waiting, "Your opponent left the room: no rematch");
+    EXPECT_EQ(t.title, "You won!");
+    EXPECT_EQ(t.reason, "Bot (medium) left the game.");
+    const GameOverText full = game_over_text(ended(0, 0, "score", {25, 3}), false);
+    EXPECT_TRUE(full.can_rematch);
+    EXPECT_FALSE(full.opponent_left);
 }
 
 TEST(GameOverText, NamesStayWhenTheOpponentLeavesAfterTheEnd) {

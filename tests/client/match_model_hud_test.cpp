@@ -40,7 +40,9 @@ TEST(MatchModelHud, DoublesDuesAreSaidOncePerTeamAndSetOnBothPartners) {
     EXPECT_EQ(m.view().seats[2].dues, 1);
     EXPECT_EQ(m.view().seats[1].dues, 1);
     EXPECT_EQ(texts(m.log()),
-              (std::vector<std::string>{"Joined room ABC234", "Asha & Cy owe 1 due"}));
+              (std::vector<std::string>{
+                  "Joined room ABC234",
+                  "Asha & Cy owe 1 due: the next coin they pocket goes back to the centre"}));
     EXPECT_EQ(m.log().all().back().tone, Tone::Foul);
 }
 
@@ -51,7 +53,8 @@ TEST(MatchModelHud, OneDueEventSetsTheWholeTeam) {
     EXPECT_EQ(m.view().seats[1].dues, 2);
     EXPECT_EQ(m.view().seats[3].dues, 2);
     EXPECT_EQ(m.view().seats[0].dues, 0);
-    EXPECT_EQ(m.log().all().back().text, "Ravi & Dee owe 2 dues");
+    EXPECT_EQ(m.log().all().back().text,
+              "Ravi & Dee owe 2 dues: the next coins they pocket go back to the centre");
 }
 
 TEST(MatchModelHud, TheSameDuesInTheNextStrokeAreSaidAgain) {
@@ -63,9 +66,13 @@ TEST(MatchModelHud, TheSameDuesInTheNextStrokeAreSaidAgain) {
     m.handle(shot_result(5, 3, {0, 2, 0, 2}), 2.0);
     m.handle(proto::Event{proto::DueEvent{1, 2}}, 2.0);
     m.handle(proto::Event{proto::DueEvent{3, 2}}, 2.0);
+    // Said again: the line still shown moves to the newest place with the new time (HudLog shows
+    // no line twice).
     EXPECT_EQ(texts(m.log()),
-              (std::vector<std::string>{"Joined room ABC234", "Ravi & Dee owe 2 dues",
-                                        "Ravi & Dee owe 2 dues"}));
+              (std::vector<std::string>{
+                  "Joined room ABC234",
+                  "Ravi & Dee owe 2 dues: the next coins they pocket go back to the centre"}));
+    EXPECT_EQ(m.log().all().back().posted_s, 2.0);
 }
 
 TEST(MatchModelHud, OtherTeamsOrOtherDuesInOneStrokeAreEachSaid) {
@@ -76,9 +83,12 @@ TEST(MatchModelHud, OtherTeamsOrOtherDuesInOneStrokeAreEachSaid) {
     m.handle(proto::Event{proto::DueEvent{1, 0}}, 1.0); // paid off: nothing to say
     m.handle(proto::Event{proto::DueEvent{2, 1}}, 1.0); // not right after its partner's: said
     m.handle(proto::Event{proto::DueEvent{2, 3}}, 1.0);
+    // Each said (the second "owe 1 due" takes the first one's place: no line twice).
     EXPECT_EQ(texts(m.log()),
-              (std::vector<std::string>{"Joined room ABC234", "Asha & Cy owe 1 due",
-                                        "Asha & Cy owe 1 due", "Asha & Cy owe 3 dues"}));
+              (std::vector<std::string>{
+                  "Joined room ABC234",
+                  "Asha & Cy owe 1 due: the next coin they pocket goes back to the centre",
+                  "Asha & Cy owe 3 dues: the next coins they pocket go back to the centre"}));
     EXPECT_EQ(m.view().seats[3].dues, 0);
     EXPECT_EQ(m.view().seats[0].dues, 3);
 }
@@ -89,7 +99,10 @@ TEST(MatchModelHud, SinglesDuesNameTheSeat) {
     m.handle(proto::Event{proto::DueEvent{0, 1}}, 1.0);
     m.handle(proto::Event{proto::DueEvent{1, 1}}, 1.0);
     EXPECT_EQ(texts(m.log()),
-              (std::vector<std::string>{"Joined room ABC234", "Ana owes 1 due", "Ben owes 1 due"}));
+              (std::vector<std::string>{
+                  "Joined room ABC234",
+                  "Ana owes 1 due: the next coin Ana pockets goes back to the centre",
+                  "Ben owes 1 due: the next coin Ben pockets goes back to the centre"}));
     EXPECT_EQ(m.view().seats[0].dues, 1);
 }
 

@@ -198,6 +198,27 @@ TEST(ReplayModel, NextAndPreviousJumpToAnInputsStartBoard) {
     EXPECT_TRUE(model.finished());
 }
 
+TEST(ReplayModel, TheTurnCounterCountsEveryInputOnceItsLeadIsOver) {
+    ReplayModel model = load_ok(game_journal());
+    const auto& turns = model.turns();
+    model.pause();
+    EXPECT_EQ(model.turn_number(), 0);
+    int strokes = 0;
+    for (std::size_t i = 0; i < turns.size(); ++i) {
+        model.seek(turns[i].start_s);
+        EXPECT_EQ(model.turn_number(), static_cast<int>(i)) << i;
+        model.seek(turns[i].motion_s);
+        EXPECT_EQ(model.turn_number(), static_cast<int>(i) + 1) << i;
+        strokes += turns[i].stroke ? 1 : 0;
+    }
+    model.seek(model.duration_s());
+    EXPECT_EQ(model.turn_number(), static_cast<int>(turns.size()));
+    // Clock expiries and forfeits are turns too: the strokes alone count fewer.
+    EXPECT_EQ(model.stroke_count(), strokes);
+    ASSERT_LT(static_cast<std::size_t>(strokes), turns.size()) << "the game has clock expiries";
+    EXPECT_GT(model.turn_number(), model.stroke_count());
+}
+
 TEST(ReplayModel, SpeedStaysWithinAQuarterAndFourTimes) {
     ReplayModel model = load_ok(game_journal());
     EXPECT_EQ(model.speed(), 1.0);

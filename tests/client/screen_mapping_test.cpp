@@ -61,6 +61,33 @@ TEST(ScreenLayout, BarHeightsStayWithinBounds) {
     EXPECT_DOUBLE_EQ(make_layout(300.0, 300.0).bottom_bar.h, 24.0);
 }
 
+bool overlaps(const Rect& a, const Rect& b) {
+    return a.x < b.x + b.w && b.x < a.x + a.w && a.y < b.y + b.h && b.y < a.y + a.h;
+}
+
+TEST(ScreenLayout, SideAreaBesideAWideWindowsBoard) {
+    const ScreenLayout l = make_layout(1280.0, 900.0, 2, true);
+    const double space = 900.0 - l.top_bar.h - l.bottom_bar.h;
+    EXPECT_DOUBLE_EQ(l.board.w, space); // the full height still fits
+    EXPECT_DOUBLE_EQ(l.side.x, l.board.x + l.board.w + kSideAreaGap);
+    EXPECT_DOUBLE_EQ(l.side.w, kSideAreaW);
+    EXPECT_DOUBLE_EQ(l.side.h, l.board.h);
+    EXPECT_FALSE(overlaps(l.side, l.board));
+}
+
+TEST(ScreenLayout, SideAreaUnderASquareWindowsBoard) {
+    const ScreenLayout l = make_layout(900.0, 900.0, 2, true);
+    EXPECT_DOUBLE_EQ(l.side.y, l.board.y + l.board.h + kSideAreaGap);
+    EXPECT_DOUBLE_EQ(l.side.y + l.side.h, l.bottom_bar.y); // no room left under it
+    EXPECT_GE(l.side.h, 56.0);
+    EXPECT_FALSE(overlaps(l.side, l.board));
+    EXPECT_DOUBLE_EQ(l.board.y, l.top_bar.h);
+}
+
+TEST(ScreenLayout, NoSideAreaUnlessAsked) {
+    EXPECT_DOUBLE_EQ(make_layout(1280.0, 900.0).side.w, 0.0);
+}
+
 TEST(ScreenLayout, DegenerateWindowGivesPositiveBoard) {
     const ScreenLayout l = make_layout(0.0, 0.0);
     EXPECT_GT(l.board.w, 0.0);

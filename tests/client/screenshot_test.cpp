@@ -41,7 +41,7 @@ ScreenCapture take_screenshot() {
     ScreenCapture shot;
     EXPECT_TRUE(shot.image.loadFromFile(png));
     std::filesystem::remove(png);
-    shot.mapping = make_mapping(make_layout(900.0, 900.0).board, 600.0);
+    shot.mapping = make_mapping(make_layout(900.0, 900.0, 2, true).board, 600.0); // as the window
     return shot;
 }
 

@@ -122,6 +122,50 @@ TEST(BadInput, EachGetsItsCodeAndTheMatchGoesOn) {
     EXPECT_EQ(results, 1);
 }
 
+TEST(Emote, ReachesEveryMemberWithTheSendersSeat) {
+    TestServer server;
+    Table table(server.url());
+    table.b.send(proto::EmoteMessage{proto::Emote::GoodLuck});
+    const proto::EmoteEvent expected{1, proto::Emote::GoodLuck};
+    for (auto* client : {&table.a, &table.b, &table.s}) {
+        const auto emote = client->next_event<proto::EmoteEvent>();
+        ASSERT_TRUE(emote);
+        EXPECT_EQ(*emote, expected);
+    }
+}
+
+TEST(Emote, UnknownNameIsABadFieldAndSpectatorsAreRefused) {
+    TestServer server;
+    Table table(server.url());
+    table.a.send_text(R"({"type":"emote","emote":"hurry_up"})");
+    EXPECT_EQ(table.a.next_error(), "bad_field");
+    table.s.send(proto::EmoteMessage{proto::Emote::Wow});
+    EXPECT_EQ(table.s.next_error(), "spectator");
+    table.b.drain(100ms);
+    for (const auto& m : table.b.history()) {
+        const auto* event = std::get_if<proto::Event>(&m);
+        EXPECT_FALSE(event != nullptr && std::holds_alternative<proto::EmoteEvent>(*event));
+    }
+}
+
+TEST(Emote, ABurstOverTheLimitIsTooFastAndTheMatchGoesOn) {
+    TestServer server;
+    Table table(server.url());
+    for (int i = 0; i < 4; ++i) {
+        table.a.send(proto::EmoteMessage{proto::Emote::Oops});
+    }
+    EXPECT_EQ(table.a.next_error(), "emote_too_fast");
+    int heard = 0;
+    for (int i = 0; i < 4 && table.b.next_event<proto::EmoteEvent>(500ms); ++i) {
+        ++heard;
+    }
+    EXPECT_EQ(heard, 3);
+    table.a.send(proto::Shoot{table.turn_number, 300.0, -1.5707963, 15.0});
+    const auto result = table.b.next<proto::ShotResult>(20s);
+    ASSERT_TRUE(result);
+    EXPECT_EQ(result->seat, 0);
+}
+
 TEST(BadInput, MessageBeforeHello) {
     TestServer server;
     ManualClient client(server.url());

@@ -154,7 +154,7 @@ TEST(JournalJson, TheHeadHasEveryRuleAndEveryPhysicsField) {
     EXPECT_EQ(j["seats"], Json::parse(R"x([{"name": "ann", "bot": false},
                                             {"name": "Bot (medium)", "bot": true}])x"));
     EXPECT_EQ(j["first_turn"], 0);
-    EXPECT_EQ(j["versions"], Json::parse(R"({"server": "0.1.0", "physics": 1, "rules": 1})"));
+    EXPECT_EQ(j["versions"], Json::parse(R"({"server": "0.1.0", "physics": 2, "rules": 1})"));
     EXPECT_EQ(j["time_ms"], 1700000000000);
 }
 
@@ -209,7 +209,7 @@ TEST(JournalJson, TheDocumentedExampleIsWhatTheRulesRecord) {
     EXPECT_EQ(j["entries"], Json::parse(R"([
         {"type": "stroke", "time_ms": 1700000001500, "turn": 0, "seat": 0,
          "shot": {"x": 300.0, "angle": -1.5707963267948966, "power": 25.0},
-         "result_hash": "6e07b4164aa0cc8f",
+         "result_hash": "41f5cfe5483d391f",
          "outcome": {"state_hash": "a379fc4311ddda2e", "pocketed": [], "fouls": [],
                      "scores": [0, 0], "next_seat": 1}},
         {"type": "drop", "time_ms": 1700000003000, "seat": 1}])"));

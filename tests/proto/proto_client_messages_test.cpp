@@ -284,9 +284,10 @@ TEST(ProtoClient, EveryTypeNameIsDistinctAndRoundTrips) {
                                  Shoot{},
                                  Rematch{},
                                  Leave{},
-                                 Ping{}};
+                                 Ping{},
+                                 EmoteMessage{Emote::Sorry}};
     const char* names[] = {"hello", "create_room", "join_room", "quick_match", "aim",
-                           "shoot", "rematch",     "leave",     "ping"};
+                           "shoot", "rematch",     "leave",     "ping",        "emote"};
     for (std::size_t i = 0; i < std::size(all); ++i) {
         EXPECT_EQ(type_name(all[i]), names[i]);
         EXPECT_EQ(round_trip(all[i]), all[i]) << names[i];

@@ -26,6 +26,9 @@ TEST(ProtoEnumNames, WireEnums) {
                  {"waiting", "aiming", "moving", "board_over", "game_over"});
     expect_table(kQueenStateNames, kToString, kParse, {"on_board", "pending", "covered", "none"});
     expect_table(kBotLevelNames, kToString, kParse, {"random", "easy", "medium", "hard"});
+    expect_table(
+        kEmoteNames, kToString, kParse,
+        {"nice_shot", "good_game", "well_played", "thanks", "good_luck", "oops", "wow", "sorry"});
 }
 
 TEST(ProtoEnumNames, WireBaselinesAndBodyKindsAreCommonsNames) {

@@ -220,11 +220,12 @@ TEST(ProtoServer, EveryEventKindRoundTrips) {
         PlayerDroppedEvent{1, 1700000060000, 1700000000000},
         PlayerReturnedEvent{1},
         AimEvent{0, 4, 250.75},
+        EmoteEvent{1, Emote::WellPlayed},
     };
     const char* kinds[] = {"collision",       "cushion",  "pocket",   "foul",
                            "queen",           "due",      "turn",     "turn",
                            "board_end",       "game_end", "game_end", "player_dropped",
-                           "player_returned", "aim"};
+                           "player_returned", "aim",      "emote"};
     for (std::size_t i = 0; i < std::size(events); ++i) {
         EXPECT_EQ(event_kind(events[i]), kinds[i]);
         EXPECT_EQ(to_json(ServerMessage{events[i]})["kind"], kinds[i]);

@@ -158,7 +158,7 @@ TEST_F(SocketTest, ADoublesRoomWithABotPartnerWaitsForTwoOpponents) {
     EXPECT_EQ(full->you, 0);
     EXPECT_FALSE(full->seats[1].bot);
     EXPECT_TRUE(full->seats[2].bot);
-    EXPECT_EQ(full->seats[2].name, "Bot (easy)");
+    EXPECT_EQ(full->seats[2].name, "Bot Kiran (easy)");
     EXPECT_FALSE(full->seats[3].bot);
     EXPECT_EQ(*bots.made, 1);
     ASSERT_TRUE(b->wait_for_event<proto::TurnEvent>());

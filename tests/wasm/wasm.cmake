@@ -16,3 +16,8 @@ set_tests_properties(wasm.prediction PROPERTIES
     TIMEOUT 60
     LABELS web
     ENVIRONMENT "CARROM_ENGINE_CASES=$<TARGET_FILE:carrom-engine-cases>;CARROM_ENGINE_WASM=${CARROM_WEB_WASM}")
+add_test(NAME wasm.aim_assist COMMAND ${CARROM_NODE} ${CMAKE_CURRENT_SOURCE_DIR}/wasm/aim_assist_test.mjs)
+set_tests_properties(wasm.aim_assist PROPERTIES
+    TIMEOUT 60
+    LABELS web
+    ENVIRONMENT "CARROM_ENGINE_CASES=$<TARGET_FILE:carrom-engine-cases>;CARROM_ENGINE_WASM=${CARROM_WEB_WASM}")

@@ -58,7 +58,14 @@ async function threeBots(t, web, server) {
   check(panels.right.text.includes(s.seats[1].name) && panels.right.text.includes('opponent'), `right panel: ${panels.right.text}`);
   check(panels.left.text.includes(s.seats[3].name) && panels.left.text.includes('opponent'), `left panel: ${panels.left.text}`);
   const ourTeam = await asha.page.textContent('#seat-left .name');
-  check(ourTeam === `Asha & ${s.seats[2].name} (your team)`, `the top bar shows our team first: ${ourTeam}`);
+  check(ourTeam === `You & ${s.seats[2].name}`, `the top bar shows our team first: ${ourTeam}`);
+  const ourSub = await asha.page.textContent('#seat-left .sub');
+  check(ourSub.startsWith('your team'), `our team is named plainly: ${ourSub}`);
+  const theirSub = await asha.page.textContent('#seat-right .sub');
+  check(theirSub.startsWith('opponents'), `the opponents are named plainly: ${theirSub}`);
+  check(new Set(s.seats.slice(1).map((x) => x.name)).size === 3, `three distinct bot names: ${s.seats.map((x) => x.name)}`);
+  check(s.seats.slice(1).every((x) => /^Bot [A-Z][a-z]+ \(easy\)$/.test(x.name)), `bots named with their level: ${s.seats.map((x) => x.name)}`);
+  for (const at of SIDES) check(!panels[at].text.includes('(bot)'), `no "(bot)" after a bot's name: ${panels[at].text}`);
 
   const firstTurn = s.turn;
   const order = []; // seats to play, turn by turn

@@ -259,7 +259,8 @@ test('teams: ours first with both names, the shared score, whose turn and free s
   const w = viewOf(waiting);
   assert.equal(freeSeats(w.view), 2);
   assert.equal(teamSummaries(w.view)[1].free, 2);
-  assert.equal(seatPanels(w.view)[1].name, '(empty seat)');
+  assert.equal(seatPanels(w.view)[1].name, 'Free seat');
+  assert.equal(teamSummaries(w.view)[1].names, '');
   assert.equal(viewTurns(w.view), 0);
 });
 
@@ -269,7 +270,8 @@ test('a due is the team\'s: both partners owe it', () => {
   const m = viewOf(doublesState({ you: 0, dues: [0, 0, 0, 0] }));
   m.handle({ type: 'event', kind: 'due', seat: 3, owed: 2 }, 11);
   assert.deepEqual(m.view.seats.map((s) => s.dues), [0, 2, 0, 2]);
-  assert.equal(m.log.lines[m.log.lines.length - 1].text, 'Ravi & Dev owe 2 dues');
+  assert.equal(m.log.lines[m.log.lines.length - 1].text,
+    'Ravi & Dev owe 2 dues: the next coins they pocket go back to the centre');
 });
 
 test('the server\'s due per seat of a team makes one line per stroke', () => {
@@ -277,7 +279,9 @@ test('the server\'s due per seat of a team makes one line per stroke', () => {
   const lines = () => m.log.lines.filter((l) => l.tone === 'foul').map((l) => l.text);
   m.handle({ type: 'event', kind: 'due', seat: 1, owed: 1 }, 11);
   m.handle({ type: 'event', kind: 'due', seat: 3, owed: 1 }, 11);
-  assert.deepEqual(lines(), ['Ravi & Dev owe 1 due']);
+  const one = 'Ravi & Dev owe 1 due: the next coin they pocket goes back to the centre';
+  const two = (who) => `${who} owe 2 dues: the next coins they pocket go back to the centre`;
+  assert.deepEqual(lines(), [one]);
   m.handle({ type: 'event', kind: 'due', seat: 1, owed: 2 }, 11); // another count: a line
   m.handle({
     type: 'shot_result', turn: 7, seat: 1, x: 300, angle: 0, power: 5, pocketed: [], returned: [],
@@ -287,8 +291,9 @@ test('the server\'s due per seat of a team makes one line per stroke', () => {
   }, 12);
   m.handle({ type: 'event', kind: 'due', seat: 3, owed: 2 }, 12); // another stroke: a line
   m.handle({ type: 'event', kind: 'due', seat: 0, owed: 2 }, 12); // the other team: a line
-  assert.deepEqual(lines(), ['Ravi & Dev owe 1 due', 'Ravi & Dev owe 2 dues', 'Ravi & Dev owe 2 dues',
-    'Asha & Chitra owe 2 dues']);
+  // Said again in the next stroke: the line still shown moves to the newest place (no line twice).
+  assert.deepEqual(lines(), [one, two('Ravi & Dev'), two('Asha & Chitra')]);
+  assert.equal(m.log.lines.find((l) => l.text === two('Ravi & Dev')).posted, 12);
   assert.deepEqual(m.view.seats.map((s) => s.dues), [2, 2, 2, 2]);
 });
 

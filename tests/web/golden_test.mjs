@@ -14,8 +14,10 @@ import { HudLog } from '../../web/js/hud_log.js';
 import { InterpolationBuffer } from '../../web/js/interpolation_buffer.js';
 import { MatchModel } from '../../web/js/match_model.js';
 import {
-  countWords, errorSentence, pocketList, queenSentence, ruleSetName,
+  coinsLeftText, countWords, duesSentence, errorSentence, forfeitSentence, foulCost, foulSentence, pocketList,
+  queenSentence, ruleSetName, strokePoints, targetWords,
 } from '../../web/js/plain_words.js';
+import { controlsHelp, howToPlay, walkthroughSteps } from '../../web/js/how_to_play.js';
 import { PLAYOUT_DEFAULTS, PlayoutClock } from '../../web/js/playout_clock.js';
 import { decodeServer } from '../../web/js/protocol.js';
 import { ScreenMapping } from '../../web/js/screen_mapping.js';
@@ -221,5 +223,16 @@ test('words: words.json', () => {
     queen: input.queen.map(([state, seat, name]) => queenSentence({ state, seat }, name)),
     errors: input.errors.map(([code, message]) => errorSentence({ code, message })),
     rule_sets: input.rule_sets.map((r) => ruleSetName(r)),
+    how_to_play: input.rule_sets.map((r) => ({ ...howToPlay(r), walkthrough: walkthroughSteps(r) })),
+    controls: controlsHelp(),
+    targets: input.targets.map(([ruleSet, points]) => targetWords(ruleSet, points)),
+    coins_left: input.coins_left.map(([white, black, queen, ruleSet, colour]) => coinsLeftText(
+      { white, black, queen: queen ? 1 : 0 }, ruleSet, colour)),
+    fouls: input.fouls.map(([name, message]) => foulSentence(name, message)),
+    costs: input.costs.map(([kinds, points]) => foulCost(kinds, points)),
+    stroke_points: input.stroke_points.map((p) => strokePoints(p)),
+    dues: input.dues.map(([who, plural, owed]) => duesSentence(who, plural, owed)),
+    forfeits: input.forfeits.map(([leaver, reason, winner, plural]) => forfeitSentence(
+      leaver, reason, winner, plural)),
   }, 'words.json');
 });

@@ -16,7 +16,8 @@ run('web.lobby_paths', 120000, async (t) => {
   const b = await Player.open(await t.browser.newContext(VIEW), 'Ravi', pageUrl(web, server), t.errors);
 
   await a.press('#quick');
-  check((await a.page.textContent('#lobby-error')).startsWith('Enter a name first'), 'a name is required');
+  check((await a.page.textContent('#lobby-error'))
+    === 'Type your name first: 1 to 24 letters (accented letters count twice).', 'a name is required, in plain words');
   check((await a.state()).session.phase === 'idle', 'nothing was sent without a name');
 
   // Quick match: the two pages are paired.
@@ -37,14 +38,17 @@ run('web.lobby_paths', 120000, async (t) => {
   check(qa.code === qb.code && qa.ruleSet === 'freestyle', 'both in one freestyle room');
   check(qa.you + qb.you === 1, 'two different seats');
 
-  // Leave: back to the lobby; the opponent wins because the other left.
-  await a.press('#leave');
+  // Leave asks first (the game would be forfeited); Leave again: back to the lobby; the opponent
+  // wins because the other left.
+  await a.leaveAndForfeit();
   await a.waitFor('the lobby', (s) => !s.inRoom && s.session.phase === 'lobby');
   check(await a.page.isVisible('#lobby'), 'the lobby is shown again');
   check((await a.state()).hash === '', 'the address no longer names the room');
   const over = await b.waitFor('the game over', (s) => s.phase === 'game_over' && s.gameEnd !== null);
   check(over.gameEnd.sentence === 'You win the game (the opponent left)', over.gameEnd.sentence);
-  check((await b.page.textContent('#game-over-result')) === over.gameEnd.sentence, 'the reason is on screen');
+  check((await b.page.textContent('#game-over-result')) === 'You won!', 'the winner reads it from their side');
+  check((await b.page.textContent('#game-over-reason')) === 'Asha left the game.', 'the reason is on screen');
+  check(!(await b.page.isVisible('#rematch')), 'no rematch once the opponent left');
   await b.press('#to-lobby');
   await b.waitFor('the lobby', (s) => !s.inRoom);
 

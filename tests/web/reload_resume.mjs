@@ -3,34 +3,13 @@
 // opponent does, and plays on. The connection runs through a TCP relay the test can cut.
 // Shots play in real time here (no --time-scale), so the reload lands mid-shot.
 
-import net from 'node:net';
-
 import { check, launchBrowser, pageUrl, run, sleep, startServer, startWebServer } from './lib/harness.mjs';
 import { breakShot } from './lib/match.mjs';
 import { Player } from './lib/player.mjs';
+import { relay } from './lib/relay.mjs';
 import { chooseShot } from './lib/shot_chooser.mjs';
 
 const VIEW = { viewport: { width: 900, height: 900 } };
-
-// Relays 127.0.0.1:port to the server; cut() closes every relayed connection.
-async function relay(target) {
-  const sockets = new Set();
-  const server = net.createServer((client) => {
-    const upstream = net.connect(target, '127.0.0.1');
-    for (const [a, b] of [[client, upstream], [upstream, client]]) {
-      sockets.add(a);
-      a.on('close', () => { sockets.delete(a); b.destroy(); });
-      a.on('error', () => b.destroy());
-      a.pipe(b);
-    }
-  });
-  await new Promise((r) => { server.listen(0, '127.0.0.1', r); });
-  return {
-    ws: `ws://127.0.0.1:${server.address().port}/`,
-    cut: () => { for (const s of sockets) s.destroy(); },
-    close: () => server.close(),
-  };
-}
 
 const boardKey = (s) => JSON.stringify(s.board.filter((b) => !b.pocketed).map((b) => [b.id, b.x, b.y]));
 

@@ -86,7 +86,10 @@ run('web.two_pages_match', 170000, async (t) => {
   check(a.gameEnd.reason === r.gameEnd.reason && a.gameEnd.reason === w.gameEnd.reason, 'same reason');
   check(a.winner >= 0 && a.winner === r.winner, `a winner (${a.winner})`);
   const result = await asha.page.textContent('#game-over-result');
-  check(result === a.gameEnd.sentence && result.includes('(target score reached)'), `game over panel: ${result}`);
+  check(result === (a.winner === a.you ? 'You won!' : 'You lost'), `game over panel: ${result}`);
+  const why = await asha.page.textContent('#game-over-reason');
+  check(/^(You|Ravi) reached \d+ points\.$/.test(why), `why, from Asha's side: ${why}`);
+  check(/^Final score: Asha \d+, Ravi \d+$/.test(await asha.page.textContent('#game-over-score')), 'the final score');
   check(await asha.page.isVisible('#rematch'), 'a player is offered a rematch');
   check(!(await watcher.page.isVisible('#rematch')), 'a spectator is not offered a rematch');
 

@@ -8,6 +8,7 @@ import test from 'node:test';
 import { AimController, checkPlacement, clampBaselineX, powerFromDrag } from '../../web/js/aim_controller.js';
 import { makeBoardGeometry, nearestPocket, PHYSICS } from '../../web/js/board_geometry.js';
 import { hermite } from '../../web/js/hermite.js';
+import { HudLog } from '../../web/js/hud_log.js';
 import { InterpolationBuffer, INTERPOLATION_DEFAULTS, travelFactor } from '../../web/js/interpolation_buffer.js';
 import { applyLimits, OPTION_RANGES } from '../../web/js/lobby.js';
 import { MatchModel } from '../../web/js/match_model.js';
@@ -16,6 +17,7 @@ import { PlayoutClock, PLAYOUT_DEFAULTS } from '../../web/js/playout_clock.js';
 import * as proto from '../../web/js/protocol.js';
 import { parseRoomHash, roomHash } from '../../web/js/room_link.js';
 import { PROTOCOL } from '../../web/js/physics_config.js';
+import { OVERLAP_ALPHA, Renderer } from '../../web/js/renderer.js';
 import { ScreenMapping } from '../../web/js/screen_mapping.js';
 import { ServerClock } from '../../web/js/server_clock.js';
 import { Session, SESSION_DEFAULTS } from '../../web/js/session.js';
@@ -691,4 +693,53 @@ test('the model gives room_state motion to the buffer and the playout clock', ()
   assert.equal(m.buffer.config.dampingPerS, K);
   assert.equal(m.buffer.everyChangeSent, false);
   assert.equal(m.playout.config.intervalFactor, 2);
+});
+
+test('the HUD log never shows one line twice (client/src/hud_log.cpp)', () => {
+  const log = new HudLog(5, 6);
+  log.post('Your turn', 'info', 0);
+  log.post('Asha pocketed 1 white coin', 'good', 1);
+  log.post('Your turn', 'info', 2);
+  assert.deepEqual(log.visible(2).map((l) => l.text), ['Asha pocketed 1 white coin', 'Your turn']);
+  assert.deepEqual(log.visible(8).map((l) => l.text), ['Your turn']);
+  const later = new HudLog(5, 6);
+  later.post('Your turn', 'info', 0);
+  later.post('Your turn', 'info', 7);
+  assert.equal(later.lines.length, 2);
+});
+
+test('a striker placed over a piece is drawn see-through, the piece outlined on top', () => {
+  // The renderer's placing step on a context that records what it draws (no browser needed).
+  const calls = [];
+  const ctx = new Proxy({ globalAlpha: 1 }, {
+    get(target, key) {
+      if (key in target) return target[key];
+      return (...args) => { calls.push({ op: key, args, alpha: target.globalAlpha, dash: target.dash }); };
+    },
+    set(target, key, value) {
+      target[key] = value;
+      return true;
+    },
+  });
+  ctx.setLineDash = (d) => { ctx.dash = d.length > 0; };
+  const r = Object.assign(Object.create(Renderer.prototype), {
+    ctx, geometry: { strikerR: 18 }, dpr: 1, dirty: [], drawn: [],
+  });
+  const m = new ScreenMapping(0, 0, 1, 600, 0);
+  const placing = { striker: { x: 300, y: 520 }, alpha: 1, warning: true, blocking: { x: 320, y: 515, r: 14 } };
+  r.drawPlacing(m, { byKind: { striker: 'striker-sprite' } }, 40, placing, false);
+  const image = calls.find((c) => c.op === 'drawImage');
+  assert.equal(image.alpha, OVERLAP_ALPHA);
+  assert.equal(r.drawn[0].alpha, OVERLAP_ALPHA);
+  const imageAt = calls.indexOf(image);
+  const outline = calls.findIndex((c, i) => i > imageAt && c.op === 'arc' && c.args[0] === 320 && c.args[1] === 515);
+  assert.ok(outline > imageAt, 'the blocking piece is outlined after (over) the striker');
+  assert.equal(calls[outline].args[2], 16); // its radius plus 2 px
+  assert.ok(calls.slice(outline).some((c) => c.op === 'stroke' && c.dash), 'a dashed outline');
+  // A legal placement: opaque, nothing outlined.
+  calls.length = 0;
+  r.drawn = [];
+  r.drawPlacing(m, { byKind: { striker: 'striker-sprite' } }, 40, { ...placing, warning: false, blocking: null }, false);
+  assert.equal(calls.find((c) => c.op === 'drawImage').alpha, 1);
+  assert.ok(!calls.some((c) => c.op === 'arc'));
 });

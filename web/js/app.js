@@ -5,10 +5,13 @@
 // The WebSocket address is the page's own host (the server serves this page), or the `ws`
 // query parameter: index.html?ws=ws://127.0.0.1:7777/.
 
+import { AimAssist } from './aim_assist.js';
 import { AimController, clampBaselineX } from './aim_controller.js';
-import { alongOf, strikerAt } from './board_geometry.js';
+import { alongOf, radiusOf, strikerAt } from './board_geometry.js';
 import { Connection } from './connection.js';
+import { EmoteView } from './emote_view.js';
 import { loadEngine } from './engine.js';
+import { Help } from './help.js';
 import { Hud } from './hud.js';
 import { loadOrCreateIdentity } from './identity.js';
 import { IdentityPanel } from './identity_panel.js';
@@ -24,6 +27,8 @@ import { parseReplayHash, startReplayPage } from './replay_page.js';
 import { parseRoomHash, roomHash, roomLink, showHash } from './room_link.js';
 import { teamSummaries } from './seat_panels.js';
 import { Session, SESSION_DEFAULTS } from './session.js';
+import { Settings } from './settings.js';
+import { sideLayout } from './side_layout.js';
 import { SoundPlayer } from './sound.js';
 
 const AIM_SEND_INTERVAL_S = 0.05; // at most 20 aim messages a second
@@ -56,8 +61,17 @@ class App {
     this.stage = document.getElementById('stage');
     this.model = new MatchModel();
     this.aim = new AimController(this.model.physics);
+    this.aimAssist = new AimAssist(this.model.physics); // the first-contact guide (aim_assist.js)
+    this.assist = null; // the guide the last frame drew
     this.renderer = new Renderer(this.canvas, document.getElementById('board-bg'), this.model.geometry);
-    this.sound = new SoundPlayer(storage('localStorage'));
+    this.sound = new SoundPlayer();
+    this.reducedMotion = false;
+    this.settings = new Settings(storage('localStorage'), (v) => {
+      this.sound.configure(v);
+      this.reducedMotion = v.reducedMotion;
+      this.dirty = true;
+    });
+    this.help = new Help(storage('localStorage'));
     this.session = new Session(serverUrl(), storage('sessionStorage'), {
       onMessage: (m, localS) => this.onMessage(m, localS),
       onChange: () => { this.dirty = true; },
@@ -72,12 +86,18 @@ class App {
     this.hud = new Hud({
       rematch: () => this.rematch(),
       lobby: () => this.toLobby(),
+      leave: () => this.askLeave(),
       retry: () => this.retry(),
       cancelAim: () => { this.aim.cancel(); this.pointerId = null; },
-      toggleMute: () => this.sound.setMuted(!this.sound.muted),
+      toggleMute: () => this.settings.set({ muted: !this.settings.values.muted }),
+      help: () => this.help.open(this.model.view.ruleSet),
+      settings: () => this.settings.show(true),
       copyLink: () => this.copyLink(),
+      dismissSummary: () => { this.model.dismissBoardSummary(); this.dirty = true; },
     });
+    this.emoteView = new EmoteView((id) => this.session.sendGame(proto.emote(id)));
     this.bodies = [];
+    this.countdownTicks = 0; // shot-clock ticks played (the debug hook reports them)
     this.aimTurn = -1; // the turn the aim was set up for
     this.shotSentTurn = -1; // the turn we already shot in (no double shots)
     this.lastAimSent = -1;
@@ -94,6 +114,10 @@ class App {
     new ResizeObserver(() => this.layout()).observe(this.stage);
     window.addEventListener('hashchange', () => this.onHash());
     document.getElementById('lobby-cancel').addEventListener('click', () => this.toLobby());
+    document.getElementById('lobby-help').addEventListener('click', () => this.help.open(this.lobby.ruleSet.value));
+    document.getElementById('lobby-settings').addEventListener('click', () => this.settings.show(true));
+    document.getElementById('leave-stay').addEventListener('click', () => this.hud.askLeave(null));
+    document.getElementById('leave-yes').addEventListener('click', () => this.toLobby());
     this.layout();
     const name = this.lobby.storedName();
     this.fromLink = parseRoomHash(window.location.hash);
@@ -115,6 +139,7 @@ class App {
       this.engine = await loadEngine();
       this.engineMs = performance.now() - started;
       this.model.setEngine(this.engine);
+      this.aimAssist.setEngine(this.engine);
     } catch (e) {
       this.engineError = String(e.message ?? e);
     }
@@ -168,7 +193,23 @@ class App {
     this.lobby.setError(errorSentence(error));
   }
 
+  // Leave: while our game runs it forfeits, so the page asks first (Stay or Leave).
+  askLeave() {
+    const v = this.model.view;
+    const running = v.you >= 0 && ['aiming', 'moving', 'board_over'].includes(v.phase);
+    if (!running) {
+      this.toLobby();
+      return;
+    }
+    const others = this.model.doubles() ? 'Your team loses this game by forfeit.'
+      : `You lose this game: ${this.model.seatName(1 - v.you)} wins it by forfeit.`;
+    this.aim.cancel();
+    this.pointerId = null;
+    this.hud.askLeave(others);
+  }
+
   toLobby() {
+    this.hud.askLeave(null);
     this.ratingView.refresh(this.session.name);
     setTimeout(() => this.ratingView.refresh(this.session.name), RATING_REREAD_MS);
     this.session.leaveRoom();
@@ -199,8 +240,24 @@ class App {
       () => this.model.log.post(link, 'info', performance.now() / 1000));
   }
 
+  // The board's size, and where the side area goes (in a room only; the lobby has the stage).
   layout() {
-    const side = Math.min(this.stage.clientWidth, this.stage.clientHeight);
+    const w = this.stage.clientWidth;
+    const h = this.stage.clientHeight;
+    this.layoutInRoom = this.model.view.inRoom;
+    let side = Math.min(w, h);
+    const sideArea = document.getElementById('side');
+    if (this.layoutInRoom) {
+      const l = sideLayout(w, h);
+      side = l.side;
+      this.stage.dataset.log = l.mode;
+      sideArea.style.width = `${l.sideW}px`;
+      sideArea.style.height = `${l.sideH}px`;
+      sideArea.hidden = false;
+    } else {
+      delete this.stage.dataset.log;
+      sideArea.hidden = true;
+    }
     if (this.renderer.resize(side, window.devicePixelRatio || 1)) {
       this.dirty = true;
       // The seat panels on the frame (doubles) size themselves from these.
@@ -265,8 +322,15 @@ class App {
     window.addEventListener('keydown', (e) => {
       this.sound.unlock();
       if (e.target instanceof HTMLInputElement || e.target instanceof HTMLSelectElement) return;
+      if (this.model.boardSummaryShown(performance.now() / 1000)) {
+        this.model.dismissBoardSummary(); // the card between boards, then play on
+        this.dirty = true;
+        return;
+      }
       const pieces = this.model.boardNow();
-      if (e.key === 'Escape') {
+      if (e.key === 'Escape' && this.hud.leaveAsked()) {
+        this.hud.askLeave(null); // Escape answers Stay
+      } else if (e.key === 'Escape') {
         this.aim.cancel();
         this.pointerId = null;
       } else if (e.key === 'ArrowLeft' || e.key === 'ArrowRight') {
@@ -316,13 +380,18 @@ class App {
   // to play (an opponent, or in doubles our partner) on its own baseline.
   overlays() {
     const v = this.model.view;
+    this.assist = null;
     if (this.aim.phase !== 'inactive') {
       const pulling = this.aim.phase === 'pulling';
       const shot = this.aim.pendingShot();
+      const blocker = this.model.boardNow().find((b) => b.id === this.aim.placement.blockingId);
+      const blocking = blocker ? { x: blocker.x, y: blocker.y, r: radiusOf(blocker.kind, this.model.physics) } : null;
+      this.assist = pulling ? this.aimAssist.forPull(this.model, this.aim, shot) : null;
       return {
-        placing: { striker: this.aim.striker(), alpha: 1, warning: !this.aim.placement.legal },
+        placing: { striker: this.aim.striker(), alpha: 1, warning: !this.aim.placement.legal, blocking },
         aim: pulling ? { striker: this.aim.striker(), angle: shot.angle, fraction: this.aim.powerFraction() } : null,
         grabHint: this.aim.phase === 'idle',
+        assist: this.assist,
       };
     }
     if (v.inRoom && v.phase === 'aiming' && !this.model.animating() && v.toPlay !== v.you) {
@@ -340,9 +409,16 @@ class App {
       this.model.serverClock.roundTrip(p.serverMs, p.sentS, p.receivedS);
     }
     const v = this.model.view;
+    if (v.inRoom !== this.layoutInRoom) this.layout();
     this.bodies = v.inRoom ? this.model.render(now) : [];
+    // Reduced motion: a pocketed piece vanishes at once instead of dropping into the pocket.
+    if (this.reducedMotion) this.bodies = this.bodies.filter((b) => !b.falling);
     const animating = v.inRoom && this.model.animating();
     this.syncAim(now);
+    if (v.inRoom && this.model.countdownTick(now) !== null) {
+      this.countdownTicks += 1;
+      this.sound.play({ time: 0, kind: 'click', volume: 0.7 }); // the shot clock's last seconds
+    }
     for (const cue of this.model.takeSounds()) this.sound.play(cue);
     const o = this.overlays();
     const key = [v.inRoom, this.model.version, this.aim.phase, this.aim.x, this.aim.pointer.x,
@@ -357,7 +433,9 @@ class App {
       this.drawKey = key;
       this.dirty = false;
     }
-    this.hud.update(this.model, this.session, { pulling: this.aim.phase === 'pulling', muted: this.sound.muted }, now);
+    this.hud.update(this.model, this.session, { pulling: this.aim.phase === 'pulling', muted: this.settings.values.muted }, now);
+    this.help.update(v.inRoom && v.you >= 0 && ['aiming', 'moving'].includes(v.phase), v.ruleSet);
+    this.emoteView.update(this.model, now);
     this.updateLobby();
     document.body.classList.toggle('aiming', this.aim.phase === 'pulling' || this.aim.phase === 'sliding');
     // Frame time: from the frame's start (the rAF timestamp) to the end of this frame's work.
@@ -390,9 +468,12 @@ class App {
       session: { phase: this.session.phase, status: this.session.status, badFrames: this.session.badFrames() },
       inRoom: v.inRoom, code: v.code, you: v.you, ruleSet: v.ruleSet, phase: v.phase, turn: v.turn,
       toPlay: v.toPlay, winner: v.winner, gameEnd: v.gameEnd, myTurn: this.model.myTurn(),
+      log: this.model.transcript.map((l) => ({ ...l })),
+      boardSummary: v.boardSummary, countdownTicks: this.countdownTicks, options: { ...v.options },
+      boardNumber: v.boardNumber,
       animating: this.model.animating(), flipped: this.model.flipped(), turns: this.model.viewTurns(),
       panels: this.hud.panels.map((p) => ({ ...p })), teams: this.model.doubles() ? teamSummaries(v) : [],
-      seats: v.seats.map((s) => ({ ...s })), queen: { ...v.queen }, aimX: v.aimX,
+      seats: v.seats.map((s) => ({ ...s })), queen: { ...v.queen }, aimX: v.aimX, aimAssist: v.aimAssist,
       board: this.model.boardNow().map((b) => ({ ...b })),
       drawn: this.renderer.drawn.map((d) => ({ ...d })),
       canvas: { left: rect.left, top: rect.top, side: this.renderer.side, dpr: this.renderer.dpr },
@@ -403,11 +484,16 @@ class App {
       shotSentTurn: this.shotSentTurn, shots: this.model.shots, lastShot: this.model.lastShot,
       frames: this.renderer.frames, paints: this.renderer.painter.paints, woodMs: this.renderer.painter.woodMs, resizes: this.resizes.slice(), sounds: this.sound.played,
       cues: { heard: this.model.cuesHeard, late: this.model.cues.late, merged: this.model.cuesMerged },
-      muted: this.sound.muted, audio: this.sound.context ? this.sound.context.state : 'none',
-      hash: window.location.hash,
+      muted: this.settings.values.muted, settings: { ...this.settings.values }, audio: this.sound.context ? this.sound.context.state : 'none',
+      hash: window.location.hash, logPlace: this.stage.dataset.log ?? null,
       releaseMs: this.releaseMs ?? null,
       engine: { loaded: Boolean(this.engine), ms: this.engineMs ?? null, error: this.engineError ?? null },
       prediction: this.model.prediction ? { active: this.model.prediction.active, ...this.model.prediction.stats } : null,
+      emotes: {
+        received: this.model.emotes.received, visible: this.model.emotes.visible(performance.now() / 1000),
+        mutedSeats: [...this.model.emotes.mutedSeats], allMuted: this.model.emotes.allMuted,
+      },
+      assist: this.aimAssist.debugState(this.assist),
     };
   }
 

@@ -2,12 +2,15 @@
 // seats with names, colours, dues and scores (in doubles: the two teams in the top bar and one
 // panel per seat on the board's frame at that seat's side, seat_panels.js); whose turn and the
 // shot clock; the queen; room,
-// rule set, board number, coins left and spectators; the connection and round trip; short
-// messages over the board; the room code with its shareable link while waiting; the result and
+// rule set, board number, coins left and spectators; the connection and round trip; the message
+// log beside or under the board (side_layout.js); the room code with its shareable link while waiting; the result and
 // why the game ended, with Rematch and Lobby; the reconnecting notice. Text is written to the
 // DOM only when it changed, so a frame costs almost nothing here.
 
-import { countWords, ruleSetName } from './plain_words.js';
+import { boardSummaryText } from './board_summary_text.js';
+import { gameOverText } from './game_over_text.js';
+import { COUNTDOWN_S } from './match_model.js';
+import { coinsLeftText, countWords, ruleSetName, targetWords } from './plain_words.js';
 import { roomLink } from './room_link.js';
 import { freeSeats, seatPanels, teamSummaries } from './seat_panels.js';
 
@@ -36,14 +39,18 @@ function queenText(model) {
 }
 
 export class Hud {
-  // actions: {rematch(), lobby(), retry(), cancelAim(), toggleMute(), copyLink()}
+  // actions: {rematch(), lobby(), leave(), retry(), cancelAim(), toggleMute(), help(), settings(),
+  // copyLink(), dismissSummary()}
   constructor(actions) {
     this.el = {
       top: $('top-bar'), seats: [$('seat-left'), $('seat-right')], status: $('status-line'),
       queen: $('queen-line'), room: $('room-info'), coins: $('coins-left'), conn: $('connection'),
       messages: $('messages'), waiting: $('waiting'), code: $('waiting-code'),
       link: $('waiting-link'), over: $('game-over'), result: $('game-over-result'),
-      rematch: $('rematch'), notice: $('notice'), noticeTitle: $('notice-title'),
+      rematch: $('rematch'), overReason: $('game-over-reason'), overScore: $('game-over-score'),
+      overWaiting: $('game-over-waiting'), summary: $('board-summary'),
+      summaryTitle: $('board-summary-title'), summaryPoints: $('board-summary-points'),
+      summaryColours: $('board-summary-colours'), notice: $('notice'), noticeTitle: $('notice-title'),
       noticeText: $('notice-text'), retry: $('retry'), cancel: $('cancel-aim'), mute: $('mute'),
       leave: $('leave'), copy: $('copy-link'), share: $('waiting-share'),
       frameSeats: [...document.querySelectorAll('.frame-seat')],
@@ -51,8 +58,16 @@ export class Hud {
     this.panels = []; // what the frame panels show (doubles), for the debug hook
     this.messagesKey = '';
     this.el.rematch.addEventListener('click', () => actions.rematch());
+    this.el.summary.addEventListener('click', () => actions.dismissSummary());
     $('to-lobby').addEventListener('click', () => actions.lobby());
-    this.el.leave.addEventListener('click', () => actions.lobby());
+    this.el.leave.addEventListener('click', () => actions.leave());
+    this.el.help = $('help');
+    this.el.settings = $('settings-open');
+    this.el.help.addEventListener('click', () => actions.help());
+    this.el.settings.addEventListener('click', () => actions.settings());
+    this.el.leaveAsk = $('leave-ask');
+    this.el.leaveAskText = $('leave-ask-text');
+    this.el.wrap = $('board-wrap');
     this.el.retry.addEventListener('click', () => actions.retry());
     this.el.cancel.addEventListener('click', () => actions.cancelAim());
     this.el.mute.addEventListener('click', () => actions.toggleMute());
@@ -72,7 +87,9 @@ export class Hud {
     let name = s.occupied ? s.name : '(empty seat)';
     if (s.occupied && !s.connected) name += ' (away)';
     if (seat === v.you) name += ' (you)';
+    // The colour, and while the seat plays: what it has left to pocket (as the desktop client).
     let sub = s.colour === 'none' ? '' : s.colour;
+    if (s.occupied) sub = coinsLeftText(model.coinsLeft(), v.ruleSet, s.colour) || sub;
     this.fill(el, name, sub, s);
   }
 
@@ -80,9 +97,18 @@ export class Hud {
   team(el, model, t) {
     setHidden(el, false);
     setClass(el, 'to-play', t.toPlay);
+    // Ours: "You & Ravi" (partner named), with "your team"; theirs: their names, "opponents".
+    const v = model.view;
     let name = t.names;
-    if (t.ours) name += ' (your team)';
     let sub = t.colour === 'none' ? '' : t.colour;
+    if (t.ours) {
+      const partner = t.seats.find((i) => i !== v.you && v.seats[i].occupied);
+      name = partner === undefined ? 'You' : `You & ${v.seats[partner].name}`;
+      sub = `your team${sub ? `, ${sub}` : ''}`;
+    } else if (v.you >= 0) {
+      sub = `opponents${sub ? `, ${sub}` : ''}`;
+    }
+    if (name === '') name = 'Nobody yet';
     if (t.free > 0) sub += `${sub ? ', ' : ''}${countWords(t.free, 'seat', 'seats')} free`;
     this.fill(el, name, sub, t);
   }
@@ -117,7 +143,7 @@ export class Hud {
       const parts = this.parts(el);
       let name = p.name;
       if (p.away) name += ' (away)';
-      else if (p.bot) name += ' (bot)';
+      else if (p.bot && !name.startsWith('Bot')) name += ' (bot)'; // server bots say so already
       setText(parts.name, name);
       setText(parts.tag, p.tag);
       setText(parts.dues, p.dues > 0 ? `owes ${p.dues}` : '');
@@ -152,10 +178,24 @@ export class Hud {
     }
     const left = model.shotClockLeft(now);
     if (left !== null) {
-      text += `  ${Math.ceil(left)} s`;
-      if (left < 5) tone = 'alert';
+      const hurry = left <= COUNTDOWN_S;
+      text += `  ${Math.ceil(left)}${hurry && model.myTurn() ? ' s left!' : ' s'}`;
+      if (hurry) tone = 'alert';
     }
     return { text, tone };
+  }
+
+  // The question before leaving a running game: `consequence` is what leaving costs; null hides it.
+  askLeave(consequence) {
+    setHidden(this.el.leaveAsk, consequence === null);
+    if (consequence !== null) {
+      setText(this.el.leaveAskText, consequence);
+      $('leave-stay').focus();
+    }
+  }
+
+  leaveAsked() {
+    return !this.el.leaveAsk.hidden;
   }
 
   // Everything the HUD shows, from the model and the session, at local time `now`.
@@ -178,25 +218,30 @@ export class Hud {
       setText(e.status, status.text);
       e.status.dataset.tone = status.tone;
       setText(e.queen, queenText(model));
-      let room = `Room ${v.code} · ${ruleSetName(v.ruleSet)} · Board ${v.boardNumber}`;
+      let room = `Room ${v.code} · ${ruleSetName(v.ruleSet)} `
+        + `${targetWords(v.ruleSet, v.options.target_points)} · Board ${v.boardNumber}`;
       if (v.spectators > 0) room += ` · ${countWords(v.spectators, 'spectator', 'spectators')}`;
       if (v.you < 0) room += ' · spectating';
       setText(e.room, room);
-      const c = model.coinsLeft();
-      let coins = `Left: ${c.white} white, ${c.black} black`;
-      if (v.queen.state !== 'none') coins += c.queen > 0 ? ', queen' : '';
-      setText(e.coins, coins);
+      // What is left to pocket is said per seat (the seat boxes), as the desktop client does.
+      setText(e.coins, '');
     } else {
       setText(e.room, '');
       setText(e.coins, '');
     }
-    let conn = session.status;
+    // While the link is lost the card over the board has the details; the bar its title, so that
+    // the bar keeps one short line.
+    const lost = v.inRoom && ['reconnecting', 'failed', 'connecting', 'greeting'].includes(session.phase);
+    let conn = lost ? (session.phase === 'failed' ? 'Disconnected' : 'Reconnecting...') : session.status;
     if (session.rttMs !== null && session.phase === 'in_room') conn += ` · RTT ${Math.round(session.rttMs)} ms`;
     const p = model.prediction?.stats;
     if (p && p.strokes > 0 && session.phase === 'in_room') conn += ` · predicted ${p.strokes}, corrected ${p.corrections}`;
     setText(e.conn, conn);
     setClass(e.conn, 'alert', !['in_room', 'lobby', 'joining', 'idle'].includes(session.phase));
     setHidden(e.leave, !v.inRoom);
+    setHidden(e.help, !v.inRoom);
+    setHidden(e.settings, !v.inRoom);
+    if (!v.inRoom) setHidden(e.leaveAsk, true);
     setHidden(e.cancel, !ui.pulling);
     setText(e.mute, ui.muted ? 'Sound: off' : 'Sound: on');
     e.mute.setAttribute('aria-pressed', ui.muted ? 'false' : 'true');
@@ -213,18 +258,41 @@ export class Hud {
         ? 'Share this link: your partner and your opponents open it and play.'
         : 'Share this link: your opponent opens it and plays.');
     }
+    const summary = v.inRoom && model.boardSummaryShown(now) && !trouble;
+    setHidden(e.summary, !summary);
+    if (summary) {
+      const t = boardSummaryText(v);
+      setText(e.summaryTitle, t.title);
+      setText(e.summaryPoints, t.points);
+      setText(e.summaryColours, t.colours);
+      setHidden(e.summaryColours, t.colours === '');
+    }
     const over = v.inRoom && v.phase === 'game_over' && !model.animating() && !trouble;
     setHidden(e.over, !over);
     if (over) {
-      setText(e.result, v.gameEnd ? v.gameEnd.sentence : 'The game is over');
-      setHidden(e.rematch, v.you < 0);
-      e.rematch.disabled = v.rematchAsked;
+      const t = gameOverText(v, v.rematchAsked);
+      setText(e.result, t.title);
+      setText(e.overReason, t.reason);
+      setText(e.overScore, t.score);
+      setText(e.overWaiting, t.waiting);
+      setHidden(e.overWaiting, t.waiting === '');
+      // Withdrawn once a player left: the server would wait for an empty seat.
+      setHidden(e.rematch, v.you < 0 || t.opponentLeft);
+      e.rematch.disabled = !t.canRematch;
       setText(e.rematch, v.rematchAsked ? 'Rematch asked…' : 'Rematch');
     }
     setHidden(e.notice, !trouble);
+    setClass(e.wrap, 'dimmed', trouble);
     if (trouble) {
       setText(e.noticeTitle, session.phase === 'failed' ? 'Disconnected' : 'Reconnecting');
-      setText(e.noticeText, session.status);
+      let text = session.status;
+      // The server holds the seat for its grace period: the tries go on that long (docs/protocol.md,
+      // "Resume"), the countdown in whole seconds.
+      const held = session.seatHeldForS(now);
+      if (session.phase !== 'failed' && held !== null) {
+        text += ` Your seat is held; giving up in ${Math.ceil(held)} s.`;
+      }
+      setText(e.noticeText, text);
       setHidden(e.retry, session.phase !== 'failed');
     }
   }

@@ -25,6 +25,12 @@ export const OPTION_RANGES = Object.freeze({
   shotClock: Object.freeze([0, PROTOCOL.maxShotClockS]),
 });
 
+// The lobby's answer to a missing name (the protocol counts UTF-8 bytes: an accented letter
+// takes two of the 24).
+export function nameMissingSentence() {
+  return `Type your name first: 1 to ${PROTOCOL.maxNameBytes} letters (accented letters count twice).`;
+}
+
 // Gives the lobby's inputs the protocol's limits (index.html spells none of them): the name's and
 // the room code's lengths, the match options' ranges. inputs: {name, code, targetPoints, boards,
 // shotClock}, the form's input elements.
@@ -137,7 +143,7 @@ export class Lobby {
   submit(action) {
     const name = this.name.value.trim();
     if (!isPlayerName(name)) {
-      this.setError(`Enter a name first (1 to ${PROTOCOL.maxNameBytes} bytes, no control characters).`);
+      this.setError(nameMissingSentence());
       this.name.focus();
       return;
     }

@@ -11,11 +11,13 @@
 // snapshot has not arrived yet wait for it. Local times in s (performance.now() / 1000).
 
 import { makeBoardGeometry, PHYSICS } from './board_geometry.js';
+import { EmoteBoard } from './emotes.js';
 import { HudLog } from './hud_log.js';
 import { InterpolationBuffer } from './interpolation_buffer.js';
 import { PLAYOUT_DEFAULTS, PlayoutClock } from './playout_clock.js';
 import {
-  countWords, errorSentence, gameEndSentence, pocketList, queenSentence,
+  duesSentence, errorSentence, forfeitSentence, foulCost, foulSentence, gameEndSentence,
+  pocketList, queenSentence, strokePoints,
 } from './plain_words.js';
 import { DEFAULT_MOTION } from './protocol.js';
 import { ShotPrediction } from './prediction.js';
@@ -24,6 +26,9 @@ import { ServerClock } from './server_clock.js';
 import { loudnessFromImpulse, SoundCueQueue } from './sound_cues.js';
 
 const TURNS_KEPT = 8;
+const TRANSCRIPT_LINES = 200;
+export const COUNTDOWN_S = 5;
+export const BOARD_SUMMARY_S = 6; // the card between boards, unless dismissed // the shot clock's last seconds, counted down aloud
 const PENDING_CUES_KEPT = 256; // cues of turns whose first snapshot has not arrived
 
 function emptyView() {
@@ -43,10 +48,14 @@ function emptyView() {
     winner: -1,
     deadlineMs: null, // shot clock, server clock
     aimX: null, // the shooter's live striker x (aim events)
+    aimAssist: true, // room_state's aim_assist
     // {winner, reason, sentence} once the game ended; reason: the name the journal, the Match API
     // and carrom-bot give the end (game_end's rule code, or its reason from a server without one).
     gameEnd: null,
     rematchAsked: false,
+    // The board that ended last, for the card before the next board: {board, winner, points,
+    // shownAt (local s)}; null once dismissed or when the game ended with it.
+    boardSummary: null,
   };
 }
 
@@ -57,6 +66,8 @@ export class MatchModel {
     this.serverClock = new ServerClock();
     this.log = new HudLog();
     this.prediction = null; // a ShotPrediction once the engine is loaded (setEngine)
+    this.transcript = []; // every line said, the newest TRANSCRIPT_LINES (the debug hook's)
+    this.emotes = new EmoteBoard(); // kept across rooms: the mutes are the player's choice
     this.reset();
   }
 
@@ -68,6 +79,7 @@ export class MatchModel {
   // Forget the room (left it, or the seat is gone).
   reset() {
     this.view = emptyView();
+    this.emotes?.clear();
     this.playout = new PlayoutClock();
     this.buffer = new InterpolationBuffer(this.geometry);
     this.cues = new SoundCueQueue();
@@ -79,6 +91,9 @@ export class MatchModel {
     this.cuesMerged = 0; // cues played as one with another of their kind at the same time
     this.lastProtoSeq = null;
     this.lastDue = null; // the stroke's last due event: {team, owed}
+    // The seat whose forfeit the last shot_result reported (game_end's line names it), or -1.
+    this.forfeitSeat = -1;
+    this.lastTick = null; // 'turn|second' of the last countdown tick
     this.nextSeq = 1;
     this.lastRender = 0;
     this.shots = 0; // shot results received
@@ -101,11 +116,18 @@ export class MatchModel {
       case 'shot_result': this.onShotResult(m, localS); break;
       case 'error':
         this.dropUnconfirmedPrediction(); // the shot was refused
-        this.log.post(errorSentence(m), 'error', localS);
+        this.say(errorSentence(m), 'error', localS);
         break;
       default: return;
     }
     this.version += 1;
+  }
+
+  // Posts a line for the HUD and keeps it in the transcript.
+  say(text, tone, localS) {
+    this.transcript.push({ text, tone });
+    if (this.transcript.length > TRANSCRIPT_LINES) this.transcript.shift();
+    this.log.post(text, tone, localS);
   }
 
   myTurn() {
@@ -168,6 +190,30 @@ export class MatchModel {
     return this.serverClock.secondsUntil(v.deadlineMs, localS);
   }
 
+  // The seconds of our own shot clock's last COUNTDOWN_S, each once per turn (5, 4, ... 1) as it
+  // is reached: the page plays a tick for it. null otherwise.
+  countdownTick(localS) {
+    const left = this.shotClockLeft(localS);
+    if (left === null || !this.myTurn() || left <= 0 || left > COUNTDOWN_S) return null;
+    const secs = Math.ceil(left);
+    const key = `${this.view.turn}|${secs}`;
+    if (this.lastTick === key) return null;
+    this.lastTick = key;
+    return secs;
+  }
+
+  // The summary card of the board that just ended: shown BOARD_SUMMARY_S after its board_end,
+  // unless dismissed or the game ended with it.
+  boardSummaryShown(localS) {
+    const b = this.view.boardSummary;
+    return b !== null && this.view.phase !== 'game_over' && localS < b.shownAt + BOARD_SUMMARY_S;
+  }
+
+  dismissBoardSummary() {
+    this.view.boardSummary = null;
+    this.version += 1;
+  }
+
   kindOf(id) {
     return this.kinds.get(id) ?? 'black';
   }
@@ -198,6 +244,7 @@ export class MatchModel {
     }
     Object.assign(v, {
       inRoom: true, code: m.code, you: m.you, ruleSet: m.rule_set, options: m.options,
+      aimAssist: m.aim_assist, // the first-contact guide is allowed (practice and unrated games)
       spectators: m.spectators, boardNumber: m.board_number, turn: m.turn, toPlay: m.to_play,
       phase: m.phase, queen: m.queen, winner: m.winner,
       deadlineMs: m.shot_clock_deadline_ms ?? null,
@@ -219,7 +266,7 @@ export class MatchModel {
     });
     this.buffer.push({ seq: this.nextSeq++, time: this.continuousNow(localS), keyframe: true, bodies });
     if (joined) {
-      this.log.post(m.you >= 0 ? `Joined room ${m.code}` : `Watching room ${m.code}`, 'info', localS);
+      this.say(m.you >= 0 ? `Joined room ${m.code}` : `Watching room ${m.code}`, 'info', localS);
     }
   }
 
@@ -345,12 +392,12 @@ export class MatchModel {
 
   onEvent(e, localS) {
     const v = this.view;
-    const post = (text, tone) => this.log.post(text, tone, localS);
+    const post = (text, tone) => this.say(text, tone, localS);
     switch (e.kind) {
       case 'collision': this.cue(e.turn, e.t, 'click', loudnessFromImpulse(e.impulse)); break;
       case 'cushion': this.cue(e.turn, e.t, 'cushion', 0.8 * loudnessFromImpulse(e.impulse)); break;
       case 'pocket': this.cue(e.turn, e.t, 'pocket', 1); break;
-      case 'foul': post(`${this.seatName(e.seat)}: ${e.message}`, 'foul'); break;
+      case 'foul': break; // said with its stroke's shot_result
       case 'queen':
         v.queen = e.queen;
         post(queenSentence(e.queen, this.seatName(e.queen.seat)), 'info');
@@ -364,8 +411,8 @@ export class MatchModel {
         const last = this.lastDue;
         const repeat = last !== null && last.team === team && last.owed === e.owed;
         this.lastDue = { team, owed: e.owed };
-        const who = this.doubles() ? `${this.teamName(team)} owe` : `${this.seatName(e.seat)} owes`;
-        if (e.owed > 0 && !repeat) post(`${who} ${countWords(e.owed, 'due', 'dues')}`, 'foul');
+        const who = this.doubles() ? this.teamName(team) : this.seatName(e.seat);
+        if (e.owed > 0 && !repeat) post(duesSentence(who, this.doubles(), e.owed), 'foul');
         break;
       }
       case 'turn':
@@ -374,23 +421,33 @@ export class MatchModel {
           turn: e.turn, toPlay: e.seat, deadlineMs: e.deadline_ms ?? null, phase: 'aiming',
           aimX: null,
         });
-        post(e.seat === v.you ? 'Your turn' : `${this.seatName(e.seat)} to play`, 'info');
+        // Not said: the status line names the seat to play ('Your turn').
         break;
       case 'board_end':
         e.scores.forEach((score, i) => this.setSeat(i, { score }));
         v.phase = 'board_over';
-        post(e.winner >= 0 ? `Board ${e.board} to ${this.teamName(e.winner)} (+${e.points})`
+        v.boardSummary = { board: e.board, winner: e.winner, points: e.points, shownAt: localS };
+        // Freestyle scores each stroke: its board_end adds no points, so none are named.
+        post(e.winner >= 0
+          ? `Board ${e.board} to ${this.teamName(e.winner)}${e.points > 0 ? ` (+${e.points})` : ''}`
           : `Board ${e.board} ends, no winner`, 'good');
         break;
       case 'game_end': {
         e.scores.forEach((score, i) => this.setSeat(i, { score }));
         v.winner = e.winner;
         v.phase = 'game_over';
+        v.boardSummary = null; // the game-over panel says it
         const sentence = gameEndSentence(e.winner, this.ourTeam(e.winner), this.teamName(e.winner),
           e.reason, v.you < 0, this.doubles());
         // Said by the result panel (hud.js), as the desktop client's game-over panel says it: no
         // HUD line.
-        v.gameEnd = { winner: e.winner, reason: e.rule || e.reason, sentence };
+        // why: game_end's reason for the panel's sentence (game_over_text.js); names: the
+        // seats' names at the end (a player may leave afterwards).
+        v.gameEnd = {
+          winner: e.winner, reason: e.rule || e.reason, why: e.reason, sentence,
+          scores: e.scores, names: v.seats.map((s) => (s.occupied ? s.name : '')),
+        };
+        this.onForfeitEnd(e, localS);
         break;
       }
       case 'player_dropped': {
@@ -405,6 +462,9 @@ export class MatchModel {
         break;
       case 'aim':
         if (e.seat !== v.you && e.turn === v.turn) v.aimX = e.x;
+        break;
+      case 'emote':
+        this.emotes.receive(e.seat, e.emote, localS);
         break;
       default:
         break;
@@ -426,10 +486,38 @@ export class MatchModel {
     v.turn = m.next_turn;
     v.toPlay = m.next_seat;
     const kinds = m.pocketed.map((id) => this.kindOf(id));
-    if (kinds.length > 0) this.log.post(`${this.seatName(m.seat)} pocketed ${pocketList(kinds)}`, 'good', localS);
-    if (m.extra_turn && !m.game_over && !m.board_over) {
-      this.log.post(`${this.seatName(m.seat)} plays again`, 'info', localS);
+    const points = m.points[m.seat] ?? 0;
+    const fouled = m.fouls.length > 0;
+    const name = this.seatName(m.seat);
+    if (kinds.length > 0) {
+      this.say(`${name} pocketed ${pocketList(kinds)}${strokePoints(points)}`,
+        fouled ? 'foul' : 'good', localS);
     }
+    for (const foul of m.fouls) {
+      if (foul.rule === 'forfeit') this.forfeitSeat = m.seat; // said with game_end (its reason)
+      else this.say(foulSentence(name, foul.message), 'foul', localS);
+    }
+    const cost = fouled ? foulCost(m.returned.map((id) => this.kindOf(id)), points) : '';
+    if (cost !== '') this.say(cost, 'foul', localS);
+    if (m.extra_turn && !m.game_over && !m.board_over) {
+      this.say(`${this.seatName(m.seat)} plays again`, 'info', localS);
+    }
+  }
+
+  // "Asha left the match: Ravi wins by forfeit", from the reader's side: good news for the
+  // winners, a warning for the losers.
+  onForfeitEnd(e, localS) {
+    const leaver = this.forfeitSeat;
+    this.forfeitSeat = -1;
+    if ((e.reason !== 'left' && e.reason !== 'forfeit') || leaver < 0 || e.winner < 0) return;
+    const doubles = this.doubles();
+    const ours = this.ourTeam(e.winner);
+    const winner = ours ? (doubles ? 'your team' : 'you') : this.teamName(e.winner);
+    let tone = 'info';
+    if (ours) tone = 'good';
+    else if (this.view.you >= 0) tone = 'foul';
+    this.say(forfeitSentence(this.seatName(leaver), e.reason, winner, doubles ? !ours : ours),
+      tone, localS);
   }
 
   // The board to draw at localS; sound cues that became due are kept for takeSounds().

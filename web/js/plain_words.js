@@ -53,6 +53,42 @@ export function gameEndSentence(winner, weWon, winnerName, reason, spectator = f
   return `${weWon ? 'You win the game' : `${winnerName} wins the game`}${why}`;
 }
 
+// A foul, in the warning colour: "Foul by Asha: The striker went into a pocket." (the server's
+// sentence for the foul).
+export function foulSentence(name, message) {
+  return `Foul by ${name}: ${message}`;
+}
+
+// What a stroke's fouls cost besides the turn and dues: the pieces back to the centre and the
+// points lost, e.g. "Cost: 1 white coin back to the centre and 10 points"; '' when none.
+export function foulCost(returned, points) {
+  const parts = [];
+  if (returned.length > 0) parts.push(`${pocketList(returned)} back to the centre`);
+  if (points < 0) parts.push(countWords(-points, 'point', 'points'));
+  return parts.length === 0 ? '' : `Cost: ${parts.join(' and ')}`;
+}
+
+// A stroke's points where each stroke scores (freestyle): " (+20)", " (-10)"; '' for 0.
+export function strokePoints(points) {
+  if (points === 0) return '';
+  return ` (${points > 0 ? '+' : ''}${points})`;
+}
+
+// A team's unpaid dues: "Asha owes 1 due: the next coin Asha pockets goes back to the centre".
+export function duesSentence(subject, plural, owed) {
+  const coin = owed === 1 ? 'the next coin ' : 'the next coins ';
+  const goes = owed === 1 ? ' goes' : ' go';
+  return `${subject}${plural ? ' owe ' : ' owes '}${countWords(owed, 'due', 'dues')}: ${coin}`
+    + `${plural ? 'they pocket' : `${subject} pockets`}${goes} back to the centre`;
+}
+
+// "Asha left the match: Ravi wins by forfeit" (reason "left"), "Asha did not come back in time:
+// you win by forfeit" (reason "forfeit"); plural: the winners are a pair, or "you".
+export function forfeitSentence(leaver, reason, winner, plural) {
+  const what = reason === 'left' ? ' left the match: ' : ' did not come back in time: ';
+  return `${leaver}${what}${winner}${plural ? ' win' : ' wins'} by forfeit`;
+}
+
 const ERROR_WORDS = {
   room_not_found: 'There is no room with that code. Check the code and try again.',
   room_full: 'That room is full. You can join it as a spectator.',
@@ -85,6 +121,35 @@ export function ruleSetName(ruleSet) {
   return {
     icf: 'ICF rules', seed: 'Classic (seed) rules', freestyle: 'Freestyle', discpool: 'Disc pool',
   }[ruleSet] ?? 'Unknown rules';
+}
+
+// The game's target for the HUD: "to 25, scored at board end" (icf, seed: a board's
+// points come when it ends), "first to 40 points" (freestyle), "to 25 points" (discpool).
+export function targetWords(ruleSet, targetPoints) {
+  const points = countWords(targetPoints, 'point', 'points');
+  if (ruleSet === 'icf' || ruleSet === 'seed') return `to ${targetPoints}, scored at board end`;
+  if (ruleSet === 'freestyle') return `first to ${points}`;
+  return `to ${points}`;
+}
+
+// What a seat has left to pocket (client/src/coins_left.cpp and coins_left_text): "7 white +
+// queen left", "12 coins left" (freestyle: every coin), "no black left"; '' while the seat has
+// no colour. left: {white, black, queen} on the board.
+export function coinsLeftText(left, ruleSet, colour) {
+  const queen = ruleSet !== 'discpool' && left.queen > 0;
+  let coins;
+  let what;
+  if (ruleSet === 'freestyle') {
+    coins = left.white + left.black;
+    what = coins === 1 ? 'coin' : 'coins';
+  } else if (colour === 'white' || colour === 'black') {
+    coins = left[colour];
+    what = colour;
+  } else {
+    return '';
+  }
+  if (coins === 0) return queen ? 'only the queen left' : `no ${what} left`;
+  return `${coins} ${what}${queen ? ' + queen' : ''} left`;
 }
 
 // A WebSocket close code in plain words (docs/protocol.md, "Close codes").

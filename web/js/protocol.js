@@ -3,6 +3,7 @@
 // decoder checks the fields this client reads, so a malformed frame is reported and ignored
 // instead of breaking the page.
 
+import { EMOTE_IDS } from './emotes.js';
 import { PHYSICS, PROTOCOL } from './physics_config.js';
 
 // The server's own values (physics_config.js, generated from proto/version.hpp and limits.hpp).
@@ -108,6 +109,8 @@ export function shoot(turn, x, angle, power) {
 export const rematch = () => ({ type: 'rematch' });
 export const leave = () => ({ type: 'leave' });
 export const ping = (nonce) => ({ type: 'ping', nonce });
+// A quick reaction: one of EMOTE_IDS (emotes.js).
+export const emote = (id) => ({ type: 'emote', emote: id });
 
 // ---- server -> client ----
 
@@ -193,6 +196,9 @@ function roomState(m) {
   int(m, 'to_play');
   optInt(m, 'shot_clock_deadline_ms');
   int(m, 'server_time_ms');
+  // Absent (a server before aim assist): allowed.
+  if (m.aim_assist === undefined) m.aim_assist = true;
+  need(isBool(m.aim_assist), 'aim_assist', 'a boolean');
   oneOf(m, 'phase', PHASES);
   m.queen = queen(m.queen, 'queen');
   int(m, 'winner');
@@ -246,6 +252,7 @@ const EVENT_FIELDS = {
   player_dropped: (m) => { int(m, 'seat'); int(m, 'grace_deadline_ms'); int(m, 'server_time_ms'); },
   player_returned: (m) => { int(m, 'seat'); },
   aim: (m) => { int(m, 'seat'); int(m, 'turn'); num(m, 'x'); },
+  emote: (m) => { int(m, 'seat'); need(EMOTE_IDS.includes(m.emote), 'emote', 'a known emote'); },
 };
 
 const SERVER_FIELDS = {
@@ -263,6 +270,10 @@ const SERVER_FIELDS = {
     intArray(m, 'dues'); m.queen = queen(m.queen, 'queen'); int(m, 'next_turn');
     int(m, 'next_seat'); need(isBool(m.extra_turn), 'extra_turn', 'a boolean');
     need(isBool(m.board_over) && isBool(m.game_over), 'game_over', 'a boolean');
+    for (const k of ['returned', 'points', 'fouls']) m[k] ??= []; // absent: none
+    intArray(m, 'returned'); intArray(m, 'points');
+    need(Array.isArray(m.fouls) && m.fouls.every((f) => f && isStr(f.rule) && isStr(f.message)),
+      'fouls', 'an array of {rule, message}');
   },
   error: (m) => { str(m, 'code'); str(m, 'message'); },
   pong: (m) => { int(m, 'nonce'); int(m, 'server_time_ms'); },

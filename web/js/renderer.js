@@ -5,8 +5,12 @@
 // layer, so a frame costs the browser the pieces, not the whole board. Coordinates: CSS px of the
 // canvas (the mapping), drawn at devicePixelRatio for sharp pictures.
 
+import { drawAimAssist } from './aim_assist.js';
 import { BoardPainter } from './board_painter.js';
 import { ScreenMapping } from './screen_mapping.js';
+
+// The striker's opacity while it overlaps a piece (the piece shows through it).
+export const OVERLAP_ALPHA = 0.45;
 
 export class Renderer {
   constructor(canvas, background, geometry) {
@@ -49,8 +53,9 @@ export class Renderer {
       turns);
   }
 
-  // frame: {bodies, turns, placing: {striker, alpha, warning} | null,
-  //         aim: {striker, angle, fraction} | null, grabHint: bool}
+  // frame: {bodies, turns, placing: {striker, alpha, warning, blocking: {x, y, r} | null} | null,
+  //         aim: {striker, angle, fraction} | null, grabHint: bool,
+  //         assist: a guide of aim_assist.js | null (drawn with aim only)}
   draw(frame) {
     const ctx = this.ctx;
     const m = this.mapping(frame.turns);
@@ -75,6 +80,7 @@ export class Renderer {
     }
     ctx.globalAlpha = 1;
     if (frame.aim) this.drawAim(m, frame.aim);
+    if (frame.aim && frame.assist) drawAimAssist(ctx, m, frame.aim.striker, frame.assist, this.geometry.strikerR);
     if (frame.placing) this.drawPlacing(m, sprites, cell, frame.placing, frame.grabHint);
     // The aim guide and the labels reach anywhere: the next frame clears everything.
     this.dirtyAll = Boolean(frame.aim || (frame.placing && (frame.placing.warning || frame.grabHint)));
@@ -149,21 +155,33 @@ export class Renderer {
       ctx.arc(p.x, p.y, r + 5, 0, 2 * Math.PI);
       ctx.stroke();
     }
-    ctx.globalAlpha = placing.alpha;
+    // Over a piece the striker is see-through, so the piece under it stays visible.
+    ctx.globalAlpha = placing.warning ? OVERLAP_ALPHA : placing.alpha;
     ctx.drawImage(sprites.byKind.striker, p.x - cell / 2, p.y - cell / 2, cell, cell);
     this.markDirty(p.x - cell / 2, p.y - cell / 2, cell);
     ctx.globalAlpha = 1;
-    this.drawn.push({ id: -1, kind: 'striker', x: placing.striker.x, y: placing.striker.y, sx: p.x, sy: p.y, falling: false });
+    this.drawn.push({
+      id: -1, kind: 'striker', x: placing.striker.x, y: placing.striker.y, sx: p.x, sy: p.y, falling: false,
+      alpha: placing.warning ? OVERLAP_ALPHA : placing.alpha,
+    });
     if (placing.warning) {
-      ctx.fillStyle = 'rgba(220,30,30,0.55)';
-      ctx.beginPath();
-      ctx.arc(p.x, p.y, r, 0, 2 * Math.PI);
-      ctx.fill();
       ctx.strokeStyle = 'rgb(230,20,20)';
       ctx.lineWidth = 3;
       ctx.beginPath();
       ctx.arc(p.x, p.y, r + 2, 0, 2 * Math.PI);
       ctx.stroke();
+      if (placing.blocking) {
+        // The piece in the way, outlined on top of everything.
+        const b = m.toScreen(placing.blocking);
+        const br = m.lengthToScreen(placing.blocking.r);
+        ctx.strokeStyle = 'rgb(255,230,60)';
+        ctx.lineWidth = 2.5;
+        ctx.setLineDash([4, 3]);
+        ctx.beginPath();
+        ctx.arc(b.x, b.y, br + 2, 0, 2 * Math.PI);
+        ctx.stroke();
+        ctx.setLineDash([]);
+      }
       this.label('Overlaps a piece', p.x, p.y + m.lengthToScreen(this.geometry.strikerR + 16), m,
         'rgb(255,90,80)');
     }

@@ -33,7 +33,7 @@ export function seatPanels(view) {
     return {
       seat: i,
       at: screenSide(s.baseline, turns),
-      name: s.occupied ? s.name : '(empty seat)',
+      name: s.occupied ? s.name : 'Free seat',
       tag,
       team: s.team,
       colour: s.colour,
@@ -61,7 +61,8 @@ export function teamSummaries(view) {
     return {
       team,
       seats,
-      names: seats.map((i) => (view.seats[i].occupied ? view.seats[i].name : '(empty seat)')).join(' & '),
+      // The players seated (a free seat is counted in `free`, not named).
+      names: seats.filter((i) => view.seats[i].occupied).map((i) => view.seats[i].name).join(' & '),
       ours: me !== null && me.team === team,
       colour: first.colour,
       score: first.score,

@@ -81,6 +81,13 @@ export class Session {
     else this.storage.removeItem('carrom.room');
   }
 
+  // Seconds left until the tries to take the seat back stop (null: no seat being taken back), at
+  // local time nowS.
+  seatHeldForS(nowS) {
+    if (this.core.tries === 0 || ['idle', 'lobby', 'joining', 'in_room', 'failed'].includes(this.phase)) return null;
+    return Math.max(this.core.givesUpAtS() - nowS, 0);
+  }
+
   setStatus(status) {
     this.status = status;
     this.hooks.onChange?.();

@@ -1,8 +1,8 @@
 // Game sounds made in code with Web Audio, the same voices as the desktop client
 // (client/src/sound_synth.cpp): a wooden click (coin on coin), a dull thud (cushion) and a drop
 // and rattle (pocket), each a decaying tone with a sweep plus decaying noise, peak-normalised to
-// 0.9. The audio context starts on the first user gesture (browsers require one); the mute
-// choice is kept in localStorage.
+// 0.9. The audio context starts on the first user gesture (browsers require one); the volume and
+// the mute choice come from the settings (settings.js).
 
 const VOICES = {
   // duration s, tone start Hz, tone end Hz, tone decay s, noise amount, noise decay s
@@ -49,9 +49,9 @@ export function synthSound(kind, rate) {
 }
 
 export class SoundPlayer {
-  constructor(storage) {
-    this.storage = storage;
-    this.muted = storage?.getItem('carrom.muted') === '1';
+  constructor() {
+    this.muted = false;
+    this.volume = 1; // the settings' volume, 0..1, times each cue's own
     this.context = null;
     this.buffers = null;
     this.voices = []; // sources playing, oldest first
@@ -88,9 +88,9 @@ export class SoundPlayer {
     }
   }
 
-  setMuted(muted) {
+  configure({ volume, muted }) {
+    this.volume = volume / 100;
     this.muted = muted;
-    this.storage?.setItem('carrom.muted', muted ? '1' : '0');
   }
 
   // cue: {kind, volume 0..1}
@@ -102,7 +102,8 @@ export class SoundPlayer {
     source.buffer = this.buffers[cue.kind];
     // One connection per sound, to a gain made once per loudness step: changing the audio
     // graph takes a lock the audio thread holds while it renders.
-    const level = Math.round(Math.min(Math.max(cue.volume, 0), 1) * (LEVELS - 1));
+    const level = Math.round(Math.min(Math.max(cue.volume * this.volume, 0), 1) * (LEVELS - 1));
+    if (level === 0) return;
     source.connect(this.gains[level]);
     source.onended = () => {
       const i = this.voices.indexOf(source);

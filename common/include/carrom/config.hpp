@@ -4,6 +4,7 @@
 // see docs/physics.md for where and why the model differs from the seed's frame loop.
 
 #include "carrom/body.hpp"
+#include "carrom/det_math.hpp"
 #include "carrom/vec2.hpp"
 
 #include <array>
@@ -22,7 +23,7 @@ struct PhysicsConfig {
     double striker_mass = 2.0;       //
     // Linear damping rate k in dv/dt = -k v, 1/s. The seed multiplies velocity by 0.985 every
     // 1/60 s frame, so k = 60 ln(1 / 0.985) = 0.906818... 1/s.
-    double damping_per_s = 60.0 * std::log(1.0 / 0.985);
+    double damping_per_s = 60.0 * det::log(1.0 / 0.985);
     double stop_speed_px_s = 6.0;     // a body stops when its speed falls to this (0.1 px/frame)
     double cushion_restitution = 0.8; // normal velocity scale at a cushion
     double disc_restitution = 0.9;    // coefficient e between two discs

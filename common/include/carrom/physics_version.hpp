@@ -9,6 +9,6 @@
 
 namespace carrom {
 
-inline constexpr int kPhysicsVersion = 1;
+inline constexpr int kPhysicsVersion = 2;
 
 } // namespace carrom

@@ -1,4 +1,5 @@
 #include "carrom/rules/placement.hpp"
+#include "carrom/det_math.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -156,7 +157,7 @@ std::optional<Shot> nearest_legal_shot(const MatchState& state, int seat, const 
         s.x_px = x;
         if (!std::isfinite(shot.angle_rad)) {
             const Vec2 to_centre = physics.centre() - striker_for(physics, side, s).pos_px;
-            s.angle_rad = std::atan2(to_centre.y, to_centre.x);
+            s.angle_rad = det::atan2(to_centre.y, to_centre.x);
         }
         return s;
     };

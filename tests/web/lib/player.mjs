@@ -70,6 +70,13 @@ export class Player {
     else await this.page.click(selector);
   }
 
+  // Leave a running game: Leave, then the question's Leave ("Leave and forfeit?").
+  async leaveAndForfeit() {
+    await this.press('#leave');
+    await this.page.waitForSelector('#leave-ask', { state: 'visible', timeout: 5000 });
+    await this.press('#leave-yes');
+  }
+
   async toClient(x, y) {
     return this.page.evaluate(([bx, by]) => window.carrom.toClient(bx, by), [x, y]);
   }

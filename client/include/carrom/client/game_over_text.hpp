@@ -12,8 +12,11 @@ struct GameOverText {
     std::string title;        // "You won!", "You lost", "Ana won", "A draw"
     std::string reason;       // one sentence: why the game ended
     std::string score;        // "Final score: Ana 25, Ben 13" (our seat first)
-    bool can_rematch = false; // a seated player who has not asked for one yet
-    // After asking for a rematch: who it waits for ("Waiting for Ben to agree to a rematch").
+    bool can_rematch = false; // a seated player who has not asked for one yet, at a full table
+    // Another seat is empty (its player left): no Rematch button, `waiting` says why.
+    bool opponent_left = false;
+    // After asking for a rematch: who it waits for ("Waiting for Ben to agree to a rematch"); at a
+    // table a player left: "Your opponent left the room: no rematch".
     std::string waiting;
     friend bool operator==(const GameOverText&, const GameOverText&) = default;
 };

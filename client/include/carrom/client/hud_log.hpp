@@ -1,6 +1,7 @@
 #pragma once
-// Short messages for the player (pockets, fouls, turns, errors), newest last, each shown for a
-// few seconds.
+// Short messages for the player (pockets, fouls, extra turns, errors), newest last, each shown
+// for a few seconds. Invariant: no two lines shown at once have the same text (posting a line
+// that is still shown moves it to the newest place with a new time).
 
 #include <cstddef>
 #include <deque>
@@ -25,6 +26,8 @@ public:
     // Lines still shown at local_s, oldest first.
     std::vector<HudLine> visible(double local_s) const;
     const std::deque<HudLine>& all() const { return lines_; }
+    // Forgets every line (a replay that went back in time: later lines would tell the future).
+    void clear() { lines_.clear(); }
 
 private:
     std::size_t capacity_;

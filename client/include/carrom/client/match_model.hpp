@@ -10,6 +10,7 @@
 // events for a turn whose first snapshot has not arrived yet wait for it.
 
 #include "carrom/client/coins_left.hpp"
+#include "carrom/client/emote_board.hpp"
 #include "carrom/client/hud_log.hpp"
 #include "carrom/client/interpolation_buffer.hpp"
 #include "carrom/client/match_view.hpp"
@@ -25,6 +26,7 @@
 #include "carrom/rules/seat.hpp"
 
 #include <cstdint>
+#include <deque>
 #include <map>
 #include <optional>
 #include <string>
@@ -54,6 +56,15 @@ public:
     rules::Side view_side() const;
     // Seconds left on the shot clock by the server's clock, if one runs.
     std::optional<double> shot_clock_left_s(double local_s) const;
+    // The seconds of our own shot clock's last kCountdownS, each once per turn (5, 4, ... 1) as
+    // it is reached: the app plays a tick for it. Empty otherwise.
+    std::optional<int> countdown_tick(double local_s);
+    static constexpr double kCountdownS = 5.0;
+    // The summary card of the board that just ended: shown kBoardSummaryS after its board_end,
+    // unless dismissed or the game ended with it.
+    bool board_summary_shown(double local_s) const;
+    void dismiss_board_summary() { view_.board_summary.reset(); }
+    static constexpr double kBoardSummaryS = 6.0;
     std::string seat_name(int seat) const;
     rules::Side seat_side(int seat) const { return client::seat_side(view_, seat); }
 
@@ -72,7 +83,14 @@ public:
     ServerClock& server_clock() { return server_clock_; }
     const ServerClock& server_clock() const { return server_clock_; }
     HudLog& log() { return log_; }
+    // Every line said, the newest kTranscriptLines (the HUD shows only the last few for a few
+    // seconds): what --final-state reports the player was told.
+    const std::deque<HudLine>& transcript() const { return transcript_; }
+    static constexpr std::size_t kTranscriptLines = 200;
     const HudLog& log() const { return log_; }
+    // The seats' emotes on show and the player's mutes (kept across rooms).
+    EmoteBoard& emotes() { return emotes_; }
+    const EmoteBoard& emotes() const { return emotes_; }
     const PlayoutClock& playout() const { return playout_; }
     const InterpolationBuffer& buffer() const { return buffer_; }
     // Strokes predicted, bodies corrected by the server's snapshots, the largest difference.
@@ -91,6 +109,9 @@ private:
     void on_snapshot(const proto::Snapshot& m, double local_s);
     void on_event(const proto::Event& m, double local_s);
     void on_due(const proto::DueEvent& e, double local_s);
+    // Posts a line for the HUD and keeps it in the transcript.
+    void say(std::string text, Tone tone, double local_s);
+    void on_forfeit_end(const proto::GameEndEvent& e, double local_s);
     void on_board_end(const proto::BoardEndEvent& e, double local_s);
     void on_shot_result(const proto::ShotResult& m, double local_s);
     void on_error(const proto::Error& m, double local_s);
@@ -109,6 +130,7 @@ private:
     ServerClock server_clock_;
     SoundCueSchedule sounds_;
     HudLog log_;
+    EmoteBoard emotes_;
     std::map<int, BodyKind> kinds_;
     ShotTimeline timeline_;
     // The team and dues of the last `due` event since the last shot_result: the server sends one
@@ -118,6 +140,11 @@ private:
         int owed;
     };
     std::optional<DueSaid> due_said_;
+    std::deque<HudLine> transcript_;
+    // The seat whose forfeit (a leave, or a grace period that ran out) the last shot_result
+    // reported: game_end's line names it. -1 when none.
+    int forfeit_seat_ = -1;
+    std::optional<std::pair<int, int>> last_tick_; // {turn, second} of the last countdown tick
     std::optional<std::int64_t> last_proto_seq_;
     std::uint64_t next_seq_ = 1;
     double last_render_s_ = 0.0;

@@ -40,6 +40,16 @@ struct GameResult {
 // code, or game_end's reason from a server that sends no rule.
 const std::string& game_end_name(const GameResult& result);
 
+// A board that just ended, for the summary card shown before the next board
+// (board_summary_text.hpp).
+struct BoardSummary {
+    int board = 1;
+    int winner = -1;         // the board's winning team (its first seat), -1 none
+    int points = 0;          // the points it won (0 in freestyle: every stroke scores)
+    double shown_at_s = 0.0; // local time the board ended
+    friend bool operator==(const BoardSummary&, const BoardSummary&) = default;
+};
+
 struct MatchView {
     bool in_room = false;
     std::string code;
@@ -57,6 +67,9 @@ struct MatchView {
     std::optional<std::int64_t> deadline_ms; // shot clock, server clock
     std::optional<double> aim_x_px;          // the shooter's live striker x (aim events)
     std::optional<GameResult> result;        // from game over until a new game starts
+    // The board that ended last, until its card is dismissed or the game ends with it.
+    std::optional<BoardSummary> board_summary;
+    bool aim_assist = true; // room_state's aim_assist: the first-contact guide is allowed
 };
 
 // The seat's name, or "Seat N" for a seat without one.

@@ -86,6 +86,9 @@ public:
     std::size_t current_turn() const { return turn_at(time_s_); }
     // Strokes played so far, counting the current one once its motion started ("Stroke 5 / 37").
     int stroke_number() const;
+    // Inputs (strokes, clock expiries, forfeits) played so far, counting the current one once its
+    // lead is over ("Turn 5 / 40" of turns().size()); all of them at the end.
+    int turn_number() const;
     // The rules' state shown at time t: the input's `before` until its motion ends, then its
     // `result` (the state after the last input once the journal is over, without a turn).
     const rules::MatchState& state_at_time(double time_s) const;

@@ -26,12 +26,20 @@ struct ScreenLayout {
     Rect seat_bar;   // doubles: our seat (the bottom one) with the turn, shot clock and queen;
                      // singles: empty (h = 0) at the bottom bar's top
     Rect bottom_bar; // rule set, connection, messages
+    // With a side area (the match window): the message log and the first-game tips, beside the
+    // board (right of it) or under it, never over it; else empty (w = h = 0).
+    Rect side;
 };
 
 // Bar heights scale with the window height within fixed bounds (window px). Every rect is on
 // whole window px (the board texture and the HUD layers are copied pixel for pixel). A room of
 // four seats gets a seat bar as high as the top bar between the board and the bottom bar.
-ScreenLayout make_layout(double window_w, double window_h, int seats = 2);
+// With side_area the board also leaves room for `side`: beside it (kSideAreaW px wide) or under it
+// (a tenth of the space between the bars, 56 to 110 px), whichever leaves the bigger board
+// (beside on a tie), as the web page does (web/js/side_layout.js).
+ScreenLayout make_layout(double window_w, double window_h, int seats = 2, bool side_area = false);
+inline constexpr double kSideAreaW = 240.0;
+inline constexpr double kSideAreaGap = 10.0;
 
 // Board px <-> window px. Invariant: scale > 0.
 struct ScreenMapping {

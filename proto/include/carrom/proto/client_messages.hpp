@@ -89,13 +89,19 @@ struct Rematch { // "rematch": after game over; a new game starts when every hum
 struct Leave { // "leave": give up the seat (forfeit if a game is running) or stop spectating
     friend bool operator==(const Leave&, const Leave&) = default;
 };
+// "emote": a quick reaction from a seated player, shown beside the seat in every client. The room
+// limits each seat's rate (docs/protocol.md: emote_too_fast).
+struct EmoteMessage {
+    Emote emote = Emote::NiceShot; // "emote", a name of kEmoteNames
+    friend bool operator==(const EmoteMessage&, const EmoteMessage&) = default;
+};
 struct Ping {
     std::int64_t nonce = 0; // "nonce", 0..kMaxNonce, echoed in pong
     friend bool operator==(const Ping&, const Ping&) = default;
 };
 
-using ClientMessage =
-    std::variant<Hello, CreateRoom, JoinRoom, QuickMatch, Aim, Shoot, Rematch, Leave, Ping>;
+using ClientMessage = std::variant<Hello, CreateRoom, JoinRoom, QuickMatch, Aim, Shoot, Rematch,
+                                   Leave, Ping, EmoteMessage>;
 
 // The wire "type" of a message, e.g. "hello".
 std::string_view type_name(const ClientMessage& message);

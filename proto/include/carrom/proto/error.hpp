@@ -69,6 +69,8 @@ inline constexpr std::string_view kInMotion = "in_motion";     // a shot is stil
 inline constexpr std::string_view kWrongPhase = "wrong_phase"; // e.g. shoot before both seated
 inline constexpr std::string_view kIllegalPlacement = "illegal_placement";
 inline constexpr std::string_view kIllegalShot = "illegal_shot";
+inline constexpr std::string_view kEmoteTooFast =
+    "emote_too_fast"; // a seat's emotes over the room's rate; that emote is dropped
 inline constexpr std::string_view kUnsupported = "unsupported"; // e.g. bot seats without bots
 inline constexpr std::string_view kInternal = "internal";
 } // namespace code

@@ -76,6 +76,10 @@ struct RoomState {
     int winner = -1;               // "winner": the winning team (= its first seat), -1 while none
     std::vector<BoardBody> bodies; // "bodies": the full board, every body with its kind
     MotionInfo motion;             // "motion", optional on the wire (absent: the defaults above)
+    // "aim_assist": the room allows the aim guide to the first piece the striker would touch
+    // (practice, bot and other unrated games; off in rated ones). Optional on the wire (absent:
+    // true).
+    bool aim_assist = true;
     friend bool operator==(const RoomState&, const RoomState&) = default;
 };
 
@@ -188,10 +192,16 @@ struct AimEvent { // "aim": the shooter's striker position while aiming
     friend bool operator==(const AimEvent&, const AimEvent&) = default;
 };
 
+struct EmoteEvent { // "emote": seat `seat` sent the quick reaction `emote` (not journaled)
+    int seat = 0;
+    Emote emote = Emote::NiceShot;
+    friend bool operator==(const EmoteEvent&, const EmoteEvent&) = default;
+};
+
 // "event": {"type": "event", "kind": <name above>, ...payload fields}.
 using Event = std::variant<CollisionEvent, CushionEvent, PocketEvent, FoulEvent, QueenEvent,
                            DueEvent, TurnEvent, BoardEndEvent, GameEndEvent, PlayerDroppedEvent,
-                           PlayerReturnedEvent, AimEvent>;
+                           PlayerReturnedEvent, AimEvent, EmoteEvent>;
 std::string_view event_kind(const Event& event);
 
 struct Foul {

@@ -29,6 +29,18 @@ enum class Phase : std::uint8_t { Waiting, Aiming, Moving, BoardOver, GameOver }
 enum class QueenState : std::uint8_t { OnBoard, Pending, Covered, None };
 // "on_board" "pending" "covered" "none" (a rule set without a queen: discpool)
 enum class BotLevel : std::uint8_t { Random, Easy, Medium, Hard }; // "random" "easy" ...
+// A quick reaction a seated player sends during a match (the "emote" message): a fixed set, no
+// free text. "nice_shot" "good_game" "well_played" "thanks" "good_luck" "oops" "wow" "sorry"
+enum class Emote : std::uint8_t {
+    NiceShot,
+    GoodGame,
+    WellPlayed,
+    Thanks,
+    GoodLuck,
+    Oops,
+    Wow,
+    Sorry
+};
 // The side of the board a seat shoots from: "bottom" "right" "top" "left" (the rules engine's
 // seat sides, in seat order: singles uses bottom and top). Not carrom::Baseline, which names
 // the two baselines of a scene file.
@@ -58,6 +70,15 @@ inline constexpr enum_names::Table<BotLevel, 4> kBotLevelNames{{{BotLevel::Rando
                                                                 {BotLevel::Medium, "medium"},
                                                                 {BotLevel::Hard, "hard"}}};
 
+inline constexpr enum_names::Table<Emote, 8> kEmoteNames{{{Emote::NiceShot, "nice_shot"},
+                                                          {Emote::GoodGame, "good_game"},
+                                                          {Emote::WellPlayed, "well_played"},
+                                                          {Emote::Thanks, "thanks"},
+                                                          {Emote::GoodLuck, "good_luck"},
+                                                          {Emote::Oops, "oops"},
+                                                          {Emote::Wow, "wow"},
+                                                          {Emote::Sorry, "sorry"}}};
+
 std::string_view to_string(RuleSet value);
 // The rules engine's rule set for a wire rule set (the two enums list the same rule sets).
 rules::RuleSet to_rules(RuleSet value);
@@ -66,6 +87,7 @@ std::string_view to_string(Colour value);
 std::string_view to_string(Phase value);
 std::string_view to_string(QueenState value);
 std::string_view to_string(BotLevel value);
+std::string_view to_string(Emote value);
 std::string_view baseline_name(Baseline value);  // "bottom" "right" "top" "left"
 std::string_view body_kind_name(BodyKind value); // "black" "white" "queen" "striker"
 
@@ -75,6 +97,7 @@ bool parse(std::string_view text, Colour& out);
 bool parse(std::string_view text, Phase& out);
 bool parse(std::string_view text, QueenState& out);
 bool parse(std::string_view text, BotLevel& out);
+bool parse(std::string_view text, Emote& out);
 bool parse(std::string_view text, Baseline& out);
 bool parse(std::string_view text, BodyKind& out);
 

@@ -14,6 +14,10 @@ proto::QueenInfo to_proto(const rules::QueenState& queen);
 proto::Colour colour_of_team(const rules::MatchState& state, int team);
 // One plain sentence per rule code (foul messages).
 std::string_view rule_sentence(rules::RuleCode code);
+// A foul's sentence for its seat: the rule's sentence, and after a missed shot clock how many
+// more misses in a row lose the game ("The shot clock ran out; the turn passes. 2 more missed
+// turns in a row lose the game.").
+std::string foul_sentence(const rules::Foul& foul, const rules::MatchState& after);
 // "score", "boards", "cleared", "forfeit", "clock".
 std::string_view game_end_reason(rules::RuleCode code);
 // A refused input: the rules' error (check_turn, check_placement, play_shot) as the wire's code,

@@ -13,6 +13,7 @@
 #include "carrom/proto/server_messages.hpp"
 #include "carrom/room/bot_seat.hpp"
 #include "carrom/room/clock.hpp"
+#include "carrom/room/emote_limiter.hpp"
 #include "carrom/room/journal_sink.hpp"
 #include "carrom/room/peer.hpp"
 #include "carrom/room/room_counters.hpp"
@@ -40,6 +41,9 @@ struct RoomConfig {
     double grace_s = 60.0;
     double time_scale = 1.0;    // match seconds per wall second while a shot plays
     std::string server_version; // journaled in MatchCreated.versions.server
+    // room_state's aim_assist: clients may draw the first-contact aim guide. On for every room
+    // the server makes today (none is rated); a rated room turns it off.
+    bool aim_assist = true;
 };
 
 // How a restored room's seat is held again (Room::restore), by seat index.
@@ -102,6 +106,11 @@ public:
     void aim(Peer& peer, const proto::Aim& aim);
     void shoot(Peer& peer, const proto::Shoot& shoot);
     void rematch(Peer& peer);
+    // A quick reaction from a seated player once the game has started (also after game over),
+    // broadcast to every member as an "emote" event, the sender included. Not journaled: it is
+    // no part of the match. Errors: spectator, not_in_room, wrong_phase, emote_too_fast (the
+    // seat's EmoteLimiter; the emote is dropped, the match goes on untouched).
+    void emote(Peer& peer, const proto::EmoteMessage& emote);
 
     // Bots: the bot's turn, once per turn; then its shot (see BotShotOutcome).
     std::optional<BotTurn> take_bot_turn();
@@ -135,6 +144,7 @@ private:
         std::shared_ptr<BotBrain> bot;
         std::optional<std::int64_t> grace_deadline_ms;
         bool wants_rematch = false;
+        EmoteLimiter emotes; // per seat: a resumed player keeps the seat's limit
     };
 
     void broadcast(const proto::ServerMessage& message, MessageKind kind = MessageKind::Normal,

@@ -24,8 +24,9 @@ struct ServerSettings {
     int max_connections = 10000;
     int max_connections_per_address = 32; // open WebSocket connections from one client address
     int max_rooms = 5000;
-    double grace_s = 60.0;                 // dropped seat kept this long
-    double shot_clock_s = 20.0;            // default per stroke; 0 = off
+    double grace_s = 60.0;          // dropped seat kept this long
+    double shot_clock_s = 20.0;     // default per stroke; 0 = off
+    double bot_shot_clock_s = 40.0; // default per stroke with a server bot (at least the above)
     std::size_t max_queue_bytes = 1 << 20; // per-session write queue bound
     std::size_t snapshot_backlog = 8;      // waiting snapshots at which new ones are dropped
     double shutdown_grace_s = 3.0;         // SIGINT/SIGTERM: time to close cleanly
