@@ -82,10 +82,11 @@ struct ServerCore {
     bool add_address(const std::string& address);
     void remove_address(const std::string& address);
 
-    // A new room of `seats` seats (2 or 4; counted in metrics, logged), or an error.
+    // A new room of `seats` seats (2 or 4; counted in metrics, logged), or an error. A rated
+    // room (docs/ratings.md) has no aim assist.
     std::variant<std::shared_ptr<RoomActor>, proto::Error>
     create_room(proto::RuleSet rule_set, const proto::RoomOptions& options, int seats = 2,
-                bool server_bots = false);
+                bool server_bots = false, bool rated = false);
     void remove_room(const std::string& code);
 
     // At start, before the I/O threads run: every unfinished match in the store whose journal

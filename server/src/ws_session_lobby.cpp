@@ -97,13 +97,11 @@ void WsSession::handle_create(const proto::CreateRoom& create) {
         enter_bot_room(create.rule_set, create.options, create.seats, create.bot->level, bot_seats);
         return;
     }
-    auto created = core_.create_room(create.rule_set, create.options, create.seats);
+    auto created =
+        core_.create_room(create.rule_set, create.options, create.seats, false, create.rated);
     if (auto* error = std::get_if<proto::Error>(&created)) {
         send_error(error->code, error->message);
         return;
-    }
-    if (create.rated) {
-        std::get<std::shared_ptr<RoomActor>>(created)->set_rated();
     }
     enter_room(std::get<std::shared_ptr<RoomActor>>(created), proto::Role::Player);
 }

@@ -154,13 +154,12 @@ void WsSession::try_rated_pair(proto::RuleSet rule_set) {
         }
         return;
     }
-    auto created = core_.create_room(rule_set, proto::RoomOptions{}, 2);
+    auto created = core_.create_room(rule_set, proto::RoomOptions{}, 2, false, true);
     if (auto* error = std::get_if<proto::Error>(&created)) {
         send_error(error->code, error->message);
         return;
     }
     auto room = std::get<std::shared_ptr<RoomActor>>(created);
-    room->set_rated();
     spdlog::debug("room {}: rated quick match", room->code());
     first->assign_room(room);
     second->assign_room(room);

@@ -209,6 +209,7 @@ TEST(RatingsProcess, NamesKeysAndRatedRoomsAreRefusedWithTheirCodes) {
     asha->send(rated);
     const auto state = asha->next<proto::RoomState>();
     ASSERT_TRUE(state.has_value());
+    EXPECT_FALSE(state->aim_assist) << "a rated room has no aim assist";
     auto asha_again = identified(url, "Asha", key_of('a'));
     asha_again->send(proto::JoinRoom{state->code, proto::Role::Player});
     EXPECT_EQ(asha_again->next_error(), "same_player");

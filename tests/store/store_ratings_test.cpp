@@ -147,6 +147,24 @@ TEST_P(StoreRatings, AMatchCutOffAndNeverFinishedIsNotRated) {
     EXPECT_TRUE(store->player_ratings(ann.key_hash).value.empty());
 }
 
+TEST_P(StoreRatings, AnUnfinishedMatchWithRatedSeatsIsRecoveredAsRated) {
+    {
+        auto store = open_with_ann_and_bea();
+        store->create(created("rated_open", "Ann", "Bea"));
+        store->set_rated_seat("rated_open", 0, ann.key_hash);
+        store->set_rated_seat("rated_open", 1, bea.key_hash);
+        store->create(created("unrated_open", "Ann", "Bea"));
+        ASSERT_TRUE(store->flush(kFlush));
+    }
+    auto store = open();
+    const auto loaded = store->load_unfinished();
+    ASSERT_TRUE(loaded.ok());
+    ASSERT_EQ(loaded.value.size(), 2U);
+    for (const RecoveredMatch& match : loaded.value) {
+        EXPECT_EQ(match.rated, match.id == "rated_open") << match.id;
+    }
+}
+
 TEST_P(StoreRatings, DaysAwayAgeBothRatingsBeforeTheNextGame) {
     auto store = open_with_ann_and_bea();
     rated_match(*store, "m1", ann, bea, 1, 0);

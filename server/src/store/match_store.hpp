@@ -70,6 +70,7 @@ struct RecoveredMatch {
     std::optional<proto::MatchJournal> journal;        // empty when error is set
     std::optional<StoreError> error;                   // this match's journal could not be read
     std::vector<std::optional<TokenHash>> seat_tokens; // by seat; empty optional: none stored
+    bool rated = false; // its game started with rated seats (set_rated_seat)
 };
 
 // One line of a player's match list.

@@ -82,12 +82,14 @@ template <class T, class F> Loaded<T> PostgresReader::read(F f) {
 Loaded<std::vector<RecoveredMatch>> PostgresReader::load_unfinished() {
     return read<std::vector<RecoveredMatch>>([](pqxx::transaction_base& t) {
         std::vector<RecoveredMatch> out;
-        for (const auto& row : t.exec("SELECT id FROM matches WHERE finished_ms IS NULL "
-                                      "ORDER BY created_ms, id")) {
+        for (const auto& row : t.exec("SELECT m.id, EXISTS (SELECT 1 FROM rated_seats r "
+                                      "WHERE r.match_id = m.id) FROM matches m "
+                                      "WHERE m.finished_ms IS NULL ORDER BY m.created_ms, m.id")) {
             const MatchId id = row[0].as<std::string>();
             out.push_back(stored::recover(
                 id, [&] { return read_journal(t, id); },
                 [&](int seats) { return read_tokens(t, id, seats); }));
+            out.back().rated = row[1].as<bool>();
         }
         return out;
     });
