@@ -68,7 +68,8 @@ void AppWindow::handle_event(const sf::Event& e) {
             if (lobby_.name() != options_.name) {
                 // Another name: a new player on a new connection.
                 options_.name = lobby_.name();
-                session_ = ClientSession(make_factory(), options_.name, network_session_config());
+                session_ = ClientSession(make_factory(), options_.name,
+                                         network_session_config(options_.identity));
                 session_.start(clock_.now());
             }
             session_.request(*request);
