@@ -3,23 +3,13 @@
 // result may still be on its way to the store); the change since the last game began shows after
 // a rated game: "Rating: freestyle 1532 (+14)". A player without a rated game sees nothing.
 
-const RULE_SET_WORDS = { icf: 'ICF', seed: 'classic', freestyle: 'freestyle', discpool: 'disc pool' };
+import { labelWithChange, parsePlayerRatings, RULE_SET_WORDS } from './rating_words.js';
 
 // The line for `after` (the "ratings" of GET /players/NAME), with the rounded change from
 // `before` (the previous read's, or null) where the games played grew.
 export function ratingLine(before, after) {
   if (!Array.isArray(after) || after.length === 0) return '';
-  const parts = after.map((r) => {
-    const old = (before ?? []).find((b) => b.rule_set === r.rule_set);
-    let text = `${RULE_SET_WORDS[r.rule_set] ?? r.rule_set} ${r.label}`;
-    if (old && r.games > old.games) {
-      const change = Math.round(r.rating) - Math.round(old.rating);
-      text += ` (${change >= 0 ? '+' : ''}${change})`;
-    } else if (!old && before !== null && r.games > 0) {
-      text += ` (${Math.round(r.rating) >= 1500 ? '+' : ''}${Math.round(r.rating) - 1500})`;
-    }
-    return text;
-  });
+  const parts = after.map((r) => `${RULE_SET_WORDS[r.rule_set] ?? r.rule_set} ${labelWithChange(before, r)}`);
   return `Rating: ${parts.join(', ')}`;
 }
 
@@ -51,21 +41,30 @@ export class RatingView {
       this.last = null;
       this.base = null;
     }
-    const answer = await this.getJson(`/players/${encodeURIComponent(name)}`);
     // A player the store does not know yet (its first hello is still being written) has none.
-    const ratings = answer?.ratings ?? (answer?.error?.code === 'unknown_player' ? [] : null);
+    const ratings = parsePlayerRatings(await this.getJson(playerPath(name)));
     if (!ratings) return;
     this.element.textContent = ratingLine(this.base, ratings);
     this.last = ratings;
   }
 }
 
-// GET path on the page's own server: the JSON answer (an error's too), or null on any failure.
-export async function getJson(path) {
+export const playerPath = (name) => `/players/${encodeURIComponent(name)}`;
+
+// GET path on the page's own server: {status, body}, body the parsed JSON (an error's too) or
+// null when there is none; status 0 when the request failed.
+export async function getAnswer(path) {
+  let status = 0;
   try {
     const response = await fetch(path, { cache: 'no-store' });
-    return await response.json();
+    status = response.status;
+    return { status, body: await response.json() };
   } catch {
-    return null;
+    return { status, body: null };
   }
+}
+
+// The JSON answer of GET path (an error's too), or null on any failure.
+export async function getJson(path) {
+  return (await getAnswer(path)).body;
 }
