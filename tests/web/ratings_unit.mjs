@@ -11,6 +11,7 @@ import { matchLine } from '../../web/js/my_matches.js';
 import {
   labelWithChange, leaderboardView, NEW_RATING_LABEL, parsePlayerRatings, ratingChange, ratingOf,
 } from '../../web/js/rating_words.js';
+import { playersKept } from '../../web/js/rating_view.js';
 import { RATING_REREAD_MS, SeatRatings } from '../../web/js/seat_ratings.js';
 
 const icf = (rating, games, label = String(Math.round(rating))) => ({ rule_set: 'icf', rating, label, games, deviation: 80 });
@@ -160,7 +161,8 @@ class Answers {
     this.byName = byName;
     this.paths = [];
     this.timers = [];
-    this.seats = new SeatRatings((path) => this.get(path), (fn, ms) => this.timers.push({ fn, ms }));
+    this.kept = true; // GET /players says {"kept": true}
+    this.seats = new SeatRatings((path) => this.get(path), async () => this.kept, (fn, ms) => this.timers.push({ fn, ms }));
   }
 
   async get(path) {
@@ -309,12 +311,41 @@ test('doubles, the lobby and another room show nothing; a late answer of a left 
   assert.equal(a.paths.length, 0);
   a.seats.update(room('aiming', ['Asha', 'Ravi']));
   a.seats.update(room('aiming', ['Ravi', 'Asha'], { code: 'GHJKLM' }));
+  await settle();
+  assert.equal(answers.length, 2);
   answers[0]({ ratings: [icf(1800, 20)] }); // the first room's read of Asha
   await settle();
   assert.equal(a.seats.label(1), '');
   assert.equal(a.seats.label(0), '1500');
   a.seats.update({ inRoom: false, seats: [] });
   assert.deepEqual([a.seats.label(0), a.seats.label(1), a.seats.gameOverLine()], ['', '', '']);
+});
+
+test('a server that keeps no players is not read and shows nothing', async () => {
+  const a = new Answers({ Asha: { ratings: [icf(1600, 20)] } });
+  a.kept = false;
+  a.seats.update(room('aiming', ['Asha', 'Ravi']));
+  a.seats.update(room('game_over', ['Asha', 'Ravi']));
+  await settle();
+  assert.deepEqual(a.paths, []);
+  assert.deepEqual([a.seats.label(0), a.seats.gameOverLine(), a.timers.length], ['', '', 0]);
+  a.seats.update(room('game_over', ['Asha', 'Ravi']));
+  await settle();
+  assert.equal(a.seats.debugState().reads, 0);
+});
+
+test('GET /players is asked once per page, again only after no answer', async () => {
+  const asked = [];
+  let answer = null;
+  const kept = playersKept(async (path) => { asked.push(path); return answer; });
+  assert.equal(await kept(), false); // no answer: not known to keep players
+  answer = { kept: true };
+  assert.deepEqual(await Promise.all([kept(), kept()]), [true, true]);
+  answer = { kept: false };
+  assert.equal(await kept(), true);
+  assert.deepEqual(asked, ['/players', '/players']);
+  assert.equal(await playersKept(async () => ({ kept: 'yes' }))(), false);
+  assert.equal(await playersKept(async () => ({ error: { code: 'rate_limited' } }))(), false);
 });
 
 // ---- aim assist ----

@@ -15,7 +15,7 @@ import { Help } from './help.js';
 import { Hud } from './hud.js';
 import { loadOrCreateIdentity } from './identity.js';
 import { IdentityPanel } from './identity_panel.js';
-import { getAnswer, getJson, RatingView } from './rating_view.js';
+import { getAnswer, getJson, playersKept, RatingView } from './rating_view.js';
 import { Leaderboard } from './leaderboard.js';
 import { Lobby } from './lobby.js';
 import { MatchModel } from './match_model.js';
@@ -83,10 +83,11 @@ class App {
     this.session.identity = loadOrCreateIdentity(storage('localStorage'));
     this.identityPanel = new IdentityPanel(document.getElementById('identity'), storage('localStorage'),
       this.session.identity, (key) => { this.session.identity = key; });
-    this.ratingView = new RatingView(document.getElementById('my-rating'), getJson);
+    const kept = playersKept(getJson); // GET /players, asked once for both
+    this.ratingView = new RatingView(document.getElementById('my-rating'), getJson, kept);
     this.myMatches = new MyMatches(this.lobby.form, () => this.lobby.storedName());
     this.leaderboard = new Leaderboard(this.lobby.form, () => this.lobby.storedName(), getAnswer);
-    this.seatRatings = new SeatRatings(getJson);
+    this.seatRatings = new SeatRatings(getJson, kept);
     this.hud = new Hud({
       rematch: () => this.rematch(),
       lobby: () => this.toLobby(),

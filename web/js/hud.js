@@ -93,7 +93,7 @@ export class Hud {
     let sub = s.colour === 'none' ? '' : s.colour;
     if (s.occupied) sub = coinsLeftText(model.coinsLeft(), v.ruleSet, s.colour) || sub;
     this.fill(el, name, sub, s);
-    setText(this.parts(el).rating, rating);
+    setText(this.parts(el).rating, s.occupied ? rating : ''); // a player who left keeps it on the card
   }
 
   // A team in a top-bar box (doubles).

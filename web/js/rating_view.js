@@ -14,14 +14,14 @@ export function ratingLine(before, after) {
 }
 
 export class RatingView {
-  // element: where the line goes; getJson(path) -> parsed JSON or null.
-  constructor(element, getJson) {
+  // element: where the line goes; getJson(path) -> parsed JSON or null; kept: playersKept's.
+  constructor(element, getJson, kept) {
     this.element = element;
     this.getJson = getJson;
+    this.kept = kept;
     this.name = '';
     this.last = null; // the last read's ratings for this.name
     this.base = null; // the ratings as the last game began (the change is shown against them)
-    this.kept = null; // whether the server keeps ratings (GET /players), asked once
   }
 
   // A room's state came: a game is (or may be) under way.
@@ -30,12 +30,7 @@ export class RatingView {
   }
 
   async refresh(name) {
-    if (this.kept === null) {
-      const answer = await this.getJson('/players');
-      if (answer === null) return; // ask again next time
-      this.kept = answer.kept === true;
-    }
-    if (!this.kept || !name) return;
+    if (!name || !(await this.kept())) return;
     if (name !== this.name) {
       this.name = name;
       this.last = null;
@@ -50,6 +45,19 @@ export class RatingView {
 }
 
 export const playerPath = (name) => `/players/${encodeURIComponent(name)}`;
+
+// Whether the server keeps players and ratings (GET /players; with --data none every player
+// read would be a 503): a function that asks once per page and answers true or false; a
+// question without an answer is asked again next time.
+export function playersKept(getJson) {
+  let asked = null;
+  return async () => {
+    asked ??= getJson('/players');
+    const answer = await asked;
+    if (answer === null) asked = null;
+    return answer?.kept === true;
+  };
+}
 
 // GET path on the page's own server: {status, body}, body the parsed JSON (an error's too) or
 // null when there is none; status 0 when the request failed.

@@ -4,8 +4,8 @@
 // GET /players/NAME of each seat's holder once when a game starts (a room's first state, a new
 // holder, a rematch) and once when it ends; in a rated room whose end read shows no new game yet
 // (the store writes the result beside the room) once more RATING_REREAD_MS later. So a seat costs
-// at most three reads per game. Bots are not read; a guest (unknown_player) has none. Doubles
-// are not rated (docs/ratings.md): no ratings are shown there.
+// at most three reads per game; none where the server keeps no players. Bots are not read; a
+// guest (unknown_player) has none. Doubles are not rated (docs/ratings.md): no ratings there.
 
 import { labelWithChange, NEW_RATING_LABEL, parsePlayerRatings, ratingChange, ratingOf } from './rating_words.js';
 import { playerPath } from './rating_view.js';
@@ -25,9 +25,11 @@ class SeatHolder {
 }
 
 export class SeatRatings {
-  // getJson(path): the parsed JSON answer or null (rating_view.js); later(fn, ms): a timer.
-  constructor(getJson, later = (fn, ms) => setTimeout(fn, ms)) {
+  // getJson(path): the parsed JSON answer or null; kept(): whether the server keeps players
+  // (rating_view.js, playersKept); later(fn, ms): a timer.
+  constructor(getJson, kept, later = (fn, ms) => setTimeout(fn, ms)) {
     this.getJson = getJson;
+    this.kept = kept;
     this.later = later;
     this.reads = 0; // GET /players/NAME asked, for the debug hook
     this.clear();
@@ -72,8 +74,9 @@ export class SeatRatings {
   async read(h, which) {
     h.pending += 1;
     if (which === 'end') h.endReads += 1;
-    this.reads += 1;
-    const ratings = parsePlayerRatings(await this.getJson(playerPath(h.name)));
+    const kept = await this.kept();
+    if (kept) this.reads += 1;
+    const ratings = kept ? parsePlayerRatings(await this.getJson(playerPath(h.name))) : null;
     h.pending -= 1;
     if (!this.holders.includes(h)) return; // another room, holder or game since
     if (which === 'start') {
@@ -82,7 +85,7 @@ export class SeatRatings {
     }
     if (ratings !== null || h.end === undefined) h.end = ratings;
     // A rated game's result may reach the store after its end reached the page: one more read.
-    if (this.rated && h.endReads === 1 && this.change(h) === null) {
+    if (kept && this.rated && h.endReads === 1 && this.change(h) === null) {
       h.pending += 1;
       this.later(() => {
         h.pending -= 1;

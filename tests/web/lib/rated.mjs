@@ -42,6 +42,7 @@ async function openAs(browser, p, url, errors, viewport) {
   await player.page.click('#identity summary');
   await player.page.fill('#identity-paste', p.key);
   await player.page.click('#identity-use');
+  await player.page.click('#identity summary'); // folded again
   await player.fillLobby({ name: p.name, ruleSet: 'icf' });
   await player.press('#quick');
   await player.waitFor('waiting for a quick match', (s) => s.session.phase === 'joining' || s.inRoom);
