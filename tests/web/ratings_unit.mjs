@@ -225,16 +225,23 @@ test('a failed or malformed read shows nothing and throws nothing', async () => 
   assert.deepEqual([a.seats.label(0), a.seats.label(1)], ['', '']);
 });
 
-test('at the end each seat is read once; the card shows both changes', async () => {
+// Asha and Ravi read as a rated game starts (ratings `before`), then its end comes with the
+// seats `atEnd` and the store holds `after`; the end's reads are under way.
+async function endedGame(before, after, atEnd = ['Asha', 'Ravi']) {
   let ended = false;
   const a = new Answers({
-    Asha: () => ({ ratings: [ended ? icf(1609.6, 21) : icf(1600.2, 20)] }),
-    Ravi: () => ({ ratings: [ended ? icf(1490.4, 22) : icf(1498.7, 21)] }),
+    Asha: () => ({ ratings: [ended ? after[0] : before[0]] }),
+    Ravi: () => ({ ratings: [ended ? after[1] : before[1]] }),
   });
   a.seats.update(room('aiming', ['Asha', 'Ravi']));
   await settle();
   ended = true;
-  a.seats.update(room('game_over', ['Asha', 'Ravi']));
+  a.seats.update(room('game_over', atEnd));
+  return a;
+}
+
+test('at the end each seat is read once; the card shows both changes', async () => {
+  const a = await endedGame([icf(1600.2, 20), icf(1498.7, 21)], [icf(1609.6, 21), icf(1490.4, 22)]);
   a.seats.update(room('game_over', ['Asha', 'Ravi']));
   assert.equal(a.seats.gameOverLine(), 'Ratings: being updated...');
   await settle();
@@ -279,15 +286,7 @@ test('an unrated game is not read again at its end and its card has no ratings l
 });
 
 test('a player who forfeits by leaving is still read and named at the end', async () => {
-  let ended = false;
-  const a = new Answers({
-    Asha: () => ({ ratings: [ended ? icf(1604, 21) : icf(1600, 20)] }),
-    Ravi: () => ({ ratings: [ended ? icf(1496, 21) : icf(1500, 20)] }),
-  });
-  a.seats.update(room('aiming', ['Asha', 'Ravi']));
-  await settle();
-  ended = true;
-  a.seats.update(room('game_over', ['Asha', empty]));
+  const a = await endedGame([icf(1600, 20), icf(1500, 20)], [icf(1604, 21), icf(1496, 21)], ['Asha', empty]);
   await settle();
   assert.equal(a.seats.gameOverLine(), 'Ratings: Asha 1604 (+4), Ravi 1496 (-4)');
   assert.equal(a.seats.label(1), '1496');
