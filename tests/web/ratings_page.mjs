@@ -63,7 +63,8 @@ run('web.ratings_page', 120000, async (t) => {
     after[p.name] = { ...r, change: Math.round(r.rating) - p.rating };
   }
   check(after.Asha.change > 0 && after.Ravi.change < 0, `the winner rose, the loser fell (${JSON.stringify(after)})`);
-  const expected = `Ratings: Asha ${after.Asha.label} (${signed(after.Asha.change)}), Ravi ${after.Ravi.label} (${signed(after.Ravi.change)})`;
+  // A rating and its change are kept on one line by a no-break space.
+  const expected = `Ratings: Asha ${after.Asha.label}\u00a0(${signed(after.Asha.change)}), Ravi ${after.Ravi.label}\u00a0(${signed(after.Ravi.change)})`;
   await asha.page.waitForFunction((text) => document.getElementById('game-over-ratings').textContent === text, expected, { timeout: 5000 });
   check(await asha.page.isVisible('#game-over-ratings'), 'the card shows the ratings line');
   check(await asha.page.textContent('#seat-left .rating') === after.Asha.label, 'Asha\'s seat shows her new rating');

@@ -247,7 +247,7 @@ test('at the end each seat is read once; the card shows both changes', async () 
   await settle();
   assert.equal(a.paths.length, 4);
   assert.equal(a.seats.label(0), '1610');
-  assert.equal(a.seats.gameOverLine(), 'Ratings: Asha 1610 (+10), Ravi 1490 (-9)');
+  assert.equal(a.seats.gameOverLine(), 'Ratings: Asha 1610\u00a0(+10), Ravi 1490\u00a0(-9)');
   assert.equal(a.timers.length, 0); // the change is known: no second read
 });
 
@@ -267,7 +267,7 @@ test('a rated end whose result is not stored yet is read once more, later', asyn
   for (const t of a.timers.splice(0)) t.fn();
   await settle();
   assert.equal(a.paths.length, 6);
-  assert.equal(a.seats.gameOverLine(), 'Ratings: Asha 1338? (-162), Ravi 1662? (+162)');
+  assert.equal(a.seats.gameOverLine(), 'Ratings: Asha 1338?\u00a0(-162), Ravi 1662?\u00a0(+162)');
   a.seats.update(room('game_over', ['Asha', 'Ravi']));
   await settle();
   assert.equal(a.paths.length, 6); // bounded: three reads per seat and game at most
@@ -288,7 +288,7 @@ test('an unrated game is not read again at its end and its card has no ratings l
 test('a player who forfeits by leaving is still read and named at the end', async () => {
   const a = await endedGame([icf(1600, 20), icf(1500, 20)], [icf(1604, 21), icf(1496, 21)], ['Asha', empty]);
   await settle();
-  assert.equal(a.seats.gameOverLine(), 'Ratings: Asha 1604 (+4), Ravi 1496 (-4)');
+  assert.equal(a.seats.gameOverLine(), 'Ratings: Asha 1604\u00a0(+4), Ravi 1496\u00a0(-4)');
   assert.equal(a.seats.label(1), '1496');
 });
 

@@ -110,12 +110,14 @@ export class SeatRatings {
     return this.rated && h.start !== null ? NEW_RATING_LABEL : '';
   }
 
-  // The game-over card's line: each player whose rating changed with this game, or while a rated
+  // The game-over card's line: each player whose rating changed with this game ("Ratings: Asha
+  // 1614\u00a0(+14), Ravi 1506\u00a0(-14)"), or while a rated
   // game's reads are outstanding "Ratings: being updated...", else ''.
   gameOverLine() {
     if (!this.over) return '';
+    // A rating and its change stay on one line (a no-break space between them).
     const changed = this.holders.filter((h) => h && this.change(h) !== null)
-      .map((h) => `${h.name} ${labelWithChange(h.start, ratingOf(h.end, this.ruleSet))}`);
+      .map((h) => `${h.name} ${labelWithChange(h.start, ratingOf(h.end, this.ruleSet)).replace(' ', '\u00a0')}`);
     if (changed.length > 0) return `Ratings: ${changed.join(', ')}`;
     return this.rated && this.holders.some((h) => h?.pending > 0) ? 'Ratings: being updated...' : '';
   }
