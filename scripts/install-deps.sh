@@ -10,6 +10,7 @@ packages=(
     libboost-dev nlohmann-json3-dev libsimdjson-dev libsfml-dev
     libgtest-dev libgmock-dev googletest libbenchmark-dev
     libcli11-dev libspdlog-dev libsqlite3-dev libsqlitecpp-dev libutf8proc-dev libpqxx-dev
+    sqlite3  # web.ratings_page writes its players' ratings into a store with it
     postgresql
     libssl-dev ca-certificates openssl libnss3-tools
     xvfb xauth fonts-dejavu-core

@@ -1,6 +1,7 @@
 // A page keeps its player key across a reload, and shows its rating after a rated game
 // (docs/ratings.md): its quick match meets carrom-bot --identity (a rated room); the page leaves
-// at once, a forfeit, so the bot wins; back in the lobby the page reads "Rating: ICF 1338? (-162)".
+// at once (Leave, then the question's Leave), a forfeit, so the bot wins; back in the lobby the
+// page reads "Rating: ICF 1338? (-162)".
 
 import fs from 'node:fs';
 import os from 'node:os';
@@ -31,7 +32,7 @@ run('web.identity_page', 90000, async (t) => {
     '--strategy', 'random', '--games', '1', '--timeout', '60', '--log-level', 'warn',
   ], /room [A-Z0-9]{6}/);
   await page.waitFor('paired with the bot', (s) => s.inRoom && s.seats.every((x) => x.occupied));
-  await page.press('#leave');
+  await page.leaveAndForfeit(); // Leave asks first while the game runs
   await page.waitFor('the lobby', (s) => !s.inRoom && s.session.phase === 'lobby');
   await page.page.waitForFunction(() => document.getElementById('my-rating').textContent.includes('('), null, { timeout: 10000 });
   const line = await page.page.textContent('#my-rating');

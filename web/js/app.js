@@ -15,7 +15,8 @@ import { Help } from './help.js';
 import { Hud } from './hud.js';
 import { loadOrCreateIdentity } from './identity.js';
 import { IdentityPanel } from './identity_panel.js';
-import { getJson, RatingView } from './rating_view.js';
+import { getAnswer, getJson, playersKept, RatingView } from './rating_view.js';
+import { Leaderboard } from './leaderboard.js';
 import { Lobby } from './lobby.js';
 import { MatchModel } from './match_model.js';
 import { MyMatches } from './my_matches.js';
@@ -26,6 +27,7 @@ import { Renderer } from './renderer.js';
 import { parseReplayHash, startReplayPage } from './replay_page.js';
 import { parseRoomHash, roomHash, roomLink, showHash } from './room_link.js';
 import { teamSummaries } from './seat_panels.js';
+import { SeatRatings } from './seat_ratings.js';
 import { Session, SESSION_DEFAULTS } from './session.js';
 import { Settings } from './settings.js';
 import { sideLayout } from './side_layout.js';
@@ -81,8 +83,11 @@ class App {
     this.session.identity = loadOrCreateIdentity(storage('localStorage'));
     this.identityPanel = new IdentityPanel(document.getElementById('identity'), storage('localStorage'),
       this.session.identity, (key) => { this.session.identity = key; });
-    this.ratingView = new RatingView(document.getElementById('my-rating'), getJson);
+    const kept = playersKept(getJson); // GET /players, asked once for both
+    this.ratingView = new RatingView(document.getElementById('my-rating'), getJson, kept);
     this.myMatches = new MyMatches(this.lobby.form, () => this.lobby.storedName());
+    this.leaderboard = new Leaderboard(this.lobby.form, () => this.lobby.storedName(), getAnswer);
+    this.seatRatings = new SeatRatings(getJson, kept);
     this.hud = new Hud({
       rematch: () => this.rematch(),
       lobby: () => this.toLobby(),
@@ -181,6 +186,7 @@ class App {
     }
     if (m.type === 'welcome') this.ratingView.refresh(this.session.name);
     this.model.handle(m, localS);
+    this.seatRatings.update(this.model.view);
     this.dirty = true;
   }
 
@@ -214,6 +220,7 @@ class App {
     setTimeout(() => this.ratingView.refresh(this.session.name), RATING_REREAD_MS);
     this.session.leaveRoom();
     this.model.reset();
+    this.seatRatings.update(this.model.view);
     this.aim.endTurn();
     this.pointerId = null;
     this.fromLink = null;
@@ -433,7 +440,9 @@ class App {
       this.drawKey = key;
       this.dirty = false;
     }
-    this.hud.update(this.model, this.session, { pulling: this.aim.phase === 'pulling', muted: this.settings.values.muted }, now);
+    this.hud.update(this.model, this.session, {
+      pulling: this.aim.phase === 'pulling', muted: this.settings.values.muted, ratings: this.seatRatings,
+    }, now);
     this.help.update(v.inRoom && v.you >= 0 && ['aiming', 'moving'].includes(v.phase), v.ruleSet);
     this.emoteView.update(this.model, now);
     this.updateLobby();
@@ -494,6 +503,7 @@ class App {
         mutedSeats: [...this.model.emotes.mutedSeats], allMuted: this.model.emotes.allMuted,
       },
       assist: this.aimAssist.debugState(this.assist),
+      ratings: this.seatRatings.debugState(),
     };
   }
 

@@ -3,35 +3,25 @@
 // result may still be on its way to the store); the change since the last game began shows after
 // a rated game: "Rating: freestyle 1532 (+14)". A player without a rated game sees nothing.
 
-const RULE_SET_WORDS = { icf: 'ICF', seed: 'classic', freestyle: 'freestyle', discpool: 'disc pool' };
+import { labelWithChange, parsePlayerRatings, RULE_SET_WORDS } from './rating_words.js';
 
 // The line for `after` (the "ratings" of GET /players/NAME), with the rounded change from
 // `before` (the previous read's, or null) where the games played grew.
 export function ratingLine(before, after) {
   if (!Array.isArray(after) || after.length === 0) return '';
-  const parts = after.map((r) => {
-    const old = (before ?? []).find((b) => b.rule_set === r.rule_set);
-    let text = `${RULE_SET_WORDS[r.rule_set] ?? r.rule_set} ${r.label}`;
-    if (old && r.games > old.games) {
-      const change = Math.round(r.rating) - Math.round(old.rating);
-      text += ` (${change >= 0 ? '+' : ''}${change})`;
-    } else if (!old && before !== null && r.games > 0) {
-      text += ` (${Math.round(r.rating) >= 1500 ? '+' : ''}${Math.round(r.rating) - 1500})`;
-    }
-    return text;
-  });
+  const parts = after.map((r) => `${RULE_SET_WORDS[r.rule_set] ?? r.rule_set} ${labelWithChange(before, r)}`);
   return `Rating: ${parts.join(', ')}`;
 }
 
 export class RatingView {
-  // element: where the line goes; getJson(path) -> parsed JSON or null.
-  constructor(element, getJson) {
+  // element: where the line goes; getJson(path) -> parsed JSON or null; kept: playersKept's.
+  constructor(element, getJson, kept) {
     this.element = element;
     this.getJson = getJson;
+    this.kept = kept;
     this.name = '';
     this.last = null; // the last read's ratings for this.name
     this.base = null; // the ratings as the last game began (the change is shown against them)
-    this.kept = null; // whether the server keeps ratings (GET /players), asked once
   }
 
   // A room's state came: a game is (or may be) under way.
@@ -40,32 +30,49 @@ export class RatingView {
   }
 
   async refresh(name) {
-    if (this.kept === null) {
-      const answer = await this.getJson('/players');
-      if (answer === null) return; // ask again next time
-      this.kept = answer.kept === true;
-    }
-    if (!this.kept || !name) return;
+    if (!name || !(await this.kept())) return;
     if (name !== this.name) {
       this.name = name;
       this.last = null;
       this.base = null;
     }
-    const answer = await this.getJson(`/players/${encodeURIComponent(name)}`);
     // A player the store does not know yet (its first hello is still being written) has none.
-    const ratings = answer?.ratings ?? (answer?.error?.code === 'unknown_player' ? [] : null);
+    const ratings = parsePlayerRatings(await this.getJson(playerPath(name)));
     if (!ratings) return;
     this.element.textContent = ratingLine(this.base, ratings);
     this.last = ratings;
   }
 }
 
-// GET path on the page's own server: the JSON answer (an error's too), or null on any failure.
-export async function getJson(path) {
+export const playerPath = (name) => `/players/${encodeURIComponent(name)}`;
+
+// Whether the server keeps players and ratings (GET /players; with --data none every player
+// read would be a 503): a function that asks once per page and answers true or false; a
+// question without an answer is asked again next time.
+export function playersKept(getJson) {
+  let asked = null;
+  return async () => {
+    asked ??= getJson('/players');
+    const answer = await asked;
+    if (answer === null) asked = null;
+    return answer?.kept === true;
+  };
+}
+
+// GET path on the page's own server: {status, body}, body the parsed JSON (an error's too) or
+// null when there is none; status 0 when the request failed.
+export async function getAnswer(path) {
+  let status = 0;
   try {
     const response = await fetch(path, { cache: 'no-store' });
-    return await response.json();
+    status = response.status;
+    return { status, body: await response.json() };
   } catch {
-    return null;
+    return { status, body: null };
   }
+}
+
+// The JSON answer of GET path (an error's too), or null on any failure.
+export async function getJson(path) {
+  return (await getAnswer(path)).body;
 }
