@@ -13,6 +13,7 @@ namespace {
 using Json = nlohmann::json;
 
 constexpr std::string_view kPlayersPrefix = "/players/";
+constexpr std::chrono::milliseconds kUnknownPlayerFlushTimeout{500};
 
 Json rating_json(const store::PlayerRating& r) {
     return {{"rule_set", std::string(rules::to_string(r.rule_set))},
@@ -42,6 +43,13 @@ MatchApiAnswer answer_player(store::MatchStore& store, std::string_view raw_name
                                "characters, percent-encoded in the path.");
     }
     auto player = store.find_player(*name_key);
+    if (player.ok() && !player.value) {
+        // A hello queues its player's identity: one who said hello a moment ago is read once
+        // the writes queued until now are written (bounded; a name nobody holds waits for the
+        // queue, not for this timeout, when the store keeps up).
+        (void)store.flush(kUnknownPlayerFlushTimeout);
+        player = store.find_player(*name_key);
+    }
     if (!player.ok()) {
         return match_api_error(500, match_api_code::kStoreError, player.error->message);
     }

@@ -273,6 +273,19 @@ TEST(RatingsProcess, QuickMatchPairsTheClosestRatingsAsTheGapWidens) {
     EXPECT_NE(rooms[0], rooms[2]);
 }
 
+TEST(RatingsProcess, APlayerIsKnownToThePlayersApiAsSoonAsItsHelloIsAnswered) {
+    RatingsDir dir;
+    auto server = start_rated_server(dir.file("c.db"));
+    for (const char digit : {'1', '2', '3', '4', '5'}) { // the address's burst of new keys
+        const std::string name = std::string("Player") + digit;
+        auto client = identified(server->url(), name, key_of(digit));
+        const json player = get_json(*server, "/players/" + name);
+        EXPECT_EQ(player["name"], name);
+        EXPECT_TRUE(player["ratings"].empty());
+        EXPECT_TRUE(player["matches"].empty());
+    }
+}
+
 TEST(RatingsProcess, ThePlayersApiAnswersBadInputsWithCodes) {
     RatingsDir dir;
     auto server = start_rated_server(dir.file("c.db"));
