@@ -25,7 +25,7 @@ namespace carrom::integration {
 namespace {
 
 using namespace std::chrono_literals;
-using nlohmann::json;
+using RatingsJson = nlohmann::json;
 
 class RatingsDir : public test_support::TempDir {
 public:
@@ -81,11 +81,11 @@ std::string hello_refusal(const std::string& url, const std::string& name,
     return "timeout";
 }
 
-json get_json(const test_support::ServerProcess& server, const std::string& target,
-              int expect_status = 200) {
+RatingsJson get_json(const test_support::ServerProcess& server, const std::string& target,
+                     int expect_status = 200) {
     const auto answer = server.get(target);
     EXPECT_EQ(answer.status, expect_status) << target << ": " << answer.body;
-    return json::parse(answer.body, nullptr, false);
+    return RatingsJson::parse(answer.body, nullptr, false);
 }
 
 // Two carrom-bot processes with keys play a rated match through a server on data; both ratings
@@ -127,13 +127,13 @@ void play_a_rated_match_then_restart(const std::string& data, const RatingsDir& 
     EXPECT_EQ(st.st_mode & 0777, 0600U);
     EXPECT_EQ(st.st_size, 65);
 
-    const json asha = get_json(*server, "/players/Asha");
-    const json ravi = get_json(*server, "/players/ravi"); // names compare case-folded
+    const RatingsJson asha = get_json(*server, "/players/Asha");
+    const RatingsJson ravi = get_json(*server, "/players/ravi"); // names compare case-folded
     EXPECT_EQ(ravi["name"], "Ravi");
     ASSERT_EQ(asha["ratings"].size(), 1U) << asha.dump();
     ASSERT_EQ(ravi["ratings"].size(), 1U) << ravi.dump();
-    const json a = asha["ratings"][0];
-    const json r = ravi["ratings"][0];
+    const RatingsJson a = asha["ratings"][0];
+    const RatingsJson r = ravi["ratings"][0];
     EXPECT_EQ(a["rule_set"], "freestyle");
     EXPECT_EQ(a["games"], 1);
     EXPECT_EQ(r["games"], 1);
@@ -279,7 +279,7 @@ TEST(RatingsProcess, APlayerIsKnownToThePlayersApiAsSoonAsItsHelloIsAnswered) {
     for (const char digit : {'1', '2', '3', '4', '5'}) { // the address's burst of new keys
         const std::string name = std::string("Player") + digit;
         auto client = identified(server->url(), name, key_of(digit));
-        const json player = get_json(*server, "/players/" + name);
+        const RatingsJson player = get_json(*server, "/players/" + name);
         EXPECT_EQ(player["name"], name);
         EXPECT_TRUE(player["ratings"].empty());
         EXPECT_TRUE(player["matches"].empty());
@@ -303,7 +303,7 @@ TEST(RatingsProcess, ThePlayersApiAnswersBadInputsWithCodes) {
     EXPECT_EQ(code("/leaderboard?limit=101", 400), "bad_query");
     EXPECT_EQ(code("/leaderboard?limit=5x", 400), "bad_query");
     EXPECT_EQ(code("/leaderboard?sort=name", 400), "bad_query");
-    const json board = get_json(*server, "/leaderboard?rule_set=discpool&limit=100");
+    const RatingsJson board = get_json(*server, "/leaderboard?rule_set=discpool&limit=100");
     EXPECT_EQ(board["rule_set"], "discpool");
     EXPECT_TRUE(board["players"].empty());
     EXPECT_EQ(get_json(*server, "/players")["kept"], true);
