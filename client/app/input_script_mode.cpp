@@ -22,6 +22,15 @@ std::optional<sf::Keyboard::Key> key_named(const std::string& name) {
     if (name == "F1") {
         return sf::Keyboard::F1;
     }
+    if (name == "F2") {
+        return sf::Keyboard::F2;
+    }
+    if (name == "F3") {
+        return sf::Keyboard::F3;
+    }
+    if (name == "Tab") {
+        return sf::Keyboard::Tab;
+    }
     return std::nullopt;
 }
 

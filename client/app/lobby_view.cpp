@@ -48,6 +48,10 @@ Rect LobbyView::control_rect(Control c, const Rect& area) const {
         return {x0, row(6), half, h * 0.85};
     case kSettings:
         return {x0 + half + gap, row(6), half, h * 0.85};
+    case kLeaderboard:
+        return {x0, row(7) - h * 0.15, half, h * 0.85};
+    case kMatches:
+        return {x0 + half + gap, row(7) - h * 0.15, half, h * 0.85};
     case kControlCount:
         break;
     }
@@ -90,6 +94,10 @@ std::string LobbyView::label(Control c) const {
         return "How to play";
     case kSettings:
         return "Settings";
+    case kLeaderboard:
+        return "Leaderboard (F2)";
+    case kMatches:
+        return "My matches (F3)";
     case kControlCount:
         break;
     }
@@ -125,6 +133,12 @@ std::optional<RoomRequest> LobbyView::press(Control c) {
         return std::nullopt;
     case kSettings:
         menu_ = Menu::Settings;
+        return std::nullopt;
+    case kLeaderboard:
+        menu_ = Menu::Leaderboard;
+        return std::nullopt;
+    case kMatches:
+        menu_ = Menu::Matches;
         return std::nullopt;
     case kCreate:
     case kBot:
@@ -164,6 +178,10 @@ std::optional<RoomRequest> LobbyView::on_event(const sf::Event& event, const Rec
                 return press(static_cast<Control>(c));
             }
         }
+    } else if (event.type == sf::Event::KeyPressed && event.key.code == sf::Keyboard::F2) {
+        return press(kLeaderboard);
+    } else if (event.type == sf::Event::KeyPressed && event.key.code == sf::Keyboard::F3) {
+        return press(kMatches);
     } else if (event.type == sf::Event::TextEntered) {
         const auto ch = event.text.unicode;
         std::string& field = typing_name_ ? name_ : code_;
@@ -182,7 +200,7 @@ std::optional<RoomRequest> LobbyView::on_event(const sf::Event& event, const Rec
 }
 
 void LobbyView::draw(sf::RenderTarget& target, const Rect& area, const std::string& status,
-                     const std::string& error, bool can_choose) const {
+                     const std::string& error, bool can_choose, const std::string& rating) const {
     draw_panel(target, area, sf::Color(20, 12, 8, 200));
     const float cx = static_cast<float>(area.x + area.w / 2.0);
     const auto big = static_cast<unsigned>(std::clamp(area.h * 0.08, 24.0, 64.0));
@@ -216,6 +234,11 @@ void LobbyView::draw(sf::RenderTarget& target, const Rect& area, const std::stri
                             : kText,
                       Align::Centre);
         }
+    }
+    if (!rating.empty()) {
+        const Rect below = control_rect(kLeaderboard, area);
+        draw_text(target, font_, rating, mid, cx, static_cast<float>(below.y + below.h * 1.8),
+                  kGold, Align::Centre);
     }
     if (!error.empty()) {
         draw_text(target, font_, error, mid, cx, static_cast<float>(area.y + area.h * 0.93),
