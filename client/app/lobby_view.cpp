@@ -45,13 +45,12 @@ Rect LobbyView::control_rect(Control c, const Rect& area) const {
     case kWatch:
         return {x0 + w * 0.44 + 2.0 * gap + third, row(5) - h * 0.2, third, h};
     case kHelp:
-        return {x0, row(6), half, h * 0.85};
     case kSettings:
-        return {x0 + half + gap, row(6), half, h * 0.85};
     case kLeaderboard:
-        return {x0, row(7) - h * 0.15, half, h * 0.85};
-    case kMatches:
-        return {x0 + half + gap, row(7) - h * 0.15, half, h * 0.85};
+    case kMatches: { // four in a row
+        const double quarter = (w - 3.0 * gap) / 4.0;
+        return {x0 + (c - kHelp) * (quarter + gap), row(6), quarter, h * 0.85};
+    }
     case kControlCount:
         break;
     }
@@ -95,9 +94,9 @@ std::string LobbyView::label(Control c) const {
     case kSettings:
         return "Settings";
     case kLeaderboard:
-        return "Leaderboard (F2)";
+        return "Leaderboard";
     case kMatches:
-        return "My matches (F3)";
+        return "My matches";
     case kControlCount:
         break;
     }
@@ -236,9 +235,9 @@ void LobbyView::draw(sf::RenderTarget& target, const Rect& area, const std::stri
         }
     }
     if (!rating.empty()) {
-        const Rect below = control_rect(kLeaderboard, area);
-        draw_text(target, font_, rating, mid, cx, static_cast<float>(below.y + below.h * 1.8),
-                  kGold, Align::Centre);
+        const Rect above = control_rect(kLeaderboard, area); // the error line is below
+        draw_text(target, font_, rating, mid, cx,
+                  static_cast<float>(above.y + above.h + mid * 1.3), kGold, Align::Centre);
     }
     if (!error.empty()) {
         draw_text(target, font_, error, mid, cx, static_cast<float>(area.y + area.h * 0.93),
