@@ -307,6 +307,10 @@ int AppWindow::run() {
         }
         const double now = clock_.now();
         update(now);
+        if (replay_exit_) {
+            window_.close();
+            return *replay_exit_;
+        }
         for (const sf::Event& e : std::exchange(unattended_input_, {})) {
             handle_event(e);
         }

@@ -75,7 +75,8 @@ private:
     // Reads the server's records in the background and hands the HUD the seats' ratings; opens a
     // match's journal that came as a replay.
     void update_records(double now);
-    // Runs the replay window (the lobby's window hidden meanwhile); back in the lobby after.
+    // Runs the replay window (the lobby's window hidden meanwhile); back in the lobby after,
+    // unless an unattended mode ended the replay (replay_exit_).
     void open_replay(ReplayModel replay);
     // Each seat's rating text (RatingBook::seat_text; "" for a bot or an empty seat).
     std::vector<std::string> seat_rating_texts() const;
@@ -114,8 +115,9 @@ private:
     LobbyPage lobby_page_ = LobbyPage::Main;
     LeaderboardView leaderboard_view_;
     MatchListView match_list_;
-    bool journal_asked_ = false; // My matches asked for a replay's journal
-    bool in_lobby_ = false;      // the session was in the lobby last frame
+    bool journal_asked_ = false;     // My matches asked for a replay's journal
+    std::optional<int> replay_exit_; // an unattended replay's exit code: it ends the run
+    bool in_lobby_ = false;          // the session was in the lobby last frame
     SoundPlayer sound_;
     ClientSession session_;
     sf::RenderWindow window_;

@@ -108,13 +108,22 @@ void AppWindow::update_records(double now) {
 
 void AppWindow::open_replay(ReplayModel replay) {
     journal_asked_ = false;
-    AppOptions replay_options;
+    // The replay window holds this window's unattended modes but the input script (--final-state
+    // at the replay's end, --screenshot, --timeout): when one of them ends the replay, it ends the
+    // run with its exit code. A player's closing of the replay returns to the lobby.
+    AppOptions replay_options = options_;
+    replay_options.input_script.clear();
+    replay_options.request.reset();
     replay_options.width = window_.getSize().x;
     replay_options.height = window_.getSize().y;
-    replay_options.msaa = options_.msaa;
+    const bool unattended = !options_.final_state_path.empty() ||
+                            !options_.screenshot_path.empty() || options_.timeout_s > 0.0;
     window_.setVisible(false);
-    run_replay(replay_options, std::move(replay));
+    const int code = run_replay(replay_options, std::move(replay));
     window_.setVisible(true);
+    if (unattended) {
+        replay_exit_ = code;
+    }
 }
 
 std::vector<std::string> AppWindow::seat_rating_texts() const {
@@ -131,11 +140,12 @@ std::vector<std::string> AppWindow::seat_rating_texts() const {
 
 GameOverText AppWindow::game_over_words() const {
     GameOverText text = game_over_text(model_.view(), rematch_asked_);
-    const std::vector<std::string> ratings = seat_rating_texts();
-    for (std::size_t i = 0; i < ratings.size(); ++i) {
-        if (!ratings[i].empty()) {
-            text.ratings += (text.ratings.empty() ? "Ratings: " : ", ") +
-                            model_.view().seats[i].name + " " + ratings[i];
+    // The game's players, also one who has left the room since.
+    const std::string rule_set(proto::to_string(model_.view().rule_set));
+    for (const std::string& name : records_.seat_players()) {
+        const std::string rating = name.empty() ? "" : records_.book().seat_text(name, rule_set);
+        if (!rating.empty()) {
+            text.ratings += (text.ratings.empty() ? "Ratings: " : ", ") + name + " " + rating;
         }
     }
     return text;

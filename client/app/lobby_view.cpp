@@ -236,8 +236,8 @@ void LobbyView::draw(sf::RenderTarget& target, const Rect& area, const std::stri
     }
     if (!rating.empty()) {
         const Rect above = control_rect(kLeaderboard, area); // the error line is below
-        draw_text(target, font_, rating, mid, cx,
-                  static_cast<float>(above.y + above.h + mid * 1.3), kGold, Align::Centre);
+        draw_text(target, font_, rating, mid, cx, static_cast<float>(above.y + above.h + mid * 1.3),
+                  kGold, Align::Centre);
     }
     if (!error.empty()) {
         draw_text(target, font_, error, mid, cx, static_cast<float>(area.y + area.h * 0.93),

@@ -40,6 +40,13 @@ void ServerRecords::lobby_entered(const std::string& name, double now) {
 
 void ServerRecords::room_seen(const MatchView& view, double now) {
     const std::vector<std::string> names = seat_names(view);
+    seat_players_.resize(view.seats.size());
+    for (std::size_t i = 0; i < view.seats.size(); ++i) {
+        const SeatView& s = view.seats[i];
+        if (s.occupied && !s.bot && !s.name.empty()) {
+            seat_players_[i] = s.name;
+        }
+    }
     const bool over = view.phase == proto::Phase::GameOver;
     for (const std::string& name : names) {
         if (room_names_read_.insert(name).second) {
@@ -58,6 +65,7 @@ void ServerRecords::room_seen(const MatchView& view, double now) {
 
 void ServerRecords::room_left() {
     room_names_read_.clear();
+    seat_players_.clear();
     game_over_seen_ = false;
     seats_reread_at_ = -1.0;
 }

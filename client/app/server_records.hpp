@@ -42,6 +42,9 @@ public:
     void update(double now);
 
     const RatingBook& book() const { return book_; }
+    // Each seat's last player in this room (not a bot; "" for none yet): who played the game
+    // also after they left the room.
+    const std::vector<std::string>& seat_players() const { return seat_players_; }
     const Reading<Leaderboard>& leaderboard() const { return leaderboard_; }
     const Reading<PlayerRecord>& matches() const { return matches_; }
     const Reading<bool>& journal_state() const { return journal_state_; }
@@ -60,6 +63,7 @@ private:
     bool game_over_seen_ = false;           // the room's game over was handled
     double seats_reread_at_ = -1.0;         // < 0: none due
     std::vector<std::string> game_names_;   // the seats' names of the game being played
+    std::vector<std::string> seat_players_;
     std::string matches_name_;
     Reading<Leaderboard> leaderboard_;
     Reading<PlayerRecord> matches_;

@@ -65,11 +65,9 @@ TEST(PlayerRecord, TheDocumentedExampleReadsWhole) {
 }
 
 TEST(PlayerRecord, AnUnknownPlayerIsOneWithoutRatings) {
-    auto got = parse_player_answer(
-        "Guest", ApiAnswer{404,
-                           R"({"error":{"code":"unknown_player","message":"No identified "
-                           "player is called Guest."}})",
-                           ""});
+    const std::string body =
+        R"({"error":{"code":"unknown_player","message":"No identified player is called Guest."}})";
+    auto got = parse_player_answer("Guest", ApiAnswer{404, body, ""});
     ASSERT_TRUE(std::holds_alternative<PlayerRecord>(got));
     EXPECT_EQ(std::get<PlayerRecord>(got).name, "Guest");
     EXPECT_TRUE(std::get<PlayerRecord>(got).ratings.empty());
