@@ -413,6 +413,7 @@ std::string AppWindow::ui_json() const {
           {"rule_set", std::string(proto::to_string(lobby_.rule_set()))},
           {"bot_level", std::string(proto::to_string(lobby_.bot_level()))}}},
         {"rule_set", std::string(proto::to_string(model_.view().rule_set))},
+        {"aim_assist", model_.view().aim_assist},
         {"session", session_.phase() == SessionPhase::Lobby ? "lobby" : "other"},
         {"records", records_json()}}
         .dump();

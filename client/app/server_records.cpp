@@ -56,7 +56,12 @@ void ServerRecords::room_seen(const MatchView& view, double now) {
     if (over && !game_over_seen_) {
         game_over_seen_ = true;
         seats_reread_at_ = now + 1.0;
-        game_names_ = names;
+        game_names_.clear(); // who played, also a player who left as the game ended
+        for (const std::string& name : seat_players_) {
+            if (!name.empty()) {
+                game_names_.push_back(name);
+            }
+        }
     } else if (!over && game_over_seen_ && view.phase != proto::Phase::Waiting) {
         game_over_seen_ = false; // a rematch began: its change shows against the ratings now
         book_.game_starts(names);

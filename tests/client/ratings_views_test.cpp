@@ -236,5 +236,27 @@ TEST_F(RatingsViews, AServerWithoutAStoreSaysSoInTheLeaderboard) {
     EXPECT_EQ(r["rows"], Json::array());
 }
 
+// Last: the match it plays changes both ratings. A quick match between identified players is
+// rated: both seats show their ratings, and the room has no aim assist.
+TEST_F(RatingsViews, ARatedQuickMatchShowsBothRatingsAndNoAimAssist) {
+    const std::string asha = player("Asha")["ratings"][0]["label"];
+    const std::string ravi = player("Ravi")["ratings"][0]["label"];
+    test_support::CommandRun bot;
+    std::thread bot_thread([&] {
+        bot = test_support::run_command(
+            std::string(CARROM_BOT_PATH) + " --identity " + dir_->file("ravi.key") +
+            " --name Ravi --quick --rule-set freestyle --seed 5 --strategy sampling" +
+            " --think-ms 50 --timeout 60 --url " + server_->url() + " 2>&1");
+    });
+    std::vector<std::string> args = as_asha();
+    args.insert(args.end(),
+                {"--quick", "--rule-set", "freestyle", "--autoplay", "easy", "--after-shots", "1"});
+    const Json r = run(*server_, args, "");
+    bot_thread.join(); // it wins by forfeit when the client leaves
+    EXPECT_EQ(r["seat_ratings"], Json::array({asha, ravi})) << bot.out;
+    const Json report = Json::parse(test_support::read_file(dir_->file("report.json")));
+    EXPECT_EQ(report["ui"]["aim_assist"], false);
+}
+
 } // namespace
 } // namespace carrom::client
