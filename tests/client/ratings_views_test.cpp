@@ -241,19 +241,16 @@ TEST_F(RatingsViews, AServerWithoutAStoreSaysSoInTheLeaderboard) {
 TEST_F(RatingsViews, ARatedQuickMatchShowsBothRatingsAndNoAimAssist) {
     const std::string asha = player("Asha")["ratings"][0]["label"];
     const std::string ravi = player("Ravi")["ratings"][0]["label"];
-    test_support::CommandRun bot;
-    std::thread bot_thread([&] {
-        bot = test_support::run_command(
-            std::string(CARROM_BOT_PATH) + " --identity " + dir_->file("ravi.key") +
-            " --name Ravi --quick --rule-set freestyle --seed 5 --strategy sampling" +
-            " --think-ms 50 --timeout 60 --url " + server_->url() + " 2>&1");
-    });
+    // The bot thinks 2 s a shot: the game is still on when the client's screenshot is taken.
+    ChildProcess bot({CARROM_BOT_PATH, "--identity", dir_->file("ravi.key"), "--name", "Ravi",
+                      "--quick", "--rule-set", "freestyle", "--seed", "5", "--strategy", "sampling",
+                      "--think-ms", "2000", "--timeout", "60", "--url", server_->url()});
     std::vector<std::string> args = as_asha();
     args.insert(args.end(),
                 {"--quick", "--rule-set", "freestyle", "--autoplay", "easy", "--after-shots", "1"});
     const Json r = run(*server_, args, "");
-    bot_thread.join(); // it wins by forfeit when the client leaves
-    EXPECT_EQ(r["seat_ratings"], Json::array({asha, ravi})) << bot.out;
+    bot.stop();
+    EXPECT_EQ(r["seat_ratings"], Json::array({asha, ravi})) << bot.output();
     const Json report = Json::parse(test_support::read_file(dir_->file("report.json")));
     EXPECT_EQ(report["ui"]["aim_assist"], false);
 }
