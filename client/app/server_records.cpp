@@ -109,6 +109,15 @@ void ServerRecords::update(double now) {
             read_player(name, "late");
         }
     }
+    now_ = now;
+    for (auto it = retries_.begin(); it != retries_.end();) {
+        if (now >= std::get<0>(*it)) {
+            read_player(std::get<1>(*it), std::get<2>(*it));
+            it = retries_.erase(it);
+        } else {
+            ++it;
+        }
+    }
     for (const ApiFetcher::Done& done : api_.take_done()) {
         take(done);
     }
@@ -119,12 +128,17 @@ void ServerRecords::take(const ApiFetcher::Done& done) {
     if (key.rfind(kPlayerKey, 0) == 0) {
         const std::size_t colon = key.find(':', kPlayerKey.size());
         const std::string name = key.substr(colon + 1);
+        const std::string why = key.substr(kPlayerKey.size(), colon - kPlayerKey.size());
         auto parsed = parse_player_answer(name, done.answer);
         if (auto* record = std::get_if<PlayerRecord>(&parsed)) {
             record->name = name; // as the room spells it (the server's may differ in case)
-            book_.record(*record, key.compare(kPlayerKey.size(), 4, "base") == 0);
+            book_.record(*record, why.rfind("base", 0) == 0);
+        } else if (why == "base" || why == "late") {
+            // A busy store (503), the rate limit (429) or no answer: once more in 1 s. Until
+            // then the seat or the lobby line stays as it was.
+            retries_.emplace_back(retry_at(), name, why + "-again");
         }
-        return; // a failed read shows no rating: the seat or the lobby line stays as it was
+        return;
     }
     if (key == "leaderboard") {
         auto parsed = parse_leaderboard_answer(done.answer);

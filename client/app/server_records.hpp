@@ -5,7 +5,8 @@
 // player's last matches and a match's journal to replay. Reads are bounded: the player's own
 // record on each return to the lobby (and once more 1.5 s later, as the web page does: a
 // forfeit's result may still be on its way to the store); each identified-looking seat (not a
-// bot) once when it appears in the room and once 1 s after its game is over.
+// bot) once when it appears in the room and once 1 s after its game is over. A read of a player
+// that fails (503 store_busy, 429, no answer) is made once more 1 s later.
 
 #include "api_fetcher.hpp"
 #include "carrom/client/match_view.hpp"
@@ -16,6 +17,7 @@
 #include <optional>
 #include <set>
 #include <string>
+#include <tuple>
 #include <variant>
 #include <vector>
 
@@ -54,6 +56,7 @@ public:
 private:
     void read_player(const std::string& name, const std::string& why);
     void take(const ApiFetcher::Done& done);
+    double retry_at() const { return now_ + 1.0; }
 
     ApiFetcher api_;
     RatingBook book_;
@@ -64,6 +67,9 @@ private:
     double seats_reread_at_ = -1.0;         // < 0: none due
     std::vector<std::string> game_names_;   // the seats' names of the game being played
     std::vector<std::string> seat_players_;
+    // Failed reads of a player, read once more: when (s), the name, the key's reason.
+    std::vector<std::tuple<double, std::string, std::string>> retries_;
+    double now_ = 0.0; // the time update() was last called with
     std::string matches_name_;
     Reading<Leaderboard> leaderboard_;
     Reading<PlayerRecord> matches_;

@@ -9,7 +9,8 @@
 namespace carrom::client {
 namespace {
 
-RatingEntry entry(const std::string& rule_set, double rating, const std::string& label, int games) {
+RatingEntry rated_entry(const std::string& rule_set, double rating, const std::string& label,
+                        int games) {
     RatingEntry r;
     r.rule_set = rule_set;
     r.rating = rating;
@@ -18,9 +19,9 @@ RatingEntry entry(const std::string& rule_set, double rating, const std::string&
     return r;
 }
 
-const std::vector<RatingEntry> kBefore{entry("icf", 1518.4, "1518", 12)};
-const std::vector<RatingEntry> kAfter{entry("icf", 1532.2, "1532", 13),
-                                      entry("freestyle", 1662.3, "1662?", 1)};
+const std::vector<RatingEntry> kBefore{rated_entry("icf", 1518.4, "1518", 12)};
+const std::vector<RatingEntry> kAfter{rated_entry("icf", 1532.2, "1532", 13),
+                                      rated_entry("freestyle", 1662.3, "1662?", 1)};
 
 TEST(RatingWords, TheLobbyLineIsEmptyWithoutRatings) {
     EXPECT_EQ(rating_line(std::nullopt, {}), "");
@@ -85,7 +86,7 @@ TEST(RatingBook, AGuestReadHasNoRating) {
     EXPECT_EQ(book.lobby_line("Guest"), "");
 }
 
-MatchEntry singles(std::optional<int> winner, std::string reason) {
+MatchEntry singles_match(std::optional<int> winner, std::string reason) {
     MatchEntry m;
     m.id = "k3j9x0a1b2c3d4e5";
     m.rule_set = "icf";
@@ -101,21 +102,21 @@ MatchEntry singles(std::optional<int> winner, std::string reason) {
 }
 
 TEST(MatchLine, AWinIsOurScoreFirst) {
-    const MatchLine line = match_line(singles(0, "target_points"), "Asha");
+    const MatchLine line = match_line(singles_match(0, "target_points"), "Asha");
     EXPECT_EQ(line.opponent, "Ravi");
     EXPECT_EQ(line.result, "Won 25-11");
     EXPECT_EQ(line.date, "2023-11-14 22:28 UTC");
 }
 
 TEST(MatchLine, TheLoserSeesALossAndNamesCompareIgnoringCase) {
-    const MatchLine line = match_line(singles(0, "target_points"), "ravi");
+    const MatchLine line = match_line(singles_match(0, "target_points"), "ravi");
     EXPECT_EQ(line.opponent, "Asha");
     EXPECT_EQ(line.result, "Lost 11-25");
 }
 
 TEST(MatchLine, ADrawAndAMatchWithoutResult) {
-    EXPECT_EQ(match_line(singles(std::nullopt, "boards"), "Asha").result, "Draw 25-11");
-    MatchEntry cut = singles(std::nullopt, "");
+    EXPECT_EQ(match_line(singles_match(std::nullopt, "boards"), "Asha").result, "Draw 25-11");
+    MatchEntry cut = singles_match(std::nullopt, "");
     cut.finished_ms = 0;
     const MatchLine line = match_line(cut, "Asha");
     EXPECT_EQ(line.result, "Not finished");
@@ -123,7 +124,7 @@ TEST(MatchLine, ADrawAndAMatchWithoutResult) {
 }
 
 TEST(MatchLine, DoublesNamesTheOtherThree) {
-    MatchEntry m = singles(1, "target_points");
+    MatchEntry m = singles_match(1, "target_points");
     m.players = {"Asha", "Ravi", "Ann", "Bo"};
     m.teams = {0, 1, 0, 1};
     const MatchLine line = match_line(m, "Asha");
