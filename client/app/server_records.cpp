@@ -77,6 +77,7 @@ void ServerRecords::room_left() {
 
 void ServerRecords::read_leaderboard(proto::RuleSet rule_set) {
     leaderboard_ = std::monostate{};
+    leaderboard_rule_set_ = std::string(proto::to_string(rule_set));
     if (!api_.get("leaderboard", "/leaderboard?rule_set=" +
                                      std::string(proto::to_string(rule_set)) + "&limit=50")) {
         leaderboard_ = std::string("No server to ask (or too many reads at once).");
@@ -143,6 +144,9 @@ void ServerRecords::take(const ApiFetcher::Done& done) {
     if (key == "leaderboard") {
         auto parsed = parse_leaderboard_answer(done.answer);
         if (auto* board = std::get_if<Leaderboard>(&parsed)) {
+            if (board->rule_set != leaderboard_rule_set_) {
+                return; // an earlier choice's answer, come late
+            }
             leaderboard_ = std::move(*board);
         } else {
             leaderboard_ = std::get<std::string>(std::move(parsed));

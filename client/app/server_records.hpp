@@ -71,6 +71,7 @@ private:
     std::vector<std::tuple<double, std::string, std::string>> retries_;
     double now_ = 0.0; // the time update() was last called with
     std::string matches_name_;
+    std::string leaderboard_rule_set_; // the rule set asked for last ("icf", ...)
     Reading<Leaderboard> leaderboard_;
     Reading<PlayerRecord> matches_;
     Reading<bool> journal_state_;
