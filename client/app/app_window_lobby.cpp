@@ -129,6 +129,9 @@ void AppWindow::open_replay(ReplayModel replay) {
 std::vector<std::string> AppWindow::seat_rating_texts() const {
     const MatchView& v = model_.view();
     std::vector<std::string> texts;
+    if (v.seats.size() > 2) {
+        return std::vector<std::string>(v.seats.size()); // doubles are not rated
+    }
     for (const SeatView& s : v.seats) {
         texts.push_back(
             s.occupied && !s.bot
@@ -143,7 +146,10 @@ GameOverText AppWindow::game_over_words() const {
     // The game's players, also one who has left the room since.
     const std::string rule_set(proto::to_string(model_.view().rule_set));
     for (const std::string& name : records_.seat_players()) {
-        const std::string rating = name.empty() ? "" : records_.book().seat_text(name, rule_set);
+        if (name.empty() || !records_.book().changed(name, rule_set)) {
+            continue;
+        }
+        const std::string rating = records_.book().seat_text(name, rule_set);
         if (!rating.empty()) {
             text.ratings += (text.ratings.empty() ? "Ratings: " : ", ") + name + " " + rating;
         }

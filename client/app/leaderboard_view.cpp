@@ -1,6 +1,7 @@
 #include "leaderboard_view.hpp"
 
 #include "carrom/client/plain_words.hpp"
+#include "carrom/client/rating_words.hpp"
 
 namespace carrom::client::app {
 
@@ -51,9 +52,11 @@ ListPage LeaderboardView::page(const ServerRecords::Reading<Leaderboard>& readin
         page.note_is_error = true;
     } else {
         const Leaderboard& board = std::get<Leaderboard>(reading);
+        // The web page's words for an empty board (rating_words.js, leaderboardView).
         page.note = board.rows.empty()
-                        ? "No established ratings in " + rule_set_name(rule_set_) +
-                              " yet (a rating is established after about 10 rated games)."
+                        ? "Nobody has an established " +
+                              rating_rule_set_word(std::string(proto::to_string(rule_set_))) +
+                              " rating yet (it takes about 10 rated games)."
                         : "Established ratings in " + rule_set_name(rule_set_) + ", best first";
         for (const LeaderboardRow& row : board.rows) {
             if (page.rows.size() == static_cast<std::size_t>(kListPageRows)) {

@@ -238,6 +238,14 @@ std::variant<PlayerRecord, std::string> parse_player_answer(const std::string& n
 std::variant<Leaderboard, std::string> parse_leaderboard_answer(const ApiAnswer& answer) {
     using player_api_json::json;
     const json body = json::parse(answer.body, nullptr, false);
+    // The web page's words for these two (rating_words.js, leaderboardView).
+    if (answer.status == 429) {
+        return std::string("Too many requests: try the leaderboard again in a few seconds.");
+    }
+    if (answer.status == 503 && body.is_object() && body.contains("error") &&
+        body["error"].is_object() && body["error"].value("code", "") == "store_disabled") {
+        return std::string("This server keeps no ratings, so it has no leaderboard.");
+    }
     if (auto problem = player_api_json::status_problem(answer, body)) {
         return *problem;
     }

@@ -17,6 +17,16 @@ bool same_name(const std::string& a, const std::string& b) {
            });
 }
 
+const RatingEntry* book_rating_for(const std::vector<RatingEntry>& ratings,
+                                   const std::string& rule_set) {
+    for (const RatingEntry& r : ratings) {
+        if (r.rule_set == rule_set) {
+            return &r;
+        }
+    }
+    return nullptr;
+}
+
 // "2026-11-28 17:40 UTC" for Unix ms.
 std::string utc_minute(std::int64_t ms) {
     const std::time_t seconds = static_cast<std::time_t>(ms / 1000);
@@ -66,6 +76,17 @@ std::string RatingBook::seat_text(const std::string& name, const std::string& ru
                             base == base_.end() ? std::nullopt : std::optional(base->second));
 }
 
+bool RatingBook::changed(const std::string& name, const std::string& rule_set) const {
+    const auto it = latest_.find(name);
+    const auto base = base_.find(name);
+    if (it == latest_.end() || base == base_.end()) {
+        return false;
+    }
+    const RatingEntry* now = book_rating_for(it->second, rule_set);
+    const RatingEntry* old = book_rating_for(base->second, rule_set);
+    return now != nullptr && now->games > (old == nullptr ? 0 : old->games);
+}
+
 MatchLine match_line(const MatchEntry& match, const std::string& me) {
     MatchLine line;
     int my_team = -1;
@@ -80,18 +101,18 @@ MatchLine match_line(const MatchEntry& match, const std::string& me) {
     for (std::size_t i = 0; i < others.size(); ++i) {
         line.opponent += (i == 0 ? "" : i + 1 == others.size() ? " & " : ", ") + others[i];
     }
-    // Scores are per team: ours first.
+    // Scores are per team: ours first (web: my_matches.js, the same words).
     std::string score;
     if (match.scores.size() == 2 && (my_team == 0 || my_team == 1)) {
-        score = " " + std::to_string(match.scores[static_cast<std::size_t>(my_team)]) + "-" +
+        score = " " + std::to_string(match.scores[static_cast<std::size_t>(my_team)]) + " : " +
                 std::to_string(match.scores[static_cast<std::size_t>(1 - my_team)]);
     }
     if (match.reason.empty()) {
-        line.result = "Not finished";
+        line.result = match.finished_ms == 0 ? "playing" : "unfinished";
     } else if (!match.winner_team) {
-        line.result = "Draw" + score;
+        line.result = "drawn" + score;
     } else {
-        line.result = (*match.winner_team == my_team ? "Won" : "Lost") + score;
+        line.result = (*match.winner_team == my_team ? "won" : "lost") + score;
     }
     line.date = utc_minute(match.finished_ms > 0 ? match.finished_ms : match.created_ms);
     return line;

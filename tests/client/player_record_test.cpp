@@ -201,9 +201,11 @@ TEST(Leaderboard, BadRowsAreNamed) {
 }
 
 TEST(Leaderboard, ErrorStatusesAreSentences) {
+    // The web page's words (rating_words.js) for these two.
     EXPECT_EQ(board_problem(429, ""),
-              "The server has had too many requests from this address (429): try again in a "
-              "moment.");
+              "Too many requests: try the leaderboard again in a few seconds.");
+    EXPECT_EQ(board_problem(503, R"({"error":{"code":"store_disabled","message":"x"}})"),
+              "This server keeps no ratings, so it has no leaderboard.");
     EXPECT_EQ(board_problem(400, R"({"error":{"code":"bad_query","message":"Unknown rule set."}})"),
               "The server answered 400 bad_query: Unknown rule set.");
 }

@@ -78,6 +78,17 @@ TEST(RatingBook, TheChangeShowsAgainstTheBaseReadAsTheGameBegan) {
     EXPECT_EQ(book.seat_text("Asha", "icf"), "1532");
 }
 
+TEST(RatingBook, ChangedIsMoreGamesThanTheBase) {
+    RatingBook book;
+    EXPECT_FALSE(book.changed("Asha", "icf")) << "nothing read";
+    book.record(PlayerRecord{"Asha", kBefore, {}}, true);
+    EXPECT_FALSE(book.changed("Asha", "icf"));
+    book.record(PlayerRecord{"Asha", kAfter, {}}, false);
+    EXPECT_TRUE(book.changed("Asha", "icf"));
+    EXPECT_TRUE(book.changed("Asha", "freestyle")) << "a first rated game in a rule set";
+    EXPECT_FALSE(book.changed("Asha", "seed"));
+}
+
 TEST(RatingBook, AGuestReadHasNoRating) {
     RatingBook book;
     book.record(PlayerRecord{"Guest", {}, {}}, true);
@@ -104,23 +115,25 @@ MatchEntry singles_match(std::optional<int> winner, std::string reason) {
 TEST(MatchLine, AWinIsOurScoreFirst) {
     const MatchLine line = match_line(singles_match(0, "target_points"), "Asha");
     EXPECT_EQ(line.opponent, "Ravi");
-    EXPECT_EQ(line.result, "Won 25-11");
+    EXPECT_EQ(line.result, "won 25 : 11");
     EXPECT_EQ(line.date, "2023-11-14 22:28 UTC");
 }
 
 TEST(MatchLine, TheLoserSeesALossAndNamesCompareIgnoringCase) {
     const MatchLine line = match_line(singles_match(0, "target_points"), "ravi");
     EXPECT_EQ(line.opponent, "Asha");
-    EXPECT_EQ(line.result, "Lost 11-25");
+    EXPECT_EQ(line.result, "lost 11 : 25");
 }
 
 TEST(MatchLine, ADrawAndAMatchWithoutResult) {
-    EXPECT_EQ(match_line(singles_match(std::nullopt, "boards"), "Asha").result, "Draw 25-11");
+    EXPECT_EQ(match_line(singles_match(std::nullopt, "boards"), "Asha").result, "drawn 25 : 11");
     MatchEntry cut = singles_match(std::nullopt, "");
     cut.finished_ms = 0;
     const MatchLine line = match_line(cut, "Asha");
-    EXPECT_EQ(line.result, "Not finished");
+    EXPECT_EQ(line.result, "playing");
     EXPECT_EQ(line.date, "2023-11-14 22:26 UTC") << "the start's date without an end";
+    cut.finished_ms = 1700000900000; // the room closed mid-game: an end without a result
+    EXPECT_EQ(match_line(cut, "Asha").result, "unfinished");
 }
 
 TEST(MatchLine, DoublesNamesTheOtherThree) {
@@ -129,7 +142,7 @@ TEST(MatchLine, DoublesNamesTheOtherThree) {
     m.teams = {0, 1, 0, 1};
     const MatchLine line = match_line(m, "Asha");
     EXPECT_EQ(line.opponent, "Ravi, Ann & Bo");
-    EXPECT_EQ(line.result, "Lost 25-11");
+    EXPECT_EQ(line.result, "lost 25 : 11");
 }
 
 } // namespace

@@ -181,8 +181,8 @@ TEST_F(RatingsViews, TheLeaderboardListsTheEstablishedRatingsBestFirst) {
     // Tab steps to the next rule set (classic) and reads again: nobody is established there.
     r = run(*server_, as_asha(), "F2,wait,Tab,wait,wait");
     EXPECT_EQ(r["rows"], Json::array());
-    EXPECT_EQ(r["note"], "No established ratings in Classic (seed) rules yet (a rating is "
-                         "established after about 10 rated games).");
+    EXPECT_EQ(r["note"], "Nobody has an established classic rating yet (it takes about 10 rated "
+                         "games).");
 }
 
 TEST_F(RatingsViews, MyMatchesListsTheRatedMatchWithItsResult) {
@@ -195,7 +195,7 @@ TEST_F(RatingsViews, MyMatchesListsTheRatedMatchWithItsResult) {
     EXPECT_EQ(row[0], "Ravi");
     EXPECT_EQ(row[1], "freestyle");
     const std::vector<int> scores = match["scores"].get<std::vector<int>>();
-    EXPECT_EQ(row[2], std::string(won ? "Won " : "Lost ") + std::to_string(scores[0]) + "-" +
+    EXPECT_EQ(row[2], std::string(won ? "won " : "lost ") + std::to_string(scores[0]) + " : " +
                           std::to_string(scores[1]));
     EXPECT_EQ(row[3].get<std::string>().size(), std::string("2026-11-28 17:40 UTC").size());
 }
@@ -234,7 +234,7 @@ TEST_F(RatingsViews, AServerWithoutAStoreSaysSoInTheLeaderboard) {
     ASSERT_TRUE(bare.start()) << bare.log();
     const Json r = run(bare, {"--name", "Asha", "--identity", "none"}, "F2,wait,wait");
     EXPECT_EQ(r["page"], "leaderboard");
-    EXPECT_EQ(r["note"], "This server keeps no players or ratings (it runs without a store).");
+    EXPECT_EQ(r["note"], "This server keeps no ratings, so it has no leaderboard.");
     EXPECT_EQ(r["rows"], Json::array());
 }
 

@@ -25,6 +25,8 @@ public:
     // The text beside a seat's name for rule_set ("1520?", "1532 (+14)"; "" for a guest, a bot,
     // a player without a rating in rule_set, or a name not read yet).
     std::string seat_text(const std::string& name, const std::string& rule_set) const;
+    // name's rating in rule_set has more games than its base (a rated game changed it).
+    bool changed(const std::string& name, const std::string& rule_set) const;
     // A read of name has come (a guest's too: it has no ratings).
     bool has(const std::string& name) const { return latest_.count(name) > 0; }
 
@@ -36,7 +38,7 @@ private:
 // What a row of the "My matches" list says about one of `me`'s matches.
 struct MatchLine {
     std::string opponent; // the other seats' names, "Ravi" or "Ravi, Ann & Bo"
-    std::string result;   // "Won 25-11", "Lost 11-25", "Draw 20-20", "Not finished"
+    std::string result;   // "won 25 : 11", "lost 11 : 25", "drawn 20 : 20", "playing", "unfinished"
     std::string date;     // the end's (or without one, its start's) date, "2026-11-28 17:40 UTC"
 };
 
