@@ -5,10 +5,10 @@
 // "bar:N" (the bottom bar's N-th button: 0 Rules, 1 Settings, 2 Sound, 3 Leave), "dialog:N" (the
 // open dialog's), "tips:N" (the first-game tips'), "lobby:N" (the lobby's controls in
 // LobbyView::control_rects order), "leaderboard:N", "matches:N" (the lobby's Leaderboard and My
-// matches pages: AppWindow::ui_json), or "wait" (nothing, for kFramesApart frames). The script starts at the first frame
-// showing our turn at rest in a room, or, when the run asks for no room, the connected lobby. While
-// tokens remain, a screenshot waits (UnattendedFrame::input_pending). A click on a button not drawn
-// is skipped.
+// matches pages: AppWindow::ui_json), or "wait" (nothing, for kFramesApart frames). The script
+// starts at the first frame showing our turn at rest in a room, or, when the run asks for no room,
+// the connected lobby. While tokens remain, a screenshot waits (UnattendedFrame::input_pending). A
+// click on a button not drawn is skipped.
 
 #include "unattended_mode.hpp"
 
