@@ -9,7 +9,9 @@ packages=(
     build-essential cmake ninja-build pkg-config
     libboost-dev nlohmann-json3-dev libsimdjson-dev libsfml-dev
     libgtest-dev libgmock-dev googletest libbenchmark-dev
-    libcli11-dev libspdlog-dev libsqlite3-dev libsqlitecpp-dev libpqxx-dev postgresql
+    libcli11-dev libspdlog-dev libsqlite3-dev libsqlitecpp-dev libutf8proc-dev libpqxx-dev
+    sqlite3  # web.ratings_page writes its players' ratings into a store with it
+    postgresql
     libssl-dev ca-certificates openssl libnss3-tools
     xvfb xauth fonts-dejavu-core
     python3 python3-matplotlib

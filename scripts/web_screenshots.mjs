@@ -1,7 +1,7 @@
 #!/usr/bin/env node
 // The web client's pictures in docs/img, made the way a player sees them:
 //
-//   node scripts/web_screenshots.mjs [--server PATH] [--out docs/img] [--only singles|doubles|replay|texts]
+//   node scripts/web_screenshots.mjs [--server PATH] [--out docs/img] [--only singles|doubles|replay|texts|ratings]
 //
 // web-aim.png: 900 x 900, a game against a server bot, the break being aimed (the pull, the
 // guide, the power ring and, with the page's engine, the aim assist). web-phone.png: 390 x 844 at 2 device px per CSS px, touch, the
@@ -16,6 +16,9 @@
 // into a pocket after the break (warnings, and what it cost); web-game-over-loser.png, three
 // missed 1 s shot clocks; web-game-over-winner.png, the opponent left (no rematch);
 // web-board-summary.png, the card after the first of two ICF boards against a hard bot.
+// The ratings (900 x 900, two seeded players in a rated quick match, tests/web/lib/rated.mjs):
+// web-ratings-seats.png, Asha's top bar with both ratings; web-ratings-game-over.png, her card
+// after Ravi forfeits, with both changes; web-leaderboard.png, her lobby's leaderboard (ICF).
 
 import fs from 'node:fs';
 import os from 'node:os';
@@ -30,6 +33,7 @@ const { launchBrowser, pageUrl, run, startServer, startWebServer } = await impor
 const { Player } = await import(path.join(root, 'tests/web/lib/player.mjs'));
 const { breakShot, playUntilOver } = await import(path.join(root, 'tests/web/lib/match.mjs'));
 const { chooseShot } = await import(path.join(root, 'tests/web/lib/shot_chooser.mjs'));
+const { ratedPair, startSeededServer } = await import(path.join(root, 'tests/web/lib/rated.mjs'));
 
 // A game against a server bot on a server with a match store, then its replay page paused in
 // the last stroke's motion.
@@ -186,6 +190,34 @@ async function textsPictures(t) {
   await shot(a, 'web-board-summary.png');
 }
 
+// A rated game of the seeded players (see the top): the seats, the game over, the leaderboard.
+async function ratingsPictures(t) {
+  const dir = fs.mkdtempSync(path.join(os.tmpdir(), 'carrom-shots-'));
+  try {
+    const { server, web } = await startSeededServer(dir, ['--shot-clock', '0', '--quick-match-bot', '0']);
+    const [asha, ravi] = await ratedPair(t.browser, server, web, t.errors);
+    await asha.waitFor('both ratings read', (st) => st.ratings.seats.every((x) => x !== ''));
+    const saved = [];
+    const shot = async (file, target = asha.page) => {
+      await target.screenshot({ path: path.join(out, file) });
+      saved.push(path.join(out, file));
+    };
+    await shot('web-ratings-seats.png');
+    await ravi.leaveAndForfeit();
+    await asha.waitFor('the changes', (st) => st.phase === 'game_over' && st.ratings.gameOver.startsWith('Ratings: Asha'), 15000);
+    await shot('web-ratings-game-over.png');
+    await asha.press('#to-lobby');
+    await asha.waitFor('the lobby', (st) => !st.inRoom && st.session.phase === 'lobby');
+    await asha.page.click('#leaderboard summary');
+    await asha.page.waitForSelector('#leaderboard-rows tr:nth-child(3)');
+    await asha.page.locator('#leaderboard').scrollIntoViewIfNeeded();
+    await shot('web-leaderboard.png');
+    console.log(`saved ${saved.join(', ')}`);
+  } finally {
+    fs.rmSync(dir, { recursive: true, force: true });
+  }
+}
+
 run('web_screenshots', 300000, async (t) => {
   const server = await startServer(['--shot-clock', '30', '--bot-think-ms', '100']);
   const web = await startWebServer(server);
@@ -202,6 +234,7 @@ run('web_screenshots', 300000, async (t) => {
     console.log(`saved ${file}`);
   }
   if (wanted('texts')) await textsPictures(t);
+  if (wanted('ratings')) await ratingsPictures(t);
   if (!wanted('singles')) return;
   const desk = await Player.open(await t.browser.newContext({ viewport: { width: 900, height: 900 } }), 'desktop', pageUrl(web, server), t.errors);
   await desk.fillLobby({ name: 'Asha', ruleSet: 'icf', botLevel: 'easy' });

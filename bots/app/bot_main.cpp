@@ -4,6 +4,7 @@
 #include "carrom/bots/bot_runner.hpp"
 #include "carrom/bots/scripted_strategy.hpp"
 #include "carrom/cli/room_request_flags.hpp"
+#include "carrom/net/identity_file.hpp"
 #include "carrom/proto/types.hpp"
 #include "trace_writer.hpp"
 
@@ -93,6 +94,10 @@ int main(int argc, char** argv) {
     app.add_option("--ca-file", config.connection.ca_file,
                    "wss://: trust the certificate authorities in this PEM file too");
     app.add_option("--name", config.name, "Player name (1-24 bytes)");
+    std::string identity_path;
+    app.add_option("--identity", identity_path,
+                   "Play as the identified player whose key is in this file (created with a new "
+                   "key when absent; docs/ratings.md); without it, a guest");
     cli::add_room_request_flags(app, room_flags);
     app.add_option("--target-points", target_points, "--create: points to win (0 = default)")
         ->check(CLI::Range(0, 1000));
@@ -101,6 +106,8 @@ int main(int argc, char** argv) {
     app.add_option("--shot-clock", shot_clock_s,
                    "--create: seconds per stroke (0 = off, -1 = server default)")
         ->check(CLI::Range(-1.0, 600.0));
+    app.add_flag("--rated", config.create.rated,
+                 "--create: a rated room (needs --identity; singles, no bot; docs/ratings.md)");
     app.add_option("--strategy", strategy_options.name, "Strategy")
         ->check(CLI::IsMember(bots::strategy_names()));
     app.add_option("--script", script_path, "Shots for --strategy scripted (JSON lines)");
@@ -130,6 +137,14 @@ int main(int argc, char** argv) {
         "", std::make_shared<spdlog::sinks::stderr_color_sink_mt>()));
     spdlog::set_level(spdlog::level::from_str(log_level));
 
+    if (!identity_path.empty()) {
+        const net::LoadedIdentity identity = net::load_or_create_identity(identity_path);
+        if (identity.error) {
+            std::cerr << "carrom-bot: " << *identity.error << "\n";
+            return 2;
+        }
+        config.identity = identity.key;
+    }
     if (const std::string problem = cli::room_request_problem(room_flags); !problem.empty()) {
         std::cerr << "carrom-bot: " << problem << "\n";
         return 2;

@@ -15,6 +15,8 @@ struct AppOptions {
     std::string url = "ws://127.0.0.1:7777"; // carrom-server's default port
     std::string ca_file; // wss://: a private CA trusted besides the system's (--ca-file)
     std::string name = "Player";
+    // The player key sent in hello (--identity FILE, else the default file; docs/ratings.md).
+    std::optional<std::string> identity;
     std::optional<RoomRequest> request; // from the flags; else the lobby asks
     bool demo = false;                  // offline: a local stand-in server (DemoLink)
     double demo_break_at_s = 1.5;

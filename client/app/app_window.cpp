@@ -39,8 +39,9 @@ AppWindow::AppWindow(const AppOptions& options, const sf::Font& font)
       geometry_(make_board_geometry(physics_)), model_(physics_), aim_(physics_),
       aim_assist_(physics_), board_painter_(geometry_), hud_(font), lobby_(font, options.name),
       menus_(settings_file(options), load_settings(settings_file(options))),
+      records_(options.demo ? std::string() : options.url, options.ca_file),
       sound_(!options.mute && options.bench_frames == 0 && options.screenshot_path.empty()),
-      session_(make_factory(), options.name, network_session_config()) {}
+      session_(make_factory(), options.name, network_session_config(options.identity)) {}
 
 LinkFactory AppWindow::make_factory() {
     if (!options_.demo) {
@@ -64,25 +65,7 @@ void AppWindow::handle_event(const sf::Event& e) {
         return;
     }
     if (session_.phase() == SessionPhase::Lobby) {
-        if (auto request = lobby_.on_event(e, lobby_area())) {
-            if (lobby_.name() != options_.name) {
-                // Another name: a new player on a new connection.
-                options_.name = lobby_.name();
-                session_ = ClientSession(make_factory(), options_.name, network_session_config());
-                session_.start(clock_.now());
-            }
-            session_.request(*request);
-        }
-        switch (lobby_.take_menu()) {
-        case LobbyView::Menu::Rules:
-            menus_.open_rules(lobby_.rule_set());
-            break;
-        case LobbyView::Menu::Settings:
-            menus_.open_settings();
-            break;
-        case LobbyView::Menu::None:
-            break;
-        }
+        handle_lobby_event(e);
         return;
     }
     if (model_.board_summary_shown(clock_.now()) && BoardSummaryPanel::dismisses(e)) {
@@ -125,7 +108,7 @@ void AppWindow::want_leave() {
 }
 
 void AppWindow::handle_game_over_input(const sf::Event& e) {
-    const auto choice = game_over_.on_event(e, game_over_text(model_.view(), rematch_asked_));
+    const auto choice = game_over_.on_event(e, game_over_words());
     if (choice == GameOverPanel::Choice::Rematch) {
         rematch_asked_ = session_.send_game(proto::Rematch{});
     } else if (choice == GameOverPanel::Choice::Lobby) {
@@ -142,6 +125,7 @@ void AppWindow::back_to_lobby() {
     shot_sent_turn_ = -1;
     rematch_asked_ = false;
     announced_room_.clear();
+    records_.room_left();
 }
 
 bool AppWindow::handle_emote_key(const sf::Event& e) {
@@ -273,6 +257,7 @@ void AppWindow::update(double now) {
     }
     sync_aim(now);
     announce_room();
+    update_records(now);
     const Settings& settings = menus_.settings();
     if (model_.countdown_tick(now)) {
         // the shot clock's last seconds
@@ -322,6 +307,10 @@ int AppWindow::run() {
         }
         const double now = clock_.now();
         update(now);
+        if (replay_exit_) {
+            window_.close();
+            return *replay_exit_;
+        }
         for (const sf::Event& e : std::exchange(unattended_input_, {})) {
             handle_event(e);
         }
@@ -411,13 +400,22 @@ std::string AppWindow::ui_json() const {
         {"dialog_buttons", rects(menus_.dialog_buttons())},
         {"tips_buttons", rects(menus_.tips_buttons())},
         {"lobby", !model_.view().in_room},
-        {"lobby_buttons", rects(lobby_.control_rects(lobby_area()))},
+        {"lobby_buttons", rects(lobby_page_ == LobbyPage::Main ? lobby_.control_rects(lobby_area())
+                                                               : std::vector<Rect>{})},
+        {"leaderboard_buttons",
+         rects(lobby_page_ == LobbyPage::Leaderboard ? leaderboard_view_.control_rects(lobby_area())
+                                                     : std::vector<Rect>{})},
+        {"matches_buttons", rects(lobby_page_ == LobbyPage::Matches
+                                      ? match_list_.control_rects(lobby_area(), records_.matches())
+                                      : std::vector<Rect>{})},
         {"lobby_choice",
          {{"name", lobby_.name()},
           {"rule_set", std::string(proto::to_string(lobby_.rule_set()))},
           {"bot_level", std::string(proto::to_string(lobby_.bot_level()))}}},
         {"rule_set", std::string(proto::to_string(model_.view().rule_set))},
-        {"session", session_.phase() == SessionPhase::Lobby ? "lobby" : "other"}}
+        {"aim_assist", model_.view().aim_assist},
+        {"session", session_.phase() == SessionPhase::Lobby ? "lobby" : "other"},
+        {"records", records_json()}}
         .dump();
 }
 

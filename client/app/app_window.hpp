@@ -1,8 +1,9 @@
 #pragma once
 // The desktop client's window: lobby, match view, input, sound, and at most one unattended mode
 // (unattended_mode.hpp: screenshot and report, final state, timeout, frame benchmark, autoplay)
-// that sees every frame. One class over two files: app_window.cpp (the loop, messages, input),
-// app_window_draw.cpp (drawing).
+// that sees every frame. One class over three files: app_window.cpp (the loop, messages, input),
+// app_window_draw.cpp (drawing), app_window_lobby.cpp (the lobby's pages and the ratings read
+// from the server's HTTP API).
 
 #include "app.hpp"
 #include "blitter.hpp"
@@ -13,19 +14,24 @@
 #include "carrom/client/board_geometry.hpp"
 #include "carrom/client/client_session.hpp"
 #include "carrom/client/connection.hpp"
+#include "carrom/client/game_over_text.hpp"
 #include "carrom/client/match_model.hpp"
 #include "carrom/client/screen_mapping.hpp"
 #include "frame_clock.hpp"
 #include "frame_log.hpp"
 #include "game_over_panel.hpp"
 #include "hud_painter.hpp"
+#include "leaderboard_view.hpp"
 #include "lobby_view.hpp"
+#include "match_list_view.hpp"
 #include "match_menus.hpp"
 #include "reconnect_panel.hpp"
+#include "server_records.hpp"
 #include "sound_player.hpp"
 #include "unattended_mode.hpp"
 
 #include <SFML/Graphics.hpp>
+#include <nlohmann/json.hpp>
 
 #include <memory>
 #include <optional>
@@ -63,6 +69,21 @@ private:
     // Keys 1-8 send an emote (a seated player in a started game); E mutes or shows them all.
     bool handle_emote_key(const sf::Event& e);
     void draw_status_panel(const std::string& title, const std::string& detail);
+    // The lobby's share of an event: its main page, the leaderboard or My matches.
+    void handle_lobby_event(const sf::Event& e);
+    void draw_lobby(const std::string& error, bool can_choose);
+    // Reads the server's records in the background and hands the HUD the seats' ratings; opens a
+    // match's journal that came as a replay.
+    void update_records(double now);
+    // Runs the replay window (the lobby's window hidden meanwhile); back in the lobby after,
+    // unless an unattended mode ended the replay (replay_exit_).
+    void open_replay(ReplayModel replay);
+    // Each seat's rating text (RatingBook::seat_text; "" for a bot or an empty seat).
+    std::vector<std::string> seat_rating_texts() const;
+    // The game-over panel's words with the seats' ratings after a rated game.
+    GameOverText game_over_words() const;
+    // The lobby's pages and the ratings, for the screenshot report.
+    nlohmann::json records_json() const;
     void announce_room();
     // Hands the frame just drawn (number `frame`) to the unattended mode; its exit code when it
     // ends the run.
@@ -89,6 +110,14 @@ private:
     GameOverPanel game_over_;
     BoardSummaryPanel board_summary_;
     ReconnectPanel reconnect_panel_;
+    ServerRecords records_;
+    enum class LobbyPage { Main, Leaderboard, Matches };
+    LobbyPage lobby_page_ = LobbyPage::Main;
+    LeaderboardView leaderboard_view_;
+    MatchListView match_list_;
+    bool journal_asked_ = false;     // My matches asked for a replay's journal
+    std::optional<int> replay_exit_; // an unattended replay's exit code: it ends the run
+    bool in_lobby_ = false;          // the session was in the lobby last frame
     SoundPlayer sound_;
     ClientSession session_;
     sf::RenderWindow window_;

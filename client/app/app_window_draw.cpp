@@ -178,8 +178,7 @@ void AppWindow::draw(double now) {
         hud_.draw(window_, blitter_, layout_, model_, line, now, tips_h, bar_w, bar_buttons);
         draw_emotes(now);
         if (model_.view().phase == proto::Phase::GameOver) {
-            game_over_.draw(window_, blitter_, hud_.texts(), layout_.board,
-                            game_over_text(model_.view(), rematch_asked_));
+            game_over_.draw(window_, blitter_, hud_.texts(), layout_.board, game_over_words());
         }
         if (model_.board_summary_shown(now)) {
             board_summary_.draw(window_, blitter_, hud_.texts(), layout_.board,
@@ -202,10 +201,10 @@ void AppWindow::draw(double now) {
     }
     switch (phase) {
     case SessionPhase::Lobby:
-        lobby_.draw(window_, lobby_area(), session_.status_text(), error, true);
+        draw_lobby(error, true);
         break;
     case SessionPhase::Joining:
-        lobby_.draw(window_, lobby_area(), session_.status_text(), error, false);
+        draw_lobby(error, false);
         break;
     case SessionPhase::Failed:
         draw_status_panel("Cannot connect", session_.status_text());

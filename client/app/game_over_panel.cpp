@@ -69,8 +69,10 @@ Sketch GameOverPanel::sketch(TextCache& texts, const Rect& b, const GameOverText
     const std::vector<std::string> waiting = wrap_text(texts, text.waiting, body_size, w - 2 * pad);
     // Title, a gap, the reason, the score, a gap, the waiting line (if any), the buttons.
     const double title_h = std::round(title_size * 1.5);
+    const double ratings_h = text.ratings.empty() ? 0.0 : line_h;
     const double h = pad + title_h + line_h * 0.4 + line_h * static_cast<double>(reason.size()) +
-                     line_h + line_h * 0.8 + line_h * static_cast<double>(waiting.size()) +
+                     line_h + ratings_h + line_h * 0.8 +
+                     line_h * static_cast<double>(waiting.size()) +
                      (waiting.empty() ? 0.0 : line_h * 0.4) + button_h + pad;
     Sketch s;
     const Rect panel = s.centred_panel(b, w, h, kPanel, kGold, 2.0f);
@@ -83,7 +85,13 @@ Sketch GameOverPanel::sketch(TextCache& texts, const Rect& b, const GameOverText
         y += line_h;
     }
     s.text(text.score, body_size, cx, static_cast<float>(y + line_h / 2.0), kDim, Align::Centre);
-    y += line_h + line_h * 0.8;
+    y += line_h;
+    if (!text.ratings.empty()) {
+        s.text(text.ratings, body_size, cx, static_cast<float>(y + line_h / 2.0), kGold,
+               Align::Centre);
+        y += ratings_h;
+    }
+    y += line_h * 0.8;
     for (const std::string& line : waiting) {
         s.text(line, body_size, cx, static_cast<float>(y + line_h / 2.0), kDim, Align::Centre);
         y += line_h;

@@ -166,6 +166,10 @@ void HudPainter::sketch_seat(Sketch& sk, const Rect& area, const MatchModel& mod
     const unsigned name_size = text_size(inner.h, 0.34);
     const unsigned score_size = text_size(inner.h, 0.62);
     std::string name = s.occupied ? s.name : "Free seat";
+    if (const auto index = static_cast<std::size_t>(seat);
+        s.occupied && index < seat_ratings_.size() && !seat_ratings_[index].empty()) {
+        name += " " + seat_ratings_[index]; // beside the name: "Asha 1520?"
+    }
     if (s.occupied && !s.connected) {
         name += " (away)";
     }

@@ -45,6 +45,8 @@ public:
         return top_.repaints() + seat_.repaints() + bottom_.repaints() + over_board_.repaints();
     }
     TextCache& texts() { return texts_; }
+    // Each seat's rating shown beside its name ("1520?", "1532 (+14)"; "" for none), by seat.
+    void set_seat_ratings(std::vector<std::string> ratings) { seat_ratings_ = std::move(ratings); }
     // The part of the window the last draw covered with messages or the room code, if any.
     const std::optional<Rect>& overlay_area() const { return over_board_.last_overlay(); }
     // Each message line as last drawn: its text and window px.
@@ -69,6 +71,7 @@ private:
     void sketch_room_code(Sketch& s, const Rect& board, const MatchModel& model) const;
 
     TextCache texts_;
+    std::vector<std::string> seat_ratings_;
     CachedLayer top_;
     CachedLayer seat_;
     CachedLayer bottom_;

@@ -5,6 +5,8 @@
 #include <cctype>
 #include <cmath>
 #include <iostream>
+#include <string_view>
+#include <utility>
 
 namespace carrom::client::app {
 namespace {
@@ -13,14 +15,14 @@ std::optional<sf::Keyboard::Key> key_named(const std::string& name) {
     if (name.size() == 1 && std::islower(static_cast<unsigned char>(name[0]))) {
         return static_cast<sf::Keyboard::Key>(sf::Keyboard::A + (name[0] - 'a'));
     }
-    if (name == "Escape") {
-        return sf::Keyboard::Escape;
-    }
-    if (name == "Enter") {
-        return sf::Keyboard::Enter;
-    }
-    if (name == "F1") {
-        return sf::Keyboard::F1;
+    static constexpr std::pair<std::string_view, sf::Keyboard::Key> kNamedKeys[] = {
+        {"Escape", sf::Keyboard::Escape}, {"Enter", sf::Keyboard::Enter},
+        {"F1", sf::Keyboard::F1},         {"F2", sf::Keyboard::F2},
+        {"F3", sf::Keyboard::F3},         {"Tab", sf::Keyboard::Tab}};
+    for (const auto& [named, key] : kNamedKeys) {
+        if (name == named) {
+            return key;
+        }
     }
     return std::nullopt;
 }

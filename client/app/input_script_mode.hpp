@@ -1,13 +1,14 @@
 #pragma once
 // carrom-client --input: keys and clicks handed to the window unattended, as a player would give
 // them, one every kFramesApart frames, for tests of the menus. A token is a key ("a" to "z",
-// "Escape", "Enter", "F1") or a click on the centre of a button as last drawn: "bar:N" (the bottom
-// bar's N-th button: 0 Rules, 1 Settings, 2 Sound, 3 Leave), "dialog:N" (the open dialog's),
-// "tips:N" (the first-game tips'), "lobby:N" (the lobby's controls in LobbyView::control_rects
-// order), or "wait" (nothing, for kFramesApart frames). The script starts at the first frame
-// showing our turn at rest in a room, or, when the run asks for no room, the connected lobby. While
-// tokens remain, a screenshot waits (UnattendedFrame::input_pending). A click on a button not drawn
-// is skipped.
+// "Escape", "Enter", "F1", "F2", "F3", "Tab") or a click on the centre of a button as last drawn:
+// "bar:N" (the bottom bar's N-th button: 0 Rules, 1 Settings, 2 Sound, 3 Leave), "dialog:N" (the
+// open dialog's), "tips:N" (the first-game tips'), "lobby:N" (the lobby's controls in
+// LobbyView::control_rects order), "leaderboard:N", "matches:N" (the lobby's Leaderboard and My
+// matches pages: AppWindow::ui_json), or "wait" (nothing, for kFramesApart frames). The script
+// starts at the first frame showing our turn at rest in a room, or, when the run asks for no room,
+// the connected lobby. While tokens remain, a screenshot waits (UnattendedFrame::input_pending). A
+// click on a button not drawn is skipped.
 
 #include "unattended_mode.hpp"
 

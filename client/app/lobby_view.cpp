@@ -45,9 +45,12 @@ Rect LobbyView::control_rect(Control c, const Rect& area) const {
     case kWatch:
         return {x0 + w * 0.44 + 2.0 * gap + third, row(5) - h * 0.2, third, h};
     case kHelp:
-        return {x0, row(6), half, h * 0.85};
     case kSettings:
-        return {x0 + half + gap, row(6), half, h * 0.85};
+    case kLeaderboard:
+    case kMatches: { // four in a row
+        const double quarter = (w - 3.0 * gap) / 4.0;
+        return {x0 + (c - kHelp) * (quarter + gap), row(6), quarter, h * 0.85};
+    }
     case kControlCount:
         break;
     }
@@ -90,6 +93,10 @@ std::string LobbyView::label(Control c) const {
         return "How to play";
     case kSettings:
         return "Settings";
+    case kLeaderboard:
+        return "Leaderboard";
+    case kMatches:
+        return "My matches";
     case kControlCount:
         break;
     }
@@ -125,6 +132,12 @@ std::optional<RoomRequest> LobbyView::press(Control c) {
         return std::nullopt;
     case kSettings:
         menu_ = Menu::Settings;
+        return std::nullopt;
+    case kLeaderboard:
+        menu_ = Menu::Leaderboard;
+        return std::nullopt;
+    case kMatches:
+        menu_ = Menu::Matches;
         return std::nullopt;
     case kCreate:
     case kBot:
@@ -164,6 +177,10 @@ std::optional<RoomRequest> LobbyView::on_event(const sf::Event& event, const Rec
                 return press(static_cast<Control>(c));
             }
         }
+    } else if (event.type == sf::Event::KeyPressed && event.key.code == sf::Keyboard::F2) {
+        return press(kLeaderboard);
+    } else if (event.type == sf::Event::KeyPressed && event.key.code == sf::Keyboard::F3) {
+        return press(kMatches);
     } else if (event.type == sf::Event::TextEntered) {
         const auto ch = event.text.unicode;
         std::string& field = typing_name_ ? name_ : code_;
@@ -182,7 +199,7 @@ std::optional<RoomRequest> LobbyView::on_event(const sf::Event& event, const Rec
 }
 
 void LobbyView::draw(sf::RenderTarget& target, const Rect& area, const std::string& status,
-                     const std::string& error, bool can_choose) const {
+                     const std::string& error, bool can_choose, const std::string& rating) const {
     draw_panel(target, area, sf::Color(20, 12, 8, 200));
     const float cx = static_cast<float>(area.x + area.w / 2.0);
     const auto big = static_cast<unsigned>(std::clamp(area.h * 0.08, 24.0, 64.0));
@@ -216,6 +233,11 @@ void LobbyView::draw(sf::RenderTarget& target, const Rect& area, const std::stri
                             : kText,
                       Align::Centre);
         }
+    }
+    if (!rating.empty()) {
+        const Rect above = control_rect(kLeaderboard, area); // the error line is below
+        draw_text(target, font_, rating, mid, cx, static_cast<float>(above.y + above.h + mid * 1.3),
+                  kGold, Align::Centre);
     }
     if (!error.empty()) {
         draw_text(target, font_, error, mid, cx, static_cast<float>(area.y + area.h * 0.93),

@@ -2,8 +2,10 @@
 // The in-window lobby, as the web page's: the player's name, the rule set and the server bot's
 // level (each button steps to the next choice), singles or doubles, then create a room (alone or
 // with server bots in the other seats), quick match, or type a room code to join as a player or
-// to watch; How to play and Settings. Also shows the connection status and the last error. A
-// click on the name or the code field chooses where typing goes (the code field at first).
+// to watch; How to play and Settings; the Leaderboard (also F2) and My matches (also F3). Also
+// shows the connection status, the player's rating line ("Rating: ICF 1532 (+14)") and the last
+// error. A click on the name or the code field chooses where typing goes (the code field at
+// first).
 
 #include "carrom/client/client_session.hpp"
 #include "carrom/client/screen_mapping.hpp"
@@ -20,21 +22,23 @@ namespace carrom::client::app {
 
 class LobbyView {
 public:
-    enum class Menu { None, Rules, Settings };
+    enum class Menu { None, Rules, Settings, Leaderboard, Matches };
 
     LobbyView(const sf::Font& font, std::string name) : font_(font), name_(std::move(name)) {}
 
     // A button press or Enter in the code field gives a room request.
     std::optional<RoomRequest> on_event(const sf::Event& event, const Rect& area);
+    // rating: the player's rating line ("" for none).
     void draw(sf::RenderTarget& target, const Rect& area, const std::string& status,
-              const std::string& error, bool can_choose) const;
-    // How to play or Settings pressed since the last call.
+              const std::string& error, bool can_choose, const std::string& rating = "") const;
+    // How to play, Settings, Leaderboard or My matches pressed since the last call.
     Menu take_menu() { return std::exchange(menu_, Menu::None); }
     const std::string& name() const { return name_; }
     proto::RuleSet rule_set() const { return rule_set_; }
     proto::BotLevel bot_level() const { return bot_level_; }
     // Every control's rect in `area` (name, rule set, bot level, singles, doubles, create, bot,
-    // quick, code, join, watch, how to play, settings), for the screenshot report.
+    // quick, code, join, watch, how to play, settings, leaderboard, my matches), for the
+    // screenshot report.
     std::vector<Rect> control_rects(const Rect& area) const;
 
 private:
@@ -52,6 +56,8 @@ private:
         kWatch,
         kHelp,
         kSettings,
+        kLeaderboard,
+        kMatches,
         kControlCount
     };
     Rect control_rect(Control c, const Rect& area) const;

@@ -11,6 +11,7 @@
 #include "replay_view.hpp"
 
 #include "carrom/cli/room_request_flags.hpp"
+#include "carrom/net/identity_file.hpp"
 #include "carrom/proto/types.hpp"
 
 #include <CLI/CLI.hpp>
@@ -28,6 +29,11 @@ int main(int argc, char** argv) {
                    "wss://: trust the certificate authorities in this PEM file too");
     cli.add_option("--name", options.name,
                    "Your name (1 to 24 letters; accented letters count twice)")
+        ->capture_default_str();
+    std::string identity_path = carrom::net::default_identity_path();
+    cli.add_option("--identity", identity_path,
+                   "Your player key's file, created with a new key when absent; 'none': play as "
+                   "a guest (docs/ratings.md)")
         ->capture_default_str();
     carrom::cli::RoomRequestFlags room_flags;
     const carrom::cli::RoomRequestOptions room_opts =
@@ -145,6 +151,16 @@ int main(int argc, char** argv) {
         !problem.empty()) {
         std::cerr << "carrom-client: " << problem << "\n";
         return 2;
+    }
+    if (!options.demo && options.bench_frames == 0 && identity_path != "none" &&
+        !identity_path.empty()) {
+        const carrom::net::LoadedIdentity identity =
+            carrom::net::load_or_create_identity(identity_path);
+        if (identity.error) {
+            std::cerr << "carrom-client: " << *identity.error << "\n";
+            return 2;
+        }
+        options.identity = identity.key;
     }
     if (options.bench_frames > 0) {
         options.demo = true;

@@ -65,9 +65,10 @@ std::string check_url(const std::string& url) {
     return {};
 }
 
-SessionConfig network_session_config() {
+SessionConfig network_session_config(const std::optional<std::string>& identity) {
     SessionConfig config;
     config.jitter_seed = std::random_device{}();
+    config.identity = identity;
     return config;
 }
 

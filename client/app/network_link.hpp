@@ -4,6 +4,7 @@
 #include "carrom/client/client_session.hpp"
 #include "carrom/client/connection.hpp"
 
+#include <optional>
 #include <string>
 
 namespace carrom::client::app {
@@ -13,7 +14,8 @@ namespace carrom::client::app {
 std::string check_url(const std::string& url);
 // ca_file: for wss://, certificate authorities trusted besides the system's ("" = none).
 LinkFactory make_network_link_factory(const std::string& url, const std::string& ca_file);
-// The session's settings for the window: the defaults, with jitter on the reconnect back-off.
-SessionConfig network_session_config();
+// The session's settings for the window: the defaults, with jitter on the reconnect back-off,
+// and the player key to say hello with (none: a guest).
+SessionConfig network_session_config(const std::optional<std::string>& identity);
 
 } // namespace carrom::client::app

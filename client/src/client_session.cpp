@@ -62,6 +62,7 @@ void ClientSession::apply(const net::SessionActions& actions) {
         case Kind::SendResume: {
             proto::Hello hello;
             hello.name = name_;
+            hello.identity = config_.identity;
             if (action.kind == Kind::SendResume) {
                 hello.resume_token = core_.token();
             }

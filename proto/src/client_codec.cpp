@@ -35,6 +35,9 @@ json encode_body(const Hello& m) {
     if (m.resume_token) {
         out["resume_token"] = *m.resume_token;
     }
+    if (m.identity) {
+        out["identity"] = *m.identity;
+    }
     return out;
 }
 // "seats" and "bot.seats" go on the wire only when they differ from the singles defaults, so a
@@ -49,6 +52,9 @@ json encode_body(const CreateRoom& m) {
         if (!m.bot->seats.empty()) {
             out["bot"]["seats"] = m.bot->seats;
         }
+    }
+    if (m.rated) {
+        out["rated"] = true;
     }
     return out;
 }
@@ -93,6 +99,9 @@ void decode_body(JsonReader& r, Hello& m) {
         if (r.ok() && !is_resume_token(*m.resume_token)) {
             r.fail("resume_token", "must be 32 lowercase hexadecimal digits");
         }
+    }
+    if (r.has("identity")) {
+        m.identity = r.text("identity", 1, kMaxIdentityBytes);
     }
 }
 
@@ -167,6 +176,9 @@ void decode_body(JsonReader& r, CreateRoom& m) {
             r.merge(child.error());
             m.bot = seat;
         }
+    }
+    if (r.has("rated")) {
+        m.rated = r.boolean("rated");
     }
 }
 

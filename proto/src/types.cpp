@@ -77,8 +77,9 @@ bool is_room_code(std::string_view text) {
     return true;
 }
 
-bool is_resume_token(std::string_view text) {
-    if (text.size() != kResumeTokenLength) {
+namespace {
+bool is_lowercase_hex(std::string_view text, std::size_t length) {
+    if (text.size() != length) {
         return false;
     }
     for (char c : text) {
@@ -88,6 +89,15 @@ bool is_resume_token(std::string_view text) {
         }
     }
     return true;
+}
+} // namespace
+
+bool is_resume_token(std::string_view text) {
+    return is_lowercase_hex(text, kResumeTokenLength);
+}
+
+bool is_identity_key(std::string_view text) {
+    return is_lowercase_hex(text, kIdentityKeyLength);
 }
 
 bool is_player_name(std::string_view text) {

@@ -4,13 +4,19 @@
 
 #include <spdlog/spdlog.h>
 
+#include <algorithm>
+
 namespace carrom::server {
 
 RoomActor::RoomActor(ServerCore& core, std::string code, room::RoomConfig config)
     : core_(core), code_(code), strand_(asio::make_strand(core.ioc)), timer_(strand_),
       logger_(code),
-      journal_(core.store ? std::make_unique<StoreJournal>(core.store, core.random, core.stopping)
-                          : nullptr),
+      journal_(core.store
+                   ? std::make_unique<StoreJournal>(core.store, core.random, core.stopping, rated_,
+                                                    [&core](const std::string& token) {
+                                                        return core.registry.identity_of(token);
+                                                    })
+                   : nullptr),
       room_(std::move(code), std::move(config), core.clock, core.metrics, &logger_,
             journal_.get()) {}
 
@@ -32,6 +38,15 @@ void RoomActor::bind_journal() {
 }
 
 RoomActor::~RoomActor() = default;
+
+bool RoomActor::admit_identity(const store::PlayerKeyHash& key_hash) {
+    const std::lock_guard lock(identities_mutex_);
+    if (std::find(identities_.begin(), identities_.end(), key_hash) != identities_.end()) {
+        return false;
+    }
+    identities_.push_back(key_hash);
+    return true;
+}
 
 std::optional<std::string> RoomActor::restore(const proto::MatchJournal& journal,
                                               std::vector<room::RestoredSeat> seats) {

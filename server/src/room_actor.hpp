@@ -12,8 +12,10 @@
 #include <boost/asio/steady_timer.hpp>
 #include <boost/asio/strand.hpp>
 
+#include <atomic>
 #include <cstdint>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <vector>
@@ -45,6 +47,14 @@ public:
     // once, right after construction (it needs the actor's shared_ptr).
     void bind_journal();
 
+    // A rated room (docs/ratings.md): marked once, before anyone takes a seat. Its games are
+    // rated when two different identified players hold the seats as the game starts.
+    void set_rated() { rated_.store(true); }
+    bool rated() const { return rated_.load(); }
+    // An identified player takes a seat of this rated room: false (same_player) when the same
+    // identity already took the other one. Any thread.
+    bool admit_identity(const store::PlayerKeyHash& key_hash);
+
 private:
     void after();
     void schedule(std::int64_t wake_ms);
@@ -52,6 +62,9 @@ private:
 
     ServerCore& core_;
     std::string code_;
+    std::atomic<bool> rated_{false}; // before journal_, which reads it
+    std::mutex identities_mutex_;
+    std::vector<store::PlayerKeyHash> identities_; // rated room: the identities seated so far
     asio::strand<asio::io_context::executor_type> strand_;
     asio::steady_timer timer_;
     RoomLogger logger_;                     // before room_, which reports to it

@@ -68,6 +68,7 @@ void Server::start() {
         // Before the I/O threads run: no hello can come before the recovered rooms exist.
         const int recovered = impl_->core.restore_matches();
         spdlog::info("recovered {} matches", recovered);
+        impl_->core.load_identities();
     }
     impl_->work.emplace(impl_->core.ioc.get_executor());
     const int count = std::max(1, impl_->core.settings.threads);

@@ -55,7 +55,7 @@ void ServerCore::remove_address(const std::string& address) {
 
 std::variant<std::shared_ptr<RoomActor>, proto::Error>
 ServerCore::create_room(proto::RuleSet rule_set, const proto::RoomOptions& options, int seats,
-                        bool server_bots) {
+                        bool server_bots, bool rated) {
     room::RoomConfig config;
     config.rule_set = rule_set;
     // A game against the server's bots gives its players the longer of the two default clocks;
@@ -70,15 +70,29 @@ ServerCore::create_room(proto::RuleSet rule_set, const proto::RoomOptions& optio
     config.time_scale = settings.time_scale;
     config.grace_s = settings.grace_s;
     config.server_version = CARROM_SERVER_VERSION;
+    config.aim_assist = !rated;
     auto created = registry.create_room(
         [&](const std::string& code) { return std::make_shared<RoomActor>(*this, code, config); });
     if (const auto* room = std::get_if<std::shared_ptr<RoomActor>>(&created)) {
+        if (rated) {
+            (*room)->set_rated(); // before bind_journal: the journal reads it
+        }
         (*room)->bind_journal();
         metrics.rooms.fetch_add(1, std::memory_order_relaxed);
         spdlog::info("room {} created ({}, {} seats)", (*room)->code(), proto::to_string(rule_set),
                      seats);
     }
     return created;
+}
+
+void ServerCore::load_identities() {
+    auto loaded = store->load_players();
+    if (!loaded.ok()) {
+        spdlog::error("store: cannot read the identified players: {}", loaded.error->message);
+        return;
+    }
+    identities.load(loaded.value);
+    spdlog::info("{} identified players", loaded.value.size());
 }
 
 void ServerCore::remove_room(const std::string& code) {
@@ -155,6 +169,7 @@ int ServerCore::restore_matches() {
         config.time_scale = settings.time_scale;
         config.grace_s = settings.grace_s;
         config.server_version = CARROM_SERVER_VERSION;
+        config.aim_assist = !match.rated;
         const std::string& code = journal.created.room_code;
         auto actor = registry.add_room(code, [&](const std::string& c) {
             return std::make_shared<RoomActor>(*this, c, config);
@@ -162,6 +177,9 @@ int ServerCore::restore_matches() {
         if (!actor) {
             refuse("room code " + code + " is taken by another recovered match");
             continue;
+        }
+        if (match.rated) {
+            actor->set_rated();
         }
         actor->bind_journal();
         // Claims for the human seats, by token hash; the room waits for those player ids.

@@ -5,7 +5,9 @@
 #include "address_rate_limiter.hpp"
 #include "asio_types.hpp"
 #include "confirmation_gate.hpp"
+#include "identity_directory.hpp"
 #include "match_api_reader.hpp"
+#include "rated_queue.hpp"
 
 #include "carrom/proto/client_messages.hpp"
 #include "carrom/room/clock.hpp"
@@ -61,6 +63,9 @@ struct ServerCore {
     // it is stopped (Server::shutdown) and destroyed before ioc: its answers post to sessions.
     std::unique_ptr<MatchApiReader> match_reader;
     AddressRateLimiter http_limiter;
+    // Identified players (their names) and the rated quick-match queue (docs/ratings.md).
+    IdentityDirectory identities;
+    RatedQueue rated_queue;
     // The TLS certificate and key; null = plain connections only (Server::listen loads it).
     std::shared_ptr<TlsContext> tls;
 
@@ -77,10 +82,11 @@ struct ServerCore {
     bool add_address(const std::string& address);
     void remove_address(const std::string& address);
 
-    // A new room of `seats` seats (2 or 4; counted in metrics, logged), or an error.
+    // A new room of `seats` seats (2 or 4; counted in metrics, logged), or an error. A rated
+    // room (docs/ratings.md) has no aim assist.
     std::variant<std::shared_ptr<RoomActor>, proto::Error>
     create_room(proto::RuleSet rule_set, const proto::RoomOptions& options, int seats = 2,
-                bool server_bots = false);
+                bool server_bots = false, bool rated = false);
     void remove_room(const std::string& code);
 
     // At start, before the I/O threads run: every unfinished match in the store whose journal
@@ -90,6 +96,9 @@ struct ServerCore {
     // A resume token the registry does not know: the player of a restored seat whose token hash
     // the store kept, given a player record with that same token. Empty if none.
     std::optional<PlayerRecord> claim_restored_seat(const std::string& token);
+    // At start: the identified players of the store into `identities` (logged on failure: the
+    // server then knows no identity and every hello with a key creates one).
+    void load_identities();
 };
 
 } // namespace carrom::server

@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 
 namespace carrom::server {
@@ -23,8 +24,14 @@ public:
 
     // stopping: while true (the server shuts down), an abandoned match is left unfinished, so
     // that it can be recovered after a restart.
+    // The identified player holding a resume token, if any (the session registry's).
+    using IdentityOf = std::function<std::optional<store::PlayerKeyHash>(const std::string&)>;
+
+    // rated: the room is rated (RoomActor::set_rated); the identified holders of a rated
+    // singles game's seats as it starts (identity_of their tokens) are stored as its rated seats.
     StoreJournal(std::shared_ptr<store::MatchStore> store, RandomSource& random,
-                 const std::atomic<bool>& stopping);
+                 const std::atomic<bool>& stopping, const std::atomic<bool>& rated,
+                 IdentityOf identity_of);
 
     void on_written(Written written) { written_ = std::move(written); }
 
@@ -39,6 +46,10 @@ private:
     std::shared_ptr<store::MatchStore> store_;
     RandomSource& random_;
     const std::atomic<bool>& stopping_;
+    const std::atomic<bool>& rated_;
+    IdentityOf identity_of_;
+    // The rated game being started: its match id, until each of its two seats has been named.
+    std::string rating_match_;
     Written written_;
 };
 

@@ -40,7 +40,7 @@ constexpr std::chrono::milliseconds kSlowKillAfter{1000};
 WsSession::WsSession(ServerCore& core, ServerStream stream)
     : core_(core), ws_(std::move(stream)), hello_timer_(ws_.get_executor()),
       idle_timer_(ws_.get_executor()), kill_timer_(ws_.get_executor()),
-      quick_timer_(ws_.get_executor()),
+      quick_timer_(ws_.get_executor()), rated_timer_(ws_.get_executor()),
       queue_(core.settings.max_queue_bytes, core.settings.snapshot_backlog),
       limiter_(core.settings.max_rate, core.settings.rate_burst, core.clock.now_ms()) {}
 
@@ -361,6 +361,8 @@ void WsSession::end() {
     kill_timer_.cancel();
     quick_timer_.cancel();
     quick_waiting_ = false;
+    rated_timer_.cancel();
+    rated_waiting_ = false;
     if (!accepted_) {
         return;
     }
@@ -371,6 +373,7 @@ void WsSession::end() {
     }
     if (player_id_ >= 0) {
         core_.registry.cancel_quick_match(player_id_);
+        core_.rated_queue.remove(player_id_);
     }
     if (room_) {
         room_->post([self = shared_from_this()](room::Room& room) { room.disconnected(*self); });

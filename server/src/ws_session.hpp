@@ -6,6 +6,7 @@
 // ws_session.cpp: the connection (accept, read, dispatch, write queue, keep-alive, end);
 // ws_session_lobby.cpp: hello, create, join, quick match, entering a room.
 
+#include "rated_queue.hpp"
 #include "server_stream.hpp"
 
 #include "carrom/proto/client_messages.hpp"
@@ -69,9 +70,25 @@ private:
     void handle_create(const proto::CreateRoom& create);
     void handle_join(const proto::JoinRoom& join);
     void handle_quick_match(const proto::QuickMatch& quick);
+    // Starts the bot fallback timer of a quick-match wait, unless one runs (or bots are off).
+    void arm_quick_match_wait(proto::RuleSet rule_set, int seats);
     // Leaves the quick-match queue and stops the bot fallback timer.
     void stop_quick_match();
     void on_quick_match_wait(std::uint64_t generation, proto::RuleSet rule_set, int seats);
+    // ws_session_rated.cpp: identities and rated rooms (docs/ratings.md).
+    // The hello's identity or a guest's name: true when the hello may go on (else refused).
+    bool admit_hello_identity(const proto::Hello& hello);
+    // create_room with rated: why not (rated_with_bot, rated_doubles, identity_required).
+    std::optional<proto::Error> rated_refusal(const proto::CreateRoom& create) const;
+    // A rated room's seat for this session: why not (identity_required, same_player).
+    std::optional<proto::Error> rated_seat_refusal(RoomActor& room) const;
+    // Quick match of an identified player in singles: the rated queue, paired by rating.
+    void handle_rated_quick_match(const proto::QuickMatch& quick);
+    void arm_rated_tick(std::uint64_t generation);
+    // Pairs the closest acceptable two of rule_set's rated queue into a new rated room.
+    void try_rated_pair(proto::RuleSet rule_set);
+    // The rated wait ran out: a bot (an unrated room), if still waiting.
+    void on_rated_wait_over(proto::RuleSet rule_set);
     // A new room of `seats` seats with this player in seat 0, `others` (quick match) in the first
     // free seats after it and server bots of `level` in `bot_seats` (create_room with bot, or
     // the quick-match wait ran out).
@@ -102,6 +119,9 @@ private:
     asio::steady_timer quick_timer_; // quick match: seat a bot when it fires
     std::uint64_t quick_generation_ = 0;
     bool quick_waiting_ = false;
+    asio::steady_timer rated_timer_; // rated quick match: try pairing again every second
+    bool rated_waiting_ = false;     // in core_.rated_queue (quick_generation_ counts its waits)
+    proto::RuleSet rated_rule_set_ = proto::RuleSet::Icf;
     WriteQueue queue_;
     RateLimiter limiter_;
     std::atomic<bool> keyframe_request_{false};
@@ -119,6 +139,7 @@ private:
     std::int64_t last_activity_ms_ = 0;
 
     std::int64_t player_id_ = -1;
+    std::optional<store::PlayerKeyHash> identity_; // sha256 of the hello's key; none: a guest
     std::string name_;
     std::string token_;
     std::shared_ptr<RoomActor> room_;

@@ -30,6 +30,9 @@ void WsSession::handle_hello(const proto::Hello& hello) {
              proto::kCloseVersionMismatch);
         return;
     }
+    if (!admit_hello_identity(hello)) {
+        return; // refused; the client may say hello again before the hello timeout
+    }
     hello_done_ = true;
     hello_timer_.cancel();
     name_ = hello.name;
@@ -51,6 +54,7 @@ void WsSession::handle_hello(const proto::Hello& hello) {
     }
     player_id_ = record->player_id;
     token_ = record->token;
+    core_.registry.set_player_identity(token_, identity_);
     send_now({std::make_shared<const std::string>(proto::encode(proto::Welcome{
                   proto::kProtocolVersion, player_id_, token_, core_.clock.now_ms()})),
               room::MessageKind::Normal});
@@ -75,6 +79,10 @@ void WsSession::handle_create(const proto::CreateRoom& create) {
         send_error(proto::code::kAlreadyInRoom, "Leave this room first.");
         return;
     }
+    if (auto refusal = rated_refusal(create)) {
+        send_error(refusal->code, refusal->message);
+        return;
+    }
     if (create.bot) {
         if (!core_.bots) {
             send_error(proto::code::kUnsupported, "This server has no bots.");
@@ -89,7 +97,8 @@ void WsSession::handle_create(const proto::CreateRoom& create) {
         enter_bot_room(create.rule_set, create.options, create.seats, create.bot->level, bot_seats);
         return;
     }
-    auto created = core_.create_room(create.rule_set, create.options, create.seats);
+    auto created =
+        core_.create_room(create.rule_set, create.options, create.seats, false, create.rated);
     if (auto* error = std::get_if<proto::Error>(&created)) {
         send_error(error->code, error->message);
         return;
@@ -137,6 +146,12 @@ void WsSession::handle_join(const proto::JoinRoom& join) {
 }
 
 void WsSession::enter_room(const std::shared_ptr<RoomActor>& room, proto::Role role) {
+    if (role == proto::Role::Player) {
+        if (auto refusal = rated_seat_refusal(*room)) {
+            send_error(refusal->code, refusal->message);
+            return;
+        }
+    }
     stop_quick_match();
     room_ = room;
     if (role == proto::Role::Player) {
@@ -163,25 +178,17 @@ void WsSession::handle_quick_match(const proto::QuickMatch& quick) {
         send_error(proto::code::kAlreadyInRoom, "Leave this room first.");
         return;
     }
+    if (identity_ && quick.seats == 2) {
+        handle_rated_quick_match(quick);
+        return;
+    }
     for (;;) {
         auto group =
             core_.registry.quick_match(quick.rule_set, quick.seats, player_id_, weak_from_this());
         if (!group) {
             // Queued (or already queued): paired when the next player asks, or given a bot once
             // the wait is over. A repeated quick_match keeps the first wait.
-            const double wait_s = core_.settings.quick_match_bot_s;
-            if (!quick_waiting_ && wait_s > 0.0 && core_.bots) {
-                quick_waiting_ = true;
-                const auto generation = ++quick_generation_;
-                quick_timer_.expires_after(to_duration(wait_s));
-                quick_timer_.async_wait([self = shared_from_this(), generation,
-                                         rule_set = quick.rule_set,
-                                         seats = quick.seats](beast::error_code ec) {
-                    if (!ec) {
-                        self->on_quick_match_wait(generation, rule_set, seats);
-                    }
-                });
-            }
+            arm_quick_match_wait(quick.rule_set, quick.seats);
             return;
         }
         std::vector<std::shared_ptr<WsSession>> partners;
@@ -218,9 +225,30 @@ void WsSession::handle_quick_match(const proto::QuickMatch& quick) {
     }
 }
 
+void WsSession::arm_quick_match_wait(proto::RuleSet rule_set, int seats) {
+    const double wait_s = core_.settings.quick_match_bot_s;
+    if (quick_waiting_ || wait_s <= 0.0 || !core_.bots) {
+        return;
+    }
+    quick_waiting_ = true;
+    const auto generation = ++quick_generation_;
+    quick_timer_.expires_after(to_duration(wait_s));
+    quick_timer_.async_wait(
+        [self = shared_from_this(), generation, rule_set, seats](beast::error_code ec) {
+            if (!ec) {
+                self->on_quick_match_wait(generation, rule_set, seats);
+            }
+        });
+}
+
 void WsSession::stop_quick_match() {
     if (player_id_ >= 0) {
         (void)core_.registry.cancel_quick_match(player_id_);
+        (void)core_.rated_queue.remove(player_id_);
+    }
+    if (rated_waiting_) {
+        rated_waiting_ = false;
+        rated_timer_.cancel();
     }
     if (quick_waiting_) {
         quick_waiting_ = false;
@@ -235,6 +263,10 @@ void WsSession::on_quick_match_wait(std::uint64_t generation, proto::RuleSet rul
     }
     quick_waiting_ = false;
     if (ended_ || close_code_ || room_) {
+        return;
+    }
+    if (rated_waiting_) {
+        on_rated_wait_over(rule_set);
         return;
     }
     // Only a player still in the queue gets bots: if a partner took it out first, that

@@ -296,3 +296,51 @@ TEST(ProtoClient, EveryTypeNameIsDistinctAndRoundTrips) {
 
 } // namespace
 } // namespace carrom::proto
+
+namespace carrom::proto {
+namespace {
+
+std::string hello_with_identity(const std::string& identity_json) {
+    return R"({"type":"hello","version":1,"name":"A","identity":)" + identity_json + "}";
+}
+
+TEST(ProtoClient, HelloIdentityRoundTripAndWireShape) {
+    Hello hello{kProtocolVersion, "Asha", std::nullopt};
+    hello.identity = std::string(64, 'e');
+    EXPECT_EQ(round_trip(hello), ClientMessage{hello});
+    EXPECT_EQ(to_json(ClientMessage{hello})["identity"], std::string(64, 'e'));
+    EXPECT_FALSE(to_json(ClientMessage{Hello{1, "Bo", std::nullopt}}).contains("identity"));
+}
+
+TEST(ProtoClient, HelloIdentityIsAnyShortTextOnTheWireTheServerJudgesItsForm) {
+    EXPECT_EQ(error_of(hello_with_identity("\"" + std::string(64, 'a') + "\"")), "");
+    EXPECT_EQ(error_of(hello_with_identity("\"XYZ\"")), ""); // the server answers bad_identity
+    EXPECT_EQ(error_of(hello_with_identity("\"\"")), "bad_field");
+    EXPECT_EQ(error_of(hello_with_identity("\"" + std::string(129, 'a') + "\"")), "bad_field");
+    EXPECT_EQ(error_of(hello_with_identity("42")), "bad_field");
+    EXPECT_EQ(error_of(hello_with_identity("null")), "bad_field");
+}
+
+TEST(ProtoClient, IdentityKeyIs64LowercaseHexDigits) {
+    EXPECT_TRUE(is_identity_key(std::string(64, '0')));
+    EXPECT_TRUE(is_identity_key(std::string(32, 'a') + std::string(32, '9')));
+    EXPECT_FALSE(is_identity_key(std::string(63, 'a')));
+    EXPECT_FALSE(is_identity_key(std::string(65, 'a')));
+    EXPECT_FALSE(is_identity_key(std::string(64, 'A')));
+    EXPECT_FALSE(is_identity_key(std::string(63, 'a') + "g"));
+}
+
+TEST(ProtoClient, CreateRoomRatedOnTheWireOnlyWhenTrue) {
+    CreateRoom create;
+    create.rated = true;
+    EXPECT_EQ(round_trip(create), ClientMessage{create});
+    EXPECT_EQ(to_json(ClientMessage{create})["rated"], true);
+    EXPECT_FALSE(to_json(ClientMessage{CreateRoom{}}).contains("rated"));
+    EXPECT_EQ(error_of(R"({"type":"create_room","rated":"yes"})"), "bad_field");
+    const auto decoded = decode_client(R"({"type":"create_room","rated":false})");
+    ASSERT_TRUE(decoded.ok());
+    EXPECT_FALSE(std::get<CreateRoom>(*decoded.message).rated);
+}
+
+} // namespace
+} // namespace carrom::proto

@@ -1,8 +1,9 @@
 // Opening the PostgreSQL store where only a networked database can fail: a new database gets the
 // schema (with the ownership columns reserved for cluster mode, empty in single-instance mode); a
-// URL libpq refuses, a server that is not there, a database that does not exist, a role that may
-// not log in and a role without rights on the database are refused with their own code and one
-// line naming the URL (its password hidden), and leave the database as it was.
+// schema 1 database gets the ratings tables and keeps its matches; a URL libpq refuses, a server
+// that is not there, a database that does not exist, a role that may not log in and a role
+// without rights on the database are refused with their own code and one line naming the URL (its
+// password hidden), and leave the database as it was.
 
 #include "store_support.hpp"
 
@@ -31,22 +32,44 @@ std::string query(const std::string& database, const std::string& sql) {
     return ran.out;
 }
 
+// A store opened on the database, match m1 created in it, the store closed.
+void store_one_match(const std::string& database) {
+    auto opened =
+        PostgresMatchStore::open(test::postgres_server().url(database), test::fast_options());
+    ASSERT_NE(opened.store, nullptr) << opened.error->message;
+    opened.store->create(test::created("m1"));
+    ASSERT_TRUE(opened.store->flush(test::kFlush));
+}
+
 TEST(PostgresStoreOpen, ANewDatabaseGetsTheSchemaWithTheReservedClusterColumns) {
-    auto& server = test::postgres_server();
-    const std::string database = server.create_database();
-    {
-        auto opened = PostgresMatchStore::open(server.url(database), test::fast_options());
-        ASSERT_NE(opened.store, nullptr) << opened.error->message;
-        opened.store->create(test::created("m1"));
-        ASSERT_TRUE(opened.store->flush(test::kFlush));
-    }
+    const std::string database = test::postgres_server().create_database();
+    ASSERT_NO_FATAL_FAILURE(store_one_match(database));
     EXPECT_EQ(query(database, "SELECT application, version FROM carrom_schema"),
-              "carrom-match-store|1\n");
+              "carrom-match-store|2\n");
     EXPECT_EQ(query(database, "SELECT table_name FROM information_schema.tables WHERE "
                               "table_schema = 'public' ORDER BY table_name"),
-              "carrom_schema\nentries\nmatches\nplayers\nseat_tokens\n");
+              "carrom_schema\nentries\nidentities\nmatches\nplayers\nrated_seats\n"
+              "rating_changes\nratings\nseat_tokens\n");
     EXPECT_EQ(query(database, "SELECT id, owner_instance IS NULL, owner_epoch FROM matches"),
               "m1|t|0\n");
+}
+
+TEST(PostgresStoreOpen, ASchemaOneDatabaseGetsTheRatingsTablesAndKeepsItsMatches) {
+    const std::string database = test::postgres_server().create_database();
+    ASSERT_NO_FATAL_FAILURE(store_one_match(database));
+    // Back to schema 1: without migration 2's tables.
+    query(database, "DROP TABLE rating_changes, rated_seats, ratings, identities; "
+                    "UPDATE carrom_schema SET version = 1");
+    auto opened =
+        PostgresMatchStore::open(test::postgres_server().url(database), test::fast_options());
+    ASSERT_NE(opened.store, nullptr) << opened.error->message;
+    EXPECT_EQ(query(database, "SELECT version FROM carrom_schema"), "2\n");
+    EXPECT_EQ(query(database, "SELECT count(*) FROM information_schema.tables WHERE "
+                              "table_schema = 'public' AND table_name IN ('identities', "
+                              "'ratings', 'rated_seats', 'rating_changes')"),
+              "4\n");
+    EXPECT_TRUE(opened.store->journal("m1").value.has_value());
+    EXPECT_TRUE(opened.store->load_players().ok());
 }
 
 TEST(PostgresStoreOpen, AUrlLibpqRefusesIsABadUrl) {

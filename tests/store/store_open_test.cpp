@@ -48,11 +48,11 @@ TEST_P(StoreOpen, AStoreOpensAgainWithItsContents) {
 
 TEST_P(StoreOpen, ANewerSchemaIsRefusedAndUntouched) {
     store_games(*open(), 1);
-    execute(postgres() ? "UPDATE carrom_schema SET version = 2" : "PRAGMA user_version = 2");
+    execute(postgres() ? "UPDATE carrom_schema SET version = 3" : "PRAGMA user_version = 3");
     const std::string before = snapshot();
     EXPECT_EQ(expect_refused(try_open(), "store_newer_schema", location()),
-              location() + " was written by a newer carrom-server (schema version 2; this one "
-                           "knows up to 1)");
+              location() + " was written by a newer carrom-server (schema version 3; this one "
+                           "knows up to 2)");
     EXPECT_EQ(snapshot(), before);
 }
 

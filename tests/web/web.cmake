@@ -32,6 +32,10 @@ set_tests_properties(web.texts PROPERTIES TIMEOUT 60 LABELS web)
 # The session's decisions against tests/golden/session/*.json (net::SessionCore's cases).
 add_test(NAME web.session COMMAND ${CARROM_NODE} ${web_dir}/session_test.mjs)
 set_tests_properties(web.session PROPERTIES TIMEOUT 60 LABELS web)
+add_test(NAME web.identity COMMAND ${CARROM_NODE} ${web_dir}/identity_test.mjs)
+set_tests_properties(web.identity PROPERTIES TIMEOUT 60 LABELS web)
+add_test(NAME web.ratings_unit COMMAND ${CARROM_NODE} ${web_dir}/ratings_unit.mjs)
+set_tests_properties(web.ratings_unit PROPERTIES TIMEOUT 60 LABELS web)
 
 if(NOT CARROM_CHROMIUM OR NOT TARGET carrom-server OR NOT TARGET carrom-bot)
     message(STATUS "web tests: chromium, carrom-server or carrom-bot missing, browser tests not registered")
@@ -41,9 +45,16 @@ endif()
 # The page's engine (wasm/CMakeLists.txt): without it the page runs without prediction and
 # replays; CARROM_WEB_ENGINE tells the tests which page they get, and the replay test needs it.
 set(web_tests two_pages_match page_vs_bot touch_phone reload_resume lobby_paths doubles_pages https_page
-    first_game_ui texts_pages emotes_pages)
+              identity_page first_game_ui texts_pages emotes_pages)
 if(CARROM_WEB_WASM)
     list(APPEND web_tests replay_page aim_assist_page)
+endif()
+# The ratings' page test writes its players' ratings into the store with the sqlite3 program.
+find_program(CARROM_SQLITE3 NAMES sqlite3)
+if(CARROM_SQLITE3)
+    list(APPEND web_tests ratings_page)
+else()
+    message(STATUS "web tests: sqlite3 not found, web.ratings_page not registered")
 endif()
 foreach(test ${web_tests})
     add_test(NAME web.${test} COMMAND ${CARROM_NODE} ${web_dir}/${test}.mjs)
@@ -52,7 +63,7 @@ foreach(test ${web_tests})
         LABELS web
         # One browser at a time: each starts several pages, and timings stay honest.
         RESOURCE_LOCK chromium
-        ENVIRONMENT "CARROM_SERVER=$<TARGET_FILE:carrom-server>;CARROM_BOT=$<TARGET_FILE:carrom-bot>;CARROM_CHROMIUM=${CARROM_CHROMIUM};CARROM_WEB_ENGINE=$<IF:$<BOOL:${CARROM_WEB_WASM}>,1,0>")
+        ENVIRONMENT "CARROM_SERVER=$<TARGET_FILE:carrom-server>;CARROM_BOT=$<TARGET_FILE:carrom-bot>;CARROM_CHROMIUM=${CARROM_CHROMIUM};CARROM_SQLITE3=${CARROM_SQLITE3};CARROM_WEB_ENGINE=$<IF:$<BOOL:${CARROM_WEB_WASM}>,1,0>")
 endforeach()
 
 # A page against carrom-client (the desktop client, `--autoplay`, under `xvfb-run -a` when the

@@ -13,6 +13,10 @@ import { EmoteView } from './emote_view.js';
 import { loadEngine } from './engine.js';
 import { Help } from './help.js';
 import { Hud } from './hud.js';
+import { loadOrCreateIdentity } from './identity.js';
+import { IdentityPanel } from './identity_panel.js';
+import { getAnswer, getJson, playersKept, RatingView } from './rating_view.js';
+import { Leaderboard } from './leaderboard.js';
 import { Lobby } from './lobby.js';
 import { MatchModel } from './match_model.js';
 import { MyMatches } from './my_matches.js';
@@ -23,6 +27,7 @@ import { Renderer } from './renderer.js';
 import { parseReplayHash, startReplayPage } from './replay_page.js';
 import { parseRoomHash, roomHash, roomLink, showHash } from './room_link.js';
 import { teamSummaries } from './seat_panels.js';
+import { SeatRatings } from './seat_ratings.js';
 import { Session, SESSION_DEFAULTS } from './session.js';
 import { Settings } from './settings.js';
 import { sideLayout } from './side_layout.js';
@@ -31,6 +36,9 @@ import { SoundPlayer } from './sound.js';
 const AIM_SEND_INTERVAL_S = 0.05; // at most 20 aim messages a second
 const TOUCH_GRAB_CSS_PX = 30; // a finger grabs the striker within 30 CSS px (a 60 px target)
 const FRAME_LOG = 20000; // frame times kept for the debug hook (a minute at 300 frames/s)
+
+// After a game the lobby reads the ratings again this much later (rating_view.js).
+const RATING_REREAD_MS = 1500;
 
 function storage(kind) {
   try {
@@ -72,7 +80,14 @@ class App {
       onRefused: (error, request) => this.onRefused(error, request),
     }, SESSION_DEFAULTS, Connection);
     this.lobby = new Lobby(storage('localStorage'), (name, request) => this.request(name, request));
+    this.session.identity = loadOrCreateIdentity(storage('localStorage'));
+    this.identityPanel = new IdentityPanel(document.getElementById('identity'), storage('localStorage'),
+      this.session.identity, (key) => { this.session.identity = key; });
+    const kept = playersKept(getJson); // GET /players, asked once for both
+    this.ratingView = new RatingView(document.getElementById('my-rating'), getJson, kept);
     this.myMatches = new MyMatches(this.lobby.form, () => this.lobby.storedName());
+    this.leaderboard = new Leaderboard(this.lobby.form, () => this.lobby.storedName(), getAnswer);
+    this.seatRatings = new SeatRatings(getJson, kept);
     this.hud = new Hud({
       rematch: () => this.rematch(),
       lobby: () => this.toLobby(),
@@ -165,8 +180,13 @@ class App {
       this.shotSentTurn = -1; // a rejected shot: aim again
       if (!this.model.view.inRoom) this.lobby.setError(errorSentence(m));
     }
-    if (m.type === 'room_state') showHash(roomHash(m.code, m.you < 0));
+    if (m.type === 'room_state') {
+      showHash(roomHash(m.code, m.you < 0));
+      this.ratingView.gameStarts();
+    }
+    if (m.type === 'welcome') this.ratingView.refresh(this.session.name);
     this.model.handle(m, localS);
+    this.seatRatings.update(this.model.view);
     this.dirty = true;
   }
 
@@ -196,8 +216,11 @@ class App {
 
   toLobby() {
     this.hud.askLeave(null);
+    this.ratingView.refresh(this.session.name);
+    setTimeout(() => this.ratingView.refresh(this.session.name), RATING_REREAD_MS);
     this.session.leaveRoom();
     this.model.reset();
+    this.seatRatings.update(this.model.view);
     this.aim.endTurn();
     this.pointerId = null;
     this.fromLink = null;
@@ -417,7 +440,9 @@ class App {
       this.drawKey = key;
       this.dirty = false;
     }
-    this.hud.update(this.model, this.session, { pulling: this.aim.phase === 'pulling', muted: this.settings.values.muted }, now);
+    this.hud.update(this.model, this.session, {
+      pulling: this.aim.phase === 'pulling', muted: this.settings.values.muted, ratings: this.seatRatings,
+    }, now);
     this.help.update(v.inRoom && v.you >= 0 && ['aiming', 'moving'].includes(v.phase), v.ruleSet);
     this.emoteView.update(this.model, now);
     this.updateLobby();
@@ -478,6 +503,7 @@ class App {
         mutedSeats: [...this.model.emotes.mutedSeats], allMuted: this.model.emotes.allMuted,
       },
       assist: this.aimAssist.debugState(this.assist),
+      ratings: this.seatRatings.debugState(),
     };
   }
 

@@ -1,10 +1,10 @@
 // The heads-up display as HTML around and over the canvas (client/app/hud_painter.cpp): both
-// seats with names, colours, dues and scores (in doubles: the two teams in the top bar and one
+// seats with names, ratings (singles), colours, dues and scores (in doubles: the two teams in the top bar and one
 // panel per seat on the board's frame at that seat's side, seat_panels.js); whose turn and the
 // shot clock; the queen; room,
 // rule set, board number, coins left and spectators; the connection and round trip; the message
 // log beside or under the board (side_layout.js); the room code with its shareable link while waiting; the result and
-// why the game ended, with Rematch and Lobby; the reconnecting notice. Text is written to the
+// why the game ended and the ratings' changes, with Rematch and Lobby; the reconnecting notice. Text is written to the
 // DOM only when it changed, so a frame costs almost nothing here.
 
 import { boardSummaryText } from './board_summary_text.js';
@@ -48,6 +48,7 @@ export class Hud {
       messages: $('messages'), waiting: $('waiting'), code: $('waiting-code'),
       link: $('waiting-link'), over: $('game-over'), result: $('game-over-result'),
       rematch: $('rematch'), overReason: $('game-over-reason'), overScore: $('game-over-score'),
+      overRatings: $('game-over-ratings'),
       overWaiting: $('game-over-waiting'), summary: $('board-summary'),
       summaryTitle: $('board-summary-title'), summaryPoints: $('board-summary-points'),
       summaryColours: $('board-summary-colours'), notice: $('notice'), noticeTitle: $('notice-title'),
@@ -74,7 +75,8 @@ export class Hud {
     this.el.copy.addEventListener('click', () => actions.copyLink());
   }
 
-  seat(el, model, seat) {
+  // rating: the seat's rating label ('' for none: seat_ratings.js).
+  seat(el, model, seat, rating) {
     const v = model.view;
     const s = v.seats[seat];
     if (!s) {
@@ -91,6 +93,7 @@ export class Hud {
     let sub = s.colour === 'none' ? '' : s.colour;
     if (s.occupied) sub = coinsLeftText(model.coinsLeft(), v.ruleSet, s.colour) || sub;
     this.fill(el, name, sub, s);
+    setText(this.parts(el).rating, s.occupied ? rating : ''); // a player who left keeps it on the card
   }
 
   // A team in a top-bar box (doubles).
@@ -111,6 +114,7 @@ export class Hud {
     if (name === '') name = 'Nobody yet';
     if (t.free > 0) sub += `${sub ? ', ' : ''}${countWords(t.free, 'seat', 'seats')} free`;
     this.fill(el, name, sub, t);
+    setText(this.parts(el).rating, '');
   }
 
   // A box's name, sub-line (plus the dues owed, in the alert colour), score and colour dot.
@@ -128,7 +132,7 @@ export class Hud {
     return el.parts ?? (el.parts = {
       name: el.querySelector('.name'), sub: el.querySelector('.sub'),
       score: el.querySelector('.score'), dot: el.querySelector('.dot'), tag: el.querySelector('.tag'),
-      dues: el.querySelector('.dues'),
+      dues: el.querySelector('.dues'), rating: el.querySelector('.rating'),
     });
   }
 
@@ -198,7 +202,8 @@ export class Hud {
     return !this.el.leaveAsk.hidden;
   }
 
-  // Everything the HUD shows, from the model and the session, at local time `now`.
+  // Everything the HUD shows, from the model and the session, at local time `now`; ui: {pulling,
+  // muted, ratings (a SeatRatings: each seat's rating and the game-over card's changes)}.
   update(model, session, ui, now) {
     const v = model.view;
     const e = this.el;
@@ -211,8 +216,8 @@ export class Hud {
         this.team(e.seats[1], model, teams[1]);
       } else {
         const left = v.you >= 0 ? v.you : 0;
-        this.seat(e.seats[0], model, left);
-        this.seat(e.seats[1], model, 1 - left);
+        this.seat(e.seats[0], model, left, ui.ratings.label(left));
+        this.seat(e.seats[1], model, 1 - left, ui.ratings.label(1 - left));
       }
       const status = this.statusLine(model, now);
       setText(e.status, status.text);
@@ -274,6 +279,7 @@ export class Hud {
       setText(e.result, t.title);
       setText(e.overReason, t.reason);
       setText(e.overScore, t.score);
+      setText(e.overRatings, ui.ratings.gameOverLine());
       setText(e.overWaiting, t.waiting);
       setHidden(e.overWaiting, t.waiting === '');
       // Withdrawn once a player left: the server would wait for an empty seat.

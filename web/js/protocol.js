@@ -63,9 +63,11 @@ export function isResumeToken(token) {
 
 // ---- client -> server ----
 
-export function hello(name, resumeToken) {
+// identity: the player's key (identity.js); absent: a guest.
+export function hello(name, resumeToken, identity) {
   const m = { type: 'hello', version: PROTOCOL_VERSION, name };
   if (resumeToken) m.resume_token = resumeToken;
+  if (identity) m.identity = identity;
   return m;
 }
 

@@ -49,6 +49,7 @@ export class Session {
     this.started = false;
     this.status = '';
     this.name = '';
+    this.identity = null; // the player's key sent in hello (identity.js); null: a guest
     this.link = null;
     this.request = null; // the room request, until a room or a refusal answers it
     this.lastRequest = null;
@@ -109,7 +110,8 @@ export class Session {
           break;
         case 'send_hello':
         case 'send_resume':
-          this.link.send(proto.hello(this.name, a.kind === 'send_resume' ? this.core.token : undefined));
+          this.link.send(proto.hello(this.name, a.kind === 'send_resume' ? this.core.token : undefined,
+            this.identity ?? undefined));
           this.setStatus('Saying hello...');
           clearInterval(this.pingTimer);
           this.pingTimer = setInterval(() => this.ping(), this.config.pingInterval * 1000);

@@ -61,10 +61,12 @@ void BotRunner::apply(const net::SessionActions& actions, const proto::Error* er
             open_connection();
             break;
         case Kind::SendHello:
-            connection_->send(proto::Hello{proto::kProtocolVersion, config_.name, std::nullopt});
+            connection_->send(proto::Hello{proto::kProtocolVersion, config_.name, std::nullopt,
+                                           config_.identity});
             break;
         case Kind::SendResume:
-            connection_->send(proto::Hello{proto::kProtocolVersion, config_.name, core_.token()});
+            connection_->send(proto::Hello{proto::kProtocolVersion, config_.name, core_.token(),
+                                           config_.identity});
             break;
         case Kind::SendRoomRequest:
             send_room_request();

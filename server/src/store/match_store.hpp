@@ -14,6 +14,7 @@
 // they see what has been written, not what is still queued.
 
 #include "carrom/proto/journal.hpp"
+#include "store/player_records.hpp"
 #include "store/sha256.hpp"
 
 #include <chrono>
@@ -69,6 +70,7 @@ struct RecoveredMatch {
     std::optional<proto::MatchJournal> journal;        // empty when error is set
     std::optional<StoreError> error;                   // this match's journal could not be read
     std::vector<std::optional<TokenHash>> seat_tokens; // by seat; empty optional: none stored
+    bool rated = false; // its game started with rated seats (set_rated_seat)
 };
 
 // One line of a player's match list.
@@ -124,6 +126,13 @@ public:
     // The match will not go on (abandoned, or not resumable); idempotent. A match whose game
     // ended by the rules is marked finished by its last append.
     virtual void mark_finished(const MatchId& match, std::int64_t time_ms) = 0;
+    // An identified player, new or renamed (keyed by its key hash; name_key unique).
+    virtual void save_player(IdentifiedPlayer player) = 0;
+    // The identified player holding a seat of a rated match as the game starts (queue it after
+    // create, before the game's appends). The append whose outcome ends a match with two rated
+    // seats held by two different players writes both players' rating updates in the same
+    // transaction as the result, once per match and player (docs/ratings.md).
+    virtual void set_rated_seat(const MatchId& match, int seat, PlayerKeyHash player) = 0;
 
     // Waits until everything queued before the call is done: written, or dropped (counted in
     // health()). False when the timeout came first (writes still failing, or slow).
@@ -138,6 +147,16 @@ public:
     // The player's most recent matches (by creation time, newest first), at most limit (1..100).
     virtual Loaded<std::vector<MatchListing>> recent_matches(const std::string& player,
                                                              int limit) = 0;
+
+    // Every identified player (the server keeps the names in memory; docs/ratings.md).
+    virtual Loaded<std::vector<IdentifiedPlayer>> load_players() = 0;
+    // The identified player whose name has this comparison key, if any.
+    virtual Loaded<std::optional<IdentifiedPlayer>> find_player(const std::string& name_key) = 0;
+    // The player's ratings, one per rule set played rated; empty if none.
+    virtual Loaded<std::vector<PlayerRating>> player_ratings(const PlayerKeyHash& player) = 0;
+    // Established ratings (deviation below ratings::kProvisionalDeviation) of a rule set, best
+    // first (ties: more games, then the name), at most limit (1..100).
+    virtual Loaded<std::vector<LeaderboardRow>> leaderboard(rules::RuleSet rule_set, int limit) = 0;
 
     virtual StoreHealth health() const = 0;
 };

@@ -61,12 +61,58 @@ CREATE TABLE seat_tokens (
     PRIMARY KEY (match_id, seat)
 );
 )sql",
+    // 2: identified players (a key's hash, never the key), their ratings per rule set, the
+    // players holding the seats of a rated match, and each rating change, once per match and
+    // player (docs/ratings.md).
+    R"sql(
+CREATE TABLE identities (
+    key_sha256 bytea PRIMARY KEY,
+    name text NOT NULL,
+    name_key text NOT NULL UNIQUE,
+    created_ms bigint NOT NULL
+);
+CREATE TABLE ratings (
+    key_sha256 bytea NOT NULL REFERENCES identities (key_sha256),
+    rule_set text NOT NULL,
+    rating double precision NOT NULL,
+    deviation double precision NOT NULL,
+    volatility double precision NOT NULL,
+    games integer NOT NULL,
+    wins integer NOT NULL,
+    losses integer NOT NULL,
+    draws integer NOT NULL,
+    last_game_ms bigint NOT NULL,
+    PRIMARY KEY (key_sha256, rule_set)
+);
+CREATE INDEX ratings_leaderboard ON ratings (rule_set, rating);
+CREATE TABLE rated_seats (
+    match_id text NOT NULL REFERENCES matches (id),
+    seat integer NOT NULL,
+    key_sha256 bytea NOT NULL REFERENCES identities (key_sha256),
+    PRIMARY KEY (match_id, seat)
+);
+CREATE TABLE rating_changes (
+    match_id text NOT NULL REFERENCES matches (id),
+    key_sha256 bytea NOT NULL REFERENCES identities (key_sha256),
+    rule_set text NOT NULL,
+    rating_before double precision NOT NULL,
+    deviation_before double precision NOT NULL,
+    rating_after double precision NOT NULL,
+    deviation_after double precision NOT NULL,
+    volatility_after double precision NOT NULL,
+    score double precision NOT NULL,
+    time_ms bigint NOT NULL,
+    PRIMARY KEY (match_id, key_sha256)
+);
+CREATE INDEX rating_changes_recent ON rating_changes (key_sha256, time_ms);
+)sql",
 };
 static_assert(std::size(kMigrations) == kSchemaVersion);
 
 // Every table a schema version has (what a database of ours may hold).
-const std::set<std::string> kOurTables = {"carrom_schema", "matches", "entries", "players",
-                                          "seat_tokens"};
+const std::set<std::string> kOurTables = {"carrom_schema", "matches",     "entries",
+                                          "players",       "seat_tokens", "identities",
+                                          "ratings",       "rated_seats", "rating_changes"};
 
 StoreError make_error(std::string_view code, std::string message) {
     std::replace(message.begin(), message.end(), '\n', ' '); // one line
@@ -160,7 +206,8 @@ std::optional<StoreError> migrate(pqxx::connection& c, const std::string& shown)
     // The role must be able to do everything the store does, not only to read.
     const pqxx::result missing =
         t.exec("SELECT current_user, p, t FROM unnest(ARRAY['matches', 'entries', 'players', "
-               "'seat_tokens']) AS t, unnest(ARRAY['SELECT', 'INSERT', 'UPDATE', 'DELETE']) AS p "
+               "'seat_tokens', 'identities', 'ratings', 'rated_seats', 'rating_changes']) AS t, "
+               "unnest(ARRAY['SELECT', 'INSERT', 'UPDATE', 'DELETE']) AS p "
                "WHERE NOT has_table_privilege(t, p) LIMIT 1");
     if (!missing.empty()) {
         return make_error(store_code::kPermission,

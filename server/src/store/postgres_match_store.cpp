@@ -61,4 +61,31 @@ Loaded<std::vector<MatchListing>> PostgresMatchStore::recent_matches(const std::
     return reader_->recent_matches(player, limit);
 }
 
+Loaded<std::vector<IdentifiedPlayer>> PostgresMatchStore::load_players() {
+    return reader_->load_players();
+}
+
+Loaded<std::optional<IdentifiedPlayer>>
+PostgresMatchStore::find_player(const std::string& name_key) {
+    if (options_.before_read) {
+        options_.before_read();
+    }
+    return reader_->find_player(name_key);
+}
+
+Loaded<std::vector<PlayerRating>> PostgresMatchStore::player_ratings(const PlayerKeyHash& player) {
+    if (options_.before_read) {
+        options_.before_read();
+    }
+    return reader_->player_ratings(player);
+}
+
+Loaded<std::vector<LeaderboardRow>> PostgresMatchStore::leaderboard(rules::RuleSet rule_set,
+                                                                    int limit) {
+    if (options_.before_read) {
+        options_.before_read();
+    }
+    return reader_->leaderboard(rule_set, limit);
+}
+
 } // namespace carrom::store

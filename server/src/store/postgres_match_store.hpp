@@ -51,6 +51,10 @@ public:
     Loaded<std::vector<RecoveredMatch>> load_unfinished() override;
     Loaded<std::optional<proto::MatchJournal>> journal(const MatchId& match) override;
     Loaded<std::vector<MatchListing>> recent_matches(const std::string& player, int limit) override;
+    Loaded<std::vector<IdentifiedPlayer>> load_players() override;
+    Loaded<std::optional<IdentifiedPlayer>> find_player(const std::string& name_key) override;
+    Loaded<std::vector<PlayerRating>> player_ratings(const PlayerKeyHash& player) override;
+    Loaded<std::vector<LeaderboardRow>> leaderboard(rules::RuleSet rule_set, int limit) override;
 
     // The URL with its password hidden.
     const std::string& shown_url() const { return shown_; }

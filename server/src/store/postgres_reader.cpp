@@ -1,6 +1,7 @@
 #include "store/postgres_reader.hpp"
 
 #include "store/postgres_database.hpp"
+#include "store/postgres_rating_row.hpp"
 #include "store/stored_json.hpp"
 
 #include <pqxx/pqxx>
@@ -12,6 +13,12 @@ namespace carrom::store::postgres {
 namespace {
 
 using ReadTransaction = pqxx::transaction<pqxx::repeatable_read, pqxx::read_only>;
+
+// The columns key_sha256, name, name_key, created_ms.
+IdentifiedPlayer player_fields(const pqxx::row& row) {
+    return IdentifiedPlayer{key_hash_field(row[0]), row[1].as<std::string>(),
+                            row[2].as<std::string>(), row[3].as<std::int64_t>()};
+}
 
 std::optional<proto::MatchJournal> read_journal(pqxx::transaction_base& t, const MatchId& match) {
     const pqxx::result head = t.exec_params("SELECT head FROM matches WHERE id = $1", match);
@@ -75,12 +82,14 @@ template <class T, class F> Loaded<T> PostgresReader::read(F f) {
 Loaded<std::vector<RecoveredMatch>> PostgresReader::load_unfinished() {
     return read<std::vector<RecoveredMatch>>([](pqxx::transaction_base& t) {
         std::vector<RecoveredMatch> out;
-        for (const auto& row : t.exec("SELECT id FROM matches WHERE finished_ms IS NULL "
-                                      "ORDER BY created_ms, id")) {
+        for (const auto& row : t.exec("SELECT m.id, EXISTS (SELECT 1 FROM rated_seats r "
+                                      "WHERE r.match_id = m.id) FROM matches m "
+                                      "WHERE m.finished_ms IS NULL ORDER BY m.created_ms, m.id")) {
             const MatchId id = row[0].as<std::string>();
             out.push_back(stored::recover(
                 id, [&] { return read_journal(t, id); },
                 [&](int seats) { return read_tokens(t, id, seats); }));
+            out.back().rated = row[1].as<bool>();
         }
         return out;
     });
@@ -105,6 +114,66 @@ Loaded<std::vector<MatchListing>> PostgresReader::recent_matches(const std::stri
                 row[3].as<std::int64_t>(),
                 row[4].is_null() ? std::nullopt : std::optional(row[4].as<std::int64_t>()),
                 row[5].is_null() ? std::nullopt : std::optional(row[5].as<std::string>())));
+        }
+        return out;
+    });
+}
+
+Loaded<std::vector<IdentifiedPlayer>> PostgresReader::load_players() {
+    return read<std::vector<IdentifiedPlayer>>([](pqxx::transaction_base& t) {
+        std::vector<IdentifiedPlayer> out;
+        for (const auto& row : t.exec("SELECT key_sha256, name, name_key, created_ms "
+                                      "FROM identities")) {
+            out.push_back(player_fields(row));
+        }
+        return out;
+    });
+}
+
+Loaded<std::optional<IdentifiedPlayer>> PostgresReader::find_player(const std::string& name_key) {
+    return read<std::optional<IdentifiedPlayer>>([&](pqxx::transaction_base& t) {
+        std::optional<IdentifiedPlayer> out;
+        const pqxx::result r = t.exec_params("SELECT key_sha256, name, name_key, created_ms "
+                                             "FROM identities WHERE name_key = $1",
+                                             name_key);
+        if (!r.empty()) {
+            out = player_fields(r[0]);
+        }
+        return out;
+    });
+}
+
+Loaded<std::vector<PlayerRating>> PostgresReader::player_ratings(const PlayerKeyHash& player) {
+    return read<std::vector<PlayerRating>>([&](pqxx::transaction_base& t) {
+        std::vector<PlayerRating> out;
+        for (const auto& row : t.exec_params(
+                 "SELECT rule_set, rating, deviation, volatility, games, wins, losses, draws, "
+                 "last_game_ms FROM ratings WHERE key_sha256 = decode($1, 'hex') "
+                 "ORDER BY rule_set COLLATE \"C\"",
+                 to_hex(player))) {
+            rules::RuleSet rule_set = rules::RuleSet::Icf;
+            if (rules::parse_rule_set(row[0].as<std::string>(), rule_set)) {
+                out.push_back(rating_fields(row, 1, rule_set));
+            }
+        }
+        return out;
+    });
+}
+
+Loaded<std::vector<LeaderboardRow>> PostgresReader::leaderboard(rules::RuleSet rule_set,
+                                                                int limit) {
+    return read<std::vector<LeaderboardRow>>([&](pqxx::transaction_base& t) {
+        std::vector<LeaderboardRow> out;
+        // name_key in byte order (COLLATE "C"), as SQLite compares text.
+        for (const auto& row : t.exec_params(
+                 "SELECT i.name, r.rating, r.deviation, r.volatility, r.games, r.wins, r.losses, "
+                 "r.draws, r.last_game_ms FROM ratings r JOIN identities i USING (key_sha256) "
+                 "WHERE r.rule_set = $1 AND r.deviation < $2 "
+                 "ORDER BY r.rating DESC, r.games DESC, i.name_key COLLATE \"C\" LIMIT $3",
+                 std::string(rules::to_string(rule_set)), ratings::kProvisionalDeviation,
+                 std::clamp(limit, 1, kMaxLeaderboardRows))) {
+            out.push_back(
+                LeaderboardRow{row[0].as<std::string>(), rating_fields(row, 1, rule_set)});
         }
         return out;
     });

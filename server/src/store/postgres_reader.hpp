@@ -1,8 +1,9 @@
 #pragma once
 // The PostgreSQL store's read connection: journals, unfinished matches and match lists, decoded
-// and checked (stored_json.hpp). Each read is one read-only REPEATABLE READ transaction (a
-// consistent snapshot). Thread-safe: one mutex around the connection, which is made again after
-// it breaks (the read that found it broken returns its error).
+// and checked (stored_json.hpp), and identified players and ratings (docs/ratings.md)
+// (stored_json.hpp). Each read is one read-only REPEATABLE READ transaction (a consistent
+// snapshot). Thread-safe: one mutex around the connection, which is made again after it breaks (the
+// read that found it broken returns its error).
 
 #include <pqxx/connection>
 #include <pqxx/transaction_base>
@@ -28,6 +29,10 @@ public:
     Loaded<std::vector<RecoveredMatch>> load_unfinished();
     Loaded<std::optional<proto::MatchJournal>> journal(const MatchId& match);
     Loaded<std::vector<MatchListing>> recent_matches(const std::string& player, int limit);
+    Loaded<std::vector<IdentifiedPlayer>> load_players();
+    Loaded<std::optional<IdentifiedPlayer>> find_player(const std::string& name_key);
+    Loaded<std::vector<PlayerRating>> player_ratings(const PlayerKeyHash& player);
+    Loaded<std::vector<LeaderboardRow>> leaderboard(rules::RuleSet rule_set, int limit);
 
 private:
     // Runs f(transaction) in one read transaction and maps failures to a StoreError.

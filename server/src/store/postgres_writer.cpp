@@ -2,6 +2,7 @@
 
 #include "carrom/proto/journal_json.hpp"
 #include "store/postgres_database.hpp"
+#include "store/postgres_rating_writer.hpp"
 #include "store/stored_json.hpp"
 
 #include <pqxx/pqxx>
@@ -66,6 +67,7 @@ std::optional<StoreError> PostgresWriter::open() {
         for (const auto& [name, sql] : kStatements) {
             connection_->prepare(name, sql);
         }
+        PostgresRatingWriter::prepare(*connection_);
     } catch (const std::exception& e) {
         connection_.reset();
         return error_from(e, shown_, "opening");
@@ -86,6 +88,7 @@ pqxx::connection& PostgresWriter::connection() {
     for (const auto& [name, sql] : kStatements) {
         c->prepare(name, sql);
     }
+    PostgresRatingWriter::prepare(*c);
     connection_ = std::move(c);
     return *connection_;
 }
@@ -174,6 +177,8 @@ void PostgresWriter::write_one(pqxx::transaction_base& t, const WriteItem& item)
                     t.exec_prepared(
                         "finish_with_result", static_cast<std::int64_t>(what.entry.time_ms),
                         stored::result_text(*outcome->game_end, outcome->scores), what.match);
+                    PostgresRatingWriter::match_ended(t, what.match, *outcome->game_end,
+                                                      what.entry.time_ms);
                 }
             } else if constexpr (std::is_same_v<T, SeatTokenItem>) {
                 if (what.token) {
@@ -181,6 +186,10 @@ void PostgresWriter::write_one(pqxx::transaction_base& t, const WriteItem& item)
                 } else {
                     t.exec_prepared("delete_token", what.match, what.seat);
                 }
+            } else if constexpr (std::is_same_v<T, PlayerItem>) {
+                PostgresRatingWriter::save_player(t, what);
+            } else if constexpr (std::is_same_v<T, RatedSeatItem>) {
+                PostgresRatingWriter::rated_seat(t, what);
             } else {
                 t.exec_prepared("finish", static_cast<std::int64_t>(what.time_ms), what.match);
             }

@@ -39,6 +39,14 @@ void QueuedMatchStore::mark_finished(const MatchId& match, std::int64_t time_ms)
     queue_->enqueue(WriteItem{FinishItem{match, time_ms}, {}, false});
 }
 
+void QueuedMatchStore::save_player(IdentifiedPlayer player) {
+    queue_->enqueue(WriteItem{PlayerItem{std::move(player)}, {}, false});
+}
+
+void QueuedMatchStore::set_rated_seat(const MatchId& match, int seat, PlayerKeyHash player) {
+    queue_->enqueue(WriteItem{RatedSeatItem{match, seat, player}, {}, false});
+}
+
 bool QueuedMatchStore::flush(std::chrono::milliseconds timeout) {
     return queue_->flush(timeout);
 }

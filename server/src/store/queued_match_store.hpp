@@ -1,8 +1,9 @@
 #pragma once
-// The MatchStore writes every backend shares: create, append, set_seat_token and mark_finished
-// queue a WriteItem on a StoreWriteQueue (store_write_queue.hpp) and return; flush and health are
-// the queue's. A backend derives from it, implements the reads, and gives start_writing the
-// function that writes one batch in one transaction on the queue's writer thread.
+// The MatchStore writes every backend shares: create, append, set_seat_token, mark_finished,
+// save_player and set_rated_seat queue a WriteItem on a StoreWriteQueue (store_write_queue.hpp)
+// and return; flush and health are the queue's. A backend derives from it, implements the reads,
+// and gives start_writing the function that writes one batch in one transaction on the queue's
+// writer thread.
 
 #include "store/match_store.hpp"
 #include "store/store_options.hpp"
@@ -21,6 +22,8 @@ public:
                 OnWritten on_written = {}) override;
     void set_seat_token(const MatchId& match, int seat, std::optional<TokenHash> token) override;
     void mark_finished(const MatchId& match, std::int64_t time_ms) override;
+    void save_player(IdentifiedPlayer player) override;
+    void set_rated_seat(const MatchId& match, int seat, PlayerKeyHash player) override;
     bool flush(std::chrono::milliseconds timeout) override;
     StoreHealth health() const override;
 

@@ -60,6 +60,51 @@ CREATE TABLE seat_tokens (
     PRIMARY KEY (match_id, seat)
 ) WITHOUT ROWID;
 )sql",
+    // 2: identified players (a key's hash, never the key), their ratings per rule set, the
+    // players holding the seats of a rated match, and each rating change, once per match and
+    // player (docs/ratings.md).
+    R"sql(
+CREATE TABLE identities (
+    key_sha256 BLOB PRIMARY KEY NOT NULL,
+    name TEXT NOT NULL,
+    name_key TEXT NOT NULL UNIQUE,
+    created_ms INTEGER NOT NULL
+) WITHOUT ROWID;
+CREATE TABLE ratings (
+    key_sha256 BLOB NOT NULL REFERENCES identities (key_sha256),
+    rule_set TEXT NOT NULL,
+    rating REAL NOT NULL,
+    deviation REAL NOT NULL,
+    volatility REAL NOT NULL,
+    games INTEGER NOT NULL,
+    wins INTEGER NOT NULL,
+    losses INTEGER NOT NULL,
+    draws INTEGER NOT NULL,
+    last_game_ms INTEGER NOT NULL,
+    PRIMARY KEY (key_sha256, rule_set)
+) WITHOUT ROWID;
+CREATE INDEX ratings_leaderboard ON ratings (rule_set, rating);
+CREATE TABLE rated_seats (
+    match_id TEXT NOT NULL REFERENCES matches (id),
+    seat INTEGER NOT NULL,
+    key_sha256 BLOB NOT NULL REFERENCES identities (key_sha256),
+    PRIMARY KEY (match_id, seat)
+) WITHOUT ROWID;
+CREATE TABLE rating_changes (
+    match_id TEXT NOT NULL REFERENCES matches (id),
+    key_sha256 BLOB NOT NULL REFERENCES identities (key_sha256),
+    rule_set TEXT NOT NULL,
+    rating_before REAL NOT NULL,
+    deviation_before REAL NOT NULL,
+    rating_after REAL NOT NULL,
+    deviation_after REAL NOT NULL,
+    volatility_after REAL NOT NULL,
+    score REAL NOT NULL,
+    time_ms INTEGER NOT NULL,
+    PRIMARY KEY (match_id, key_sha256)
+) WITHOUT ROWID;
+CREATE INDEX rating_changes_recent ON rating_changes (key_sha256, time_ms);
+)sql",
 };
 static_assert(std::size(kMigrations) == kSchemaVersion);
 

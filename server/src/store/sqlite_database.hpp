@@ -19,7 +19,7 @@
 namespace carrom::store::sqlite {
 
 // PRAGMA user_version: the schema this build writes. A file with a larger one is refused.
-inline constexpr int kSchemaVersion = 1;
+inline constexpr int kSchemaVersion = 2;
 // PRAGMA application_id: "CRMJ", the mark of a carrom match store.
 inline constexpr std::int32_t kApplicationId = 0x43524d4a;
 

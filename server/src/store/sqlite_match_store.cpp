@@ -1,6 +1,7 @@
 #include "store/sqlite_match_store.hpp"
 
 #include "store/sqlite_database.hpp"
+#include "store/sqlite_player_reader.hpp"
 #include "store/sqlite_reader.hpp"
 #include "store/sqlite_writer.hpp"
 
@@ -25,6 +26,7 @@ SqliteMatchStore::Opened SqliteMatchStore::open(const std::string& path,
     try {
         store->writer_connection_ = std::make_unique<sqlite::SqliteWriter>(path);
         store->reader_ = std::make_unique<sqlite::SqliteReader>(path);
+        store->player_reader_ = std::make_unique<sqlite::SqlitePlayerReader>(path);
         store->checkpoint_connection_ =
             std::make_unique<SQLite::Database>(sqlite::open_connection(path, false));
     } catch (const SQLite::Exception& e) {
@@ -103,6 +105,32 @@ Loaded<std::vector<MatchListing>> SqliteMatchStore::recent_matches(const std::st
         options_.before_read();
     }
     return reader_->recent_matches(player, limit);
+}
+
+Loaded<std::vector<IdentifiedPlayer>> SqliteMatchStore::load_players() {
+    return player_reader_->load_players();
+}
+
+Loaded<std::optional<IdentifiedPlayer>> SqliteMatchStore::find_player(const std::string& name_key) {
+    if (options_.before_read) {
+        options_.before_read();
+    }
+    return player_reader_->find_player(name_key);
+}
+
+Loaded<std::vector<PlayerRating>> SqliteMatchStore::player_ratings(const PlayerKeyHash& player) {
+    if (options_.before_read) {
+        options_.before_read();
+    }
+    return player_reader_->player_ratings(player);
+}
+
+Loaded<std::vector<LeaderboardRow>> SqliteMatchStore::leaderboard(rules::RuleSet rule_set,
+                                                                  int limit) {
+    if (options_.before_read) {
+        options_.before_read();
+    }
+    return player_reader_->leaderboard(rule_set, limit);
 }
 
 } // namespace carrom::store

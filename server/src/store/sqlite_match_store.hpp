@@ -37,6 +37,7 @@ class Database;
 namespace carrom::store {
 
 namespace sqlite {
+class SqlitePlayerReader;
 class SqliteReader;
 class SqliteWriter;
 } // namespace sqlite
@@ -60,6 +61,10 @@ public:
     Loaded<std::vector<RecoveredMatch>> load_unfinished() override;
     Loaded<std::optional<proto::MatchJournal>> journal(const MatchId& match) override;
     Loaded<std::vector<MatchListing>> recent_matches(const std::string& player, int limit) override;
+    Loaded<std::vector<IdentifiedPlayer>> load_players() override;
+    Loaded<std::optional<IdentifiedPlayer>> find_player(const std::string& name_key) override;
+    Loaded<std::vector<PlayerRating>> player_ratings(const PlayerKeyHash& player) override;
+    Loaded<std::vector<LeaderboardRow>> leaderboard(rules::RuleSet rule_set, int limit) override;
 
     const std::string& path() const { return path_; }
 
@@ -72,6 +77,7 @@ private:
     SqliteStoreOptions options_;
     std::unique_ptr<sqlite::SqliteWriter> writer_connection_;
     std::unique_ptr<sqlite::SqliteReader> reader_;
+    std::unique_ptr<sqlite::SqlitePlayerReader> player_reader_;
     std::unique_ptr<SQLite::Database> checkpoint_connection_;
     std::atomic<std::uint64_t> commits_since_checkpoint_{0};
 

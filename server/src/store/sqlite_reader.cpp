@@ -77,17 +77,19 @@ std::vector<std::optional<TokenHash>> SqliteReader::read_tokens(const MatchId& m
 Loaded<std::vector<RecoveredMatch>> SqliteReader::load_unfinished() {
     const std::lock_guard lock(mutex_);
     return read<std::vector<RecoveredMatch>>(db_, path_, [this] {
-        std::vector<MatchId> ids;
-        SQLite::Statement q(db_, "SELECT id FROM matches WHERE finished_ms IS NULL "
-                                 "ORDER BY created_ms, id");
+        std::vector<std::pair<MatchId, bool>> ids; // id, rated
+        SQLite::Statement q(db_, "SELECT m.id, EXISTS (SELECT 1 FROM rated_seats r "
+                                 "WHERE r.match_id = m.id) FROM matches m "
+                                 "WHERE m.finished_ms IS NULL ORDER BY m.created_ms, m.id");
         while (q.executeStep()) {
-            ids.push_back(q.getColumn(0).getString());
+            ids.emplace_back(q.getColumn(0).getString(), q.getColumn(1).getInt() != 0);
         }
         std::vector<RecoveredMatch> out;
-        for (const MatchId& id : ids) {
+        for (const auto& [id, rated] : ids) {
             out.push_back(stored::recover(
                 id, [&] { return read_journal(id); },
                 [&](int seats) { return read_tokens(id, seats); }));
+            out.back().rated = rated;
         }
         return out;
     });

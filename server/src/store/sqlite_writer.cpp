@@ -45,7 +45,7 @@ SqliteWriter::SqliteWriter(const std::string& path)
       upsert_token_(db_, "INSERT INTO seat_tokens (match_id, seat, token_sha256) VALUES (?, ?, ?) "
                          "ON CONFLICT (match_id, seat) DO UPDATE SET "
                          "token_sha256 = excluded.token_sha256"),
-      delete_token_(db_, "DELETE FROM seat_tokens WHERE match_id = ? AND seat = ?") {
+      delete_token_(db_, "DELETE FROM seat_tokens WHERE match_id = ? AND seat = ?"), ratings_(db_) {
     // Checkpoints are the checkpointer's (SqliteMatchStore): a commit never waits for one.
     db_.exec("PRAGMA wal_autocheckpoint = 0");
 }
@@ -102,6 +102,10 @@ void SqliteWriter::write_one(const WriteItem& item) {
                 append(what);
             } else if constexpr (std::is_same_v<T, SeatTokenItem>) {
                 seat_token(what);
+            } else if constexpr (std::is_same_v<T, PlayerItem>) {
+                ratings_.save_player(what);
+            } else if constexpr (std::is_same_v<T, RatedSeatItem>) {
+                ratings_.rated_seat(what);
             } else {
                 finish(what);
             }
@@ -144,6 +148,7 @@ void SqliteWriter::append(const AppendItem& item) {
         finish_with_result_.bind(2, stored::result_text(*outcome->game_end, outcome->scores));
         finish_with_result_.bind(3, item.match);
         run(finish_with_result_);
+        ratings_.match_ended(item.match, *outcome->game_end, item.entry.time_ms);
     }
 }
 

@@ -2,6 +2,7 @@
 // The store's write connection: writes a batch of queued items in one transaction. Used by one
 // thread only (SqliteMatchStore's writer).
 
+#include "store/sqlite_rating_writer.hpp"
 #include "store/write_item.hpp"
 
 #include <SQLiteCpp/Database.h>
@@ -49,6 +50,7 @@ private:
     SQLite::Statement finish_;
     SQLite::Statement upsert_token_;
     SQLite::Statement delete_token_;
+    SqliteRatingWriter ratings_; // identities and ratings, in the same transactions
 };
 
 } // namespace carrom::store::sqlite

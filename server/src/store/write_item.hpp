@@ -29,8 +29,17 @@ struct FinishItem {
     std::int64_t time_ms = 0;
 };
 
+struct PlayerItem {
+    IdentifiedPlayer player;
+};
+struct RatedSeatItem {
+    MatchId match;
+    int seat = 0;
+    PlayerKeyHash player{};
+};
+
 struct WriteItem {
-    std::variant<CreateItem, AppendItem, SeatTokenItem, FinishItem> what;
+    std::variant<CreateItem, AppendItem, SeatTokenItem, FinishItem, PlayerItem, RatedSeatItem> what;
     OnWritten on_written; // appends only; may be empty
     bool told = false;    // on_written has been called
 };

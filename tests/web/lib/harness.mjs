@@ -5,7 +5,8 @@
 // deadline.
 //
 // Environment (set by tests/web/web.cmake): CARROM_SERVER, CARROM_BOT, CARROM_CLIENT (paths of
-// the built binaries), CARROM_CHROMIUM (default /usr/bin/chromium); CARROM_WEB_ROOT, when set,
+// the built binaries), CARROM_CHROMIUM (default /usr/bin/chromium), CARROM_SQLITE3 (the sqlite3
+// program, default sqlite3); CARROM_WEB_ROOT, when set,
 // makes every carrom-server serve that directory (`--web-root`) instead of its embedded copy, to
 // test an edit of web/ without a rebuild.
 
@@ -19,6 +20,7 @@ export const env = {
   client: process.env.CARROM_CLIENT,
   chromium: process.env.CARROM_CHROMIUM || '/usr/bin/chromium',
   webRoot: process.env.CARROM_WEB_ROOT,
+  sqlite3: process.env.CARROM_SQLITE3,
 };
 
 export const CHROMIUM_ARGS = [

@@ -46,6 +46,8 @@ struct SessionConfig {
     // Each delay d drawn uniformly from [d/2, d] with this seed (so that many clients cut at
     // once do not come back at once); none: exactly d.
     std::optional<std::uint64_t> jitter_seed;
+    // The player key sent in every hello (docs/ratings.md); none: a guest.
+    std::optional<std::string> identity;
 };
 
 // While reconnecting: what the window says ("Reconnecting... (attempt N, next try in S s)").

@@ -18,6 +18,9 @@ struct GameOverText {
     // After asking for a rematch: who it waits for ("Waiting for Ben to agree to a rematch"); at a
     // table a player left: "Your opponent left the room: no rematch".
     std::string waiting;
+    // After a rated game: "Ratings: Asha 1662? (+162), Ravi 1338? (-162)" (set by the client
+    // from the ratings it read, rating_book.hpp; "" otherwise).
+    std::string ratings;
     friend bool operator==(const GameOverText&, const GameOverText&) = default;
 };
 

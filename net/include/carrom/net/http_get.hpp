@@ -1,7 +1,7 @@
 #pragma once
-// One plain HTTP/1.1 GET (carrom-client --replay URL fetching a match journal): http:// only,
-// no redirects, a body size limit and one deadline for the whole exchange. Blocking; Boost stays
-// in net/src/http_get.cpp.
+// One HTTP/1.1 GET (carrom-client --replay URL fetching a match journal: http:// only; its
+// players and leaderboard views: http:// or https://), no redirects, a body size limit and one
+// deadline for the whole exchange. Blocking; Boost stays in net/src/http_get.cpp.
 
 #include "carrom/net/ws_url.hpp"
 
@@ -19,7 +19,7 @@ struct HttpLimits {
 };
 
 struct HttpResponse {
-    unsigned status = 0; // 200 only: other statuses are errors
+    unsigned status = 0; // http_get: 200 only (other statuses are errors); http_get_any_status: any
     std::string body;
 };
 
@@ -30,5 +30,12 @@ std::variant<WsUrl, std::string> parse_http_url(std::string_view url);
 // found, a refused connection, no answer within the timeout, another status than 200 ("... answered
 // 404 Not Found."), a body over the limit.
 std::variant<HttpResponse, std::string> http_get(std::string_view url, const HttpLimits& limits);
+
+// For a carrom-server's JSON API (carrom-client's ratings, leaderboard and match list):
+// http:// or https:// (port 443 by default; TLS as for wss://: the certificate verified for the
+// host against the system's CAs and ca_file, "" for none), and an answer of any status comes
+// back with its body (an error's JSON too). The same sentences as http_get otherwise.
+std::variant<HttpResponse, std::string>
+http_get_any_status(std::string_view url, const HttpLimits& limits, const std::string& ca_file);
 
 } // namespace carrom::net

@@ -18,6 +18,10 @@ struct Hello {
     int version = kProtocolVersion;          // "version", integer
     std::string name;                        // "name", see is_player_name
     std::optional<std::string> resume_token; // "resume_token", 32 lowercase hex; reclaims a seat
+    // "identity", optional: the player's key, 1..kMaxIdentityBytes characters on the wire; the
+    // server accepts only is_identity_key (64 lowercase hex, 256 bits) and refuses anything else
+    // with bad_identity. Absent: a guest (docs/ratings.md, "Identity").
+    std::optional<std::string> identity = {};
     friend bool operator==(const Hello&, const Hello&) = default;
 };
 
@@ -44,6 +48,8 @@ struct CreateRoom {
     RoomOptions options;             // "options", optional object
     std::optional<BotSeat> bot;      // "bot", optional object
     int seats = 2;                   // "seats", optional: 2 (singles, default) or 4 (doubles)
+    bool rated = false; // "rated", optional boolean: a rated room (singles, identified players,
+                        // no bot); on the wire only when true
     friend bool operator==(const CreateRoom&, const CreateRoom&) = default;
 };
 

@@ -45,6 +45,17 @@ inline constexpr std::string_view kHandshakeTimeout = "handshake_timeout";
 inline constexpr std::string_view kIdleTimeout = "idle_timeout";
 inline constexpr std::string_view kShuttingDown = "shutting_down";
 inline constexpr std::string_view kReplaced = "replaced"; // the seat was resumed on another link
+// Identities and rated rooms (docs/ratings.md).
+inline constexpr std::string_view kBadIdentity = "bad_identity"; // not 64 lowercase hex digits
+inline constexpr std::string_view kNameTaken = "name_taken";     // another identity holds the name
+inline constexpr std::string_view kTooManyIdentities =
+    "too_many_identities"; // new identities from one address over the limit per minute
+inline constexpr std::string_view kIdentityRequired =
+    "identity_required"; // a rated room asked for or joined without an identity
+inline constexpr std::string_view kRatedWithBot = "rated_with_bot"; // rated and a bot seat
+inline constexpr std::string_view kRatedDoubles = "rated_doubles";  // rated with 4 seats
+inline constexpr std::string_view kSamePlayer =
+    "same_player"; // the identity already holds the other seat of this rated room
 // Rooms.
 inline constexpr std::string_view kRoomNotFound = "room_not_found";
 inline constexpr std::string_view kRoomFull = "room_full";

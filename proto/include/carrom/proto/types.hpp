@@ -104,6 +104,7 @@ bool parse(std::string_view text, BodyKind& out);
 // Identifier checks (exact; no normalisation).
 bool is_room_code(std::string_view text);    // 6 characters of kRoomCodeAlphabet
 bool is_resume_token(std::string_view text); // 32 lowercase hex digits
+bool is_identity_key(std::string_view text); // 64 lowercase hex digits (kIdentityKeyLength)
 // A player name: 1..kMaxNameBytes bytes, no ASCII control characters, not all spaces.
 // (The JSON parser has already rejected invalid UTF-8.)
 bool is_player_name(std::string_view text);

@@ -41,8 +41,8 @@ struct RoomConfig {
     double grace_s = 60.0;
     double time_scale = 1.0;    // match seconds per wall second while a shot plays
     std::string server_version; // journaled in MatchCreated.versions.server
-    // room_state's aim_assist: clients may draw the first-contact aim guide. On for every room
-    // the server makes today (none is rated); a rated room turns it off.
+    // room_state's aim_assist: clients may draw the first-contact aim guide. Off in a rated
+    // room (docs/ratings.md), on in every other.
     bool aim_assist = true;
 };
 

@@ -9,6 +9,7 @@
 #include "carrom/server/random.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <deque>
 #include <functional>
@@ -28,6 +29,8 @@ struct PlayerRecord {
     std::int64_t player_id = 0;
     std::string token;
     std::string room_code; // the room the player last took a seat in ("" if none)
+    // The sha256 of the player's identity key (docs/ratings.md); none for a guest.
+    std::optional<std::array<std::uint8_t, 32>> identity = {};
 };
 
 template <class RoomT, class WaiterT> class Registry {
@@ -59,6 +62,18 @@ public:
         if (auto it = players_.find(token); it != players_.end()) {
             it->second.room_code = room_code;
         }
+    }
+    void set_player_identity(const std::string& token,
+                             std::optional<std::array<std::uint8_t, 32>> identity) {
+        std::lock_guard lock(mutex_);
+        if (auto it = players_.find(token); it != players_.end()) {
+            it->second.identity = identity;
+        }
+    }
+    std::optional<std::array<std::uint8_t, 32>> identity_of(const std::string& token) const {
+        std::lock_guard lock(mutex_);
+        const auto it = players_.find(token);
+        return it == players_.end() ? std::nullopt : it->second.identity;
     }
     // Forgets a player whose connection ended while not seated anywhere.
     void forget_player(const std::string& token) {

@@ -37,6 +37,8 @@ enum class JoinMode { Create, Join, Quick, Spectate };
 struct BotConfig {
     std::string url = "ws://127.0.0.1:7777";
     std::string name = "bot";
+    // The player key sent in hello (net/identity_file.hpp); none: a guest.
+    std::optional<std::string> identity;
     JoinMode mode = JoinMode::Quick;
     proto::CreateRoom create;                            // JoinMode::Create
     std::string code;                                    // JoinMode::Join and Spectate
