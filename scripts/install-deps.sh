@@ -10,6 +10,9 @@ packages=(
     libboost-dev nlohmann-json3-dev libsimdjson-dev libsfml-dev
     libgtest-dev libgmock-dev googletest libbenchmark-dev
     libcli11-dev libspdlog-dev libsqlite3-dev libsqlitecpp-dev libpqxx-dev postgresql
+    # The front of a cluster (docker/haproxy.cfg, scripts/cluster.sh); YAML for the deployment
+    # files' test (tests/deploy).
+    haproxy python3-yaml
     libssl-dev ca-certificates openssl libnss3-tools
     xvfb xauth fonts-dejavu-core
     python3 python3-matplotlib
