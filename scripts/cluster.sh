@@ -108,11 +108,21 @@ as_pg_user() { # PostgreSQL refuses to run as root: initdb and pg_ctl as nobody 
 
 cleanup() {
     set +e
-    local pid
+    local pid _
     for pid in "${pids[@]}"; do
         kill -TERM "$pid" 2> /dev/null
     done
+    # SIGTERM: the instances drain and stop within --shutdown-grace (3 s); SIGKILL after 15 s.
+    for _ in $(seq 1 150); do
+        alive=0
+        for pid in "${pids[@]}"; do
+            kill -0 "$pid" 2> /dev/null && alive=1
+        done
+        [[ $alive -eq 0 ]] && break
+        sleep 0.1
+    done
     for pid in "${pids[@]}"; do
+        kill -KILL "$pid" 2> /dev/null
         wait "$pid" 2> /dev/null
     done
     if [[ $pg_running -eq 1 ]]; then
@@ -157,7 +167,9 @@ for n in 1 2 3; do
     if [[ $check -eq 1 ]]; then
         args+=(--time-scale 8 --shot-clock 0)
     fi
-    "$server" "${args[@]}" > "$work/carrom-$n.out" 2> "$work/carrom-$n.log" &
+    : > "$work/carrom-$n.out"
+    # The child takes the default SIGINT and SIGTERM, not this script's traps, until it execs.
+    (trap - INT TERM; exec "$server" "${args[@]}" > "$work/carrom-$n.out" 2> "$work/carrom-$n.log") &
     pids+=($!)
     port=""
     for _ in $(seq 1 150); do
@@ -173,7 +185,8 @@ done
 
 CARROM_FRONT_BIND="$front_host:$front_port" CARROM_INSTANCE_1="127.0.0.1:${ports[0]}" \
     CARROM_INSTANCE_2="127.0.0.1:${ports[1]}" CARROM_INSTANCE_3="127.0.0.1:${ports[2]}" \
-    haproxy -db -f "$repo/docker/haproxy.cfg" > "$work/haproxy.log" 2>&1 &
+    bash -c 'trap - INT TERM; exec haproxy -db -f "$1"' haproxy "$repo/docker/haproxy.cfg" \
+    > "$work/haproxy.log" 2>&1 &
 pids+=($!)
 front="$public_host:$front_port"
 
@@ -221,6 +234,25 @@ done
 [[ $(tr ' ' '\n' <<< "$seen" | sort -u | grep -c .) -eq 3 ]] ||
     fail "round robin: three requests to the front reached '$seen'"
 echo "cluster.sh: /healthz through the front: carrom-1, carrom-2, carrom-3 by name; round robin $seen"
+if [[ $mode == cluster ]]; then
+    # Each instance names itself in /healthz, and is registered with its route through the front.
+    for n in 1 2 3; do
+        python3 - "http://127.0.0.1:$front_port/i/carrom-$n/healthz" "carrom-$n" << 'EOF' ||
+import json, sys, urllib.request
+body = urllib.request.urlopen(sys.argv[1], timeout=3).read().decode()
+line = [l for l in body.splitlines() if l.startswith("cluster: ")]
+sys.exit(0 if line and json.loads(line[0][len("cluster: "):]).get("instance") == sys.argv[2] else 1)
+EOF
+            fail "/i/carrom-$n/healthz has no 'cluster:' line naming carrom-$n"
+    done
+    registered=$(sql carrom "SELECT string_agg(id || ' ' || public_url, ',' ORDER BY id) FROM instances")
+    expected=""
+    for n in 1 2 3; do
+        expected+="${expected:+,}carrom-$n ws://$public_host:$front_port/i/carrom-$n/"
+    done
+    [[ $registered == "$expected" ]] || fail "the instances table holds '$registered', not '$expected'"
+    echo "cluster.sh: the three instances are registered with their routes through the front"
+fi
 
 # One short match, both bots through the front's route to carrom-2.
 url="ws://127.0.0.1:$front_port/i/carrom-2/"
