@@ -16,7 +16,8 @@
 # The mode is printed at start ("cluster.sh: mode ...").
 #
 # --check: starts it all, checks /healthz of each instance through the front (/i/carrom-N/healthz
-# answered by carrom-N) and round robin (three requests to /healthz answered by three instances),
+# answered by carrom-N), round robin (three requests to /healthz answered by three instances) and
+# the page (GET /),
 # plays one short bot match through the front (both bots at ws://HOST:FRONT/i/carrom-2/, the
 # server at --time-scale 8), checks the match is stored finished in PostgreSQL, stops everything
 # and exits 0, or 1 with the reason (77: haproxy or PostgreSQL is not installed). Bounded: every
@@ -25,7 +26,7 @@
 # usage: scripts/cluster.sh [--check] [--server PATH] [--bot PATH] [--port N] [--host ADDR]
 #                           [--public-host NAME]
 #   --server, --bot  the programs (default build/release/..., else build/test/...)
-#   --port           the front port (default 7777; --check picks a free one)
+#   --port           the front port (default 7777; 0 and --check pick a free one)
 #   --host           the front's listening address (default 127.0.0.1; 0.0.0.0 for a LAN)
 #   --public-host    the host name players reach the front at (default 127.0.0.1), used in the
 #                    instances' --public-url and in the printed address
@@ -83,8 +84,9 @@ free_port() {
     python3 -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])'
 }
 if [[ -z "$front_port" ]]; then
-    if [[ $check -eq 1 ]]; then front_port=$(free_port); else front_port=7777; fi
+    if [[ $check -eq 1 ]]; then front_port=0; else front_port=7777; fi
 fi
+[[ $front_port == 0 ]] && front_port=$(free_port)
 
 if "$server" --help | grep -q -- '--instance-id'; then
     mode=cluster
@@ -253,6 +255,10 @@ EOF
     [[ $registered == "$expected" ]] || fail "the instances table holds '$registered', not '$expected'"
     echo "cluster.sh: the three instances are registered with their routes through the front"
 fi
+
+# The browser client's page through the front.
+answer=$(get /)
+[[ $answer == 200\ carrom-* ]] || fail "GET / through the front answered '$answer'"
 
 # One short match, both bots through the front's route to carrom-2.
 url="ws://127.0.0.1:$front_port/i/carrom-2/"
