@@ -34,6 +34,7 @@
 # needs: haproxy, postgresql (scripts/install-deps.sh installs both), python3.
 set -euo pipefail
 repo=$(cd "$(dirname "$0")/.." && pwd)
+. "$repo/scripts/lib/bot_pair.sh"
 
 check=0
 server=""
@@ -173,13 +174,8 @@ for n in 1 2 3; do
     # The child takes the default SIGINT and SIGTERM, not this script's traps, until it execs.
     (trap - INT TERM; exec "$server" "${args[@]}" > "$work/carrom-$n.out" 2> "$work/carrom-$n.log") &
     pids+=($!)
-    port=""
-    for _ in $(seq 1 150); do
-        port=$(sed -n 's/^listening on 127\.0\.0\.1:\([0-9]*\)$/\1/p' "$work/carrom-$n.out")
-        [[ -n "$port" ]] && break
-        kill -0 "${pids[-1]}" 2> /dev/null || break
-        sleep 0.1
-    done
+    port=$(wait_for_output "$work/carrom-$n.out" 's/^listening on 127\.0\.0\.1:\([0-9]*\)$/\1/p' \
+        "${pids[-1]}" 150)
     [[ -n "$port" ]] || fail "carrom-$n did not start: $(cat "$work/carrom-$n.out" "$work/carrom-$n.log")"
     ports+=("$port")
     echo "cluster.sh: carrom-$n on 127.0.0.1:$port (log $work/carrom-$n.log)"
@@ -266,30 +262,17 @@ timeout 60 "$bot" --url "$url" --name creator --create --rule-set freestyle --ta
     --boards 1 --shot-clock 0 --strategy random --seed 1 --think-ms 10 --timeout 50 \
     > "$work/creator.json" 2> "$work/creator.err" &
 creator=$!
-code=""
-for _ in $(seq 1 100); do
-    code=$(sed -n 's/^room \([A-Z0-9]\{6\}\)$/\1/p' "$work/creator.err" | head -n 1)
-    [[ -n "$code" ]] && break
-    kill -0 "$creator" 2> /dev/null || break
-    sleep 0.1
-done
+code=$(bot_pair_room_code "$work" "$creator")
 [[ -n "$code" ]] || fail "the first bot got no room through $url: $(cat "$work/creator.json" "$work/creator.err")"
 timeout 60 "$bot" --url "$url" --name joiner --join "$code" --strategy random --seed 2 \
     --think-ms 10 --timeout 50 > "$work/joiner.json" 2> "$work/joiner.err" ||
     fail "the second bot failed: $(cat "$work/joiner.json" "$work/joiner.err")"
 wait "$creator" || fail "the first bot failed: $(cat "$work/creator.json" "$work/creator.err")"
-field() { # field FILE NAME: a top-level JSON field, compact
-    python3 -c 'import json,sys; print(json.dumps(json.load(open(sys.argv[1]))[sys.argv[2]]))' "$1" "$2"
-}
-for b in creator joiner; do
-    [[ $(field "$work/$b.json" ok) == true ]] || fail "$b: $(cat "$work/$b.json")"
-done
-[[ "$(field "$work/creator.json" scores)" == "$(field "$work/joiner.json" scores)" ]] ||
-    fail "the bots disagree on the score: $(cat "$work/creator.json" "$work/joiner.json")"
+bot_pair_check "$work"
 stored=$(sql "$(database_of 2)" "SELECT count(*) FROM matches WHERE finished_ms IS NOT NULL")
 [[ $stored -ge 1 ]] || fail "no finished match in PostgreSQL database $(database_of 2)"
 strokes=$(sql "$(database_of 2)" "SELECT count(*) FROM entries WHERE type = 'stroke'")
-echo "cluster.sh: match $code through $url: scores $(field "$work/creator.json" scores)," \
+echo "cluster.sh: match $code through $url: scores $(bot_pair_field "$work/creator.json" scores)," \
     "$strokes strokes stored finished in PostgreSQL ($(database_of 2))"
 
 # The instances stop cleanly on SIGTERM.
