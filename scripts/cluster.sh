@@ -192,8 +192,9 @@ front="$public_host:$front_port"
 get() {
     python3 - "http://127.0.0.1:$front_port$1" << 'EOF'
 import sys, urllib.request, urllib.error
+opener = urllib.request.build_opener(urllib.request.ProxyHandler({}))  # never an http_proxy
 try:
-    with urllib.request.urlopen(sys.argv[1], timeout=3) as r:
+    with opener.open(sys.argv[1], timeout=3) as r:
         print(r.status, r.headers.get("Carrom-Instance", "-"))
 except urllib.error.HTTPError as e:
     print(e.code, e.headers.get("Carrom-Instance", "-"))
@@ -237,7 +238,8 @@ if [[ $mode == cluster ]]; then
     for n in 1 2 3; do
         python3 - "http://127.0.0.1:$front_port/i/carrom-$n/healthz" "carrom-$n" << 'EOF' ||
 import json, sys, urllib.request
-body = urllib.request.urlopen(sys.argv[1], timeout=3).read().decode()
+opener = urllib.request.build_opener(urllib.request.ProxyHandler({}))  # never an http_proxy
+body = opener.open(sys.argv[1], timeout=3).read().decode()
 line = [l for l in body.splitlines() if l.startswith("cluster: ")]
 sys.exit(0 if line and json.loads(line[0][len("cluster: "):]).get("instance") == sys.argv[2] else 1)
 EOF
