@@ -17,11 +17,12 @@
 #
 # --check: starts it all, checks /healthz of each instance through the front (/i/carrom-N/healthz
 # answered by carrom-N), round robin (three requests to /healthz answered by three instances) and
-# the page (GET /),
-# plays one short bot match through the front (both bots at ws://HOST:FRONT/i/carrom-2/, the
-# server at --time-scale 8), checks the match is stored finished in PostgreSQL, stops everything
-# and exits 0, or 1 with the reason (77: haproxy or PostgreSQL is not installed). Bounded: every
-# wait has a deadline, the bots run under timeout; tests/deploy/deploy.cmake runs it with ctest.
+# the page (GET /); plays one short bot match through the front (both bots at
+# ws://HOST:FRONT/i/carrom-2/, the servers at --time-scale 8) and checks it is stored finished in
+# PostgreSQL; stops carrom-1 (SIGTERM, exit 0) and checks its route then reaches another
+# instance; stops everything and exits 0, or 1 with the reason (77: haproxy or PostgreSQL is not
+# installed). Bounded: every wait has a deadline, the bots run under timeout;
+# tests/deploy/deploy.cmake runs it with ctest.
 #
 # usage: scripts/cluster.sh [--check] [--server PATH] [--bot PATH] [--port N] [--host ADDR]
 #                           [--public-host NAME]
@@ -50,7 +51,7 @@ while [[ $# -gt 0 ]]; do
         --port) front_port=$2; shift 2 ;;
         --host) front_host=$2; shift 2 ;;
         --public-host) public_host=$2; shift 2 ;;
-        -h|--help) sed -n '2,36p' "$0"; exit 0 ;;
+        -h|--help) sed -n '2,35p' "$0"; exit 0 ;;
         *) echo "cluster.sh: unknown argument $1 (--help lists them)" >&2; exit 2 ;;
     esac
 done
@@ -277,8 +278,19 @@ strokes=$(sql "$(database_of 2)" "SELECT count(*) FROM entries WHERE type = 'str
 echo "cluster.sh: match $code through $url: scores $(bot_pair_field "$work/creator.json" scores)," \
     "$strokes strokes stored finished in PostgreSQL ($(database_of 2))"
 
-# The instances stop cleanly on SIGTERM.
-for i in 0 1 2; do
+# The instances stop cleanly on SIGTERM; carrom-1's route, once it is gone, reaches another one.
+kill -TERM "${pids[0]}"
+wait "${pids[0]}" || fail "carrom-1 did not exit 0 on SIGTERM: $(tail -n 5 "$work/carrom-1.log")"
+answer=""
+for _ in $(seq 1 50); do
+    answer=$(get /i/carrom-1/healthz)
+    [[ $answer == "200 carrom-2" || $answer == "200 carrom-3" ]] && break
+    sleep 0.1
+done
+[[ $answer == "200 carrom-2" || $answer == "200 carrom-3" ]] ||
+    fail "/i/carrom-1/healthz with carrom-1 stopped answered '$answer', not another instance's 200"
+echo "cluster.sh: with carrom-1 stopped, its route reaches ${answer#200 }"
+for i in 1 2; do
     kill -TERM "${pids[$i]}"
     wait "${pids[$i]}" || fail "carrom-$((i + 1)) did not exit 0 on SIGTERM: $(tail -n 5 "$work/carrom-$((i + 1)).log")"
 done
