@@ -12,6 +12,9 @@ packages=(
     libcli11-dev libspdlog-dev libsqlite3-dev libsqlitecpp-dev libutf8proc-dev libpqxx-dev
     sqlite3  # web.ratings_page writes its players' ratings into a store with it
     postgresql
+    # The front of a cluster (docker/haproxy.cfg, scripts/cluster.sh); YAML for the deployment
+    # files' test (tests/deploy).
+    haproxy python3-yaml
     libssl-dev ca-certificates openssl libnss3-tools
     xvfb xauth fonts-dejavu-core
     python3 python3-matplotlib

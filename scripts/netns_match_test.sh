@@ -11,6 +11,7 @@
 #        CARROM_NETNS_TARGET (default 30) CARROM_NETNS_TIMEOUT seconds (default 150)
 # exit:  0 the match was played and checked; 1 anything else, with the reason on stderr.
 set -euo pipefail
+. "$(dirname "$0")/lib/bot_pair.sh"
 
 server_bin=${1:-}
 bot_bin=${2:-}
@@ -77,13 +78,7 @@ ip -n "$ns_bots" link set "$veth_bots" up
 ip netns exec "$ns_server" timeout "$limit" "$server_bin" --host "$server_ip" --port 0 \
     --shot-clock 0 --data none --log-level warn > "$work/server.out" 2> "$work/server.err" &
 server_pid=$!
-port=""
-for _ in $(seq 1 100); do
-    port=$(sed -n "s/^listening on $server_ip:\([0-9]*\)$/\1/p" "$work/server.out")
-    [[ -n "$port" ]] && break
-    kill -0 "$server_pid" 2> /dev/null || break
-    sleep 0.1
-done
+port=$(wait_for_output "$work/server.out" "s/^listening on $server_ip:\([0-9]*\)$/\1/p" "$server_pid")
 [[ -n "$port" ]] || fail "the server did not start: $(cat "$work/server.err")"
 url="ws://$server_ip:$port"
 
@@ -92,13 +87,7 @@ ip netns exec "$ns_bots" timeout "$limit" "$bot_bin" --url "$url" --name creator
     --rule-set "$rule_set" --target-points "$target" --boards 1 --shot-clock 0 \
     --strategy sampling --seed 1 --timeout "$limit" > "$work/creator.json" 2> "$work/creator.err" &
 creator_pid=$!
-code=""
-for _ in $(seq 1 100); do
-    code=$(sed -n 's/^room \([A-Z0-9]\{6\}\)$/\1/p' "$work/creator.err" | head -n 1)
-    [[ -n "$code" ]] && break
-    kill -0 "$creator_pid" 2> /dev/null || break
-    sleep 0.1
-done
+code=$(bot_pair_room_code "$work" "$creator_pid")
 [[ -n "$code" ]] || fail "the first bot got no room: $(cat "$work/creator.out" "$work/creator.err" 2> /dev/null)"
 ip netns exec "$ns_bots" timeout "$limit" "$bot_bin" --url "$url" --name joiner --join "$code" \
     --strategy sampling --seed 2 --timeout "$limit" > "$work/joiner.json" 2> "$work/joiner.err" ||
@@ -106,15 +95,11 @@ ip netns exec "$ns_bots" timeout "$limit" "$bot_bin" --url "$url" --name joiner 
 wait "$creator_pid" || fail "the first bot failed: $(cat "$work/creator.json" "$work/creator.err")"
 
 # Both played the same game to its end and agree on the score.
-field() { # field FILE NAME: a top-level JSON field, compact
-    python3 -c 'import json,sys; print(json.dumps(json.load(open(sys.argv[1]))[sys.argv[2]]))' "$1" "$2"
-}
+bot_pair_check "$work"
+field() { bot_pair_field "$@"; }
 for bot in creator joiner; do
-    [[ $(field "$work/$bot.json" ok) == true ]] || fail "$bot: $(cat "$work/$bot.json")"
     [[ $(field "$work/$bot.json" games) == 1 ]] || fail "$bot played no whole game"
 done
-[[ "$(field "$work/creator.json" scores)" == "$(field "$work/joiner.json" scores)" ]] ||
-    fail "the bots disagree on the score: $(cat "$work/creator.json" "$work/joiner.json")"
 [[ $(field "$work/creator.json" room) == "\"$code\"" ]] || fail "the bots were in different rooms"
 
 # The traffic went through the veth (more than a match's worth of snapshots).
