@@ -116,7 +116,8 @@ void HttpSession::respond(const Request& request) {
             return;
         } else if (target == "/healthz") {
             // 200 "ok", 200 "degraded: ..." while match store writes fail (matches go on in
-            // memory), 503 "stopping" during shutdown; with TLS, a second line "tls: {...}".
+            // memory), 503 "stopping" during shutdown; in cluster mode a line "cluster: {...}";
+            // with TLS, a line "tls: {...}".
             std::optional<store::StoreHealth> health;
             if (core_.store) {
                 health = core_.store->health();
@@ -133,6 +134,9 @@ void HttpSession::respond(const Request& request) {
             if (health) { // which backend (sqlite, postgresql), for operators and probes
                 response->set("Carrom-Store", health->backend);
             }
+            if (core_.store && core_.store->cluster() != nullptr && !core_.stopping) {
+                response->body() += cluster_health_line(core_.store->cluster()->status());
+            }
             if (core_.tls && !core_.stopping) { // the certificate in use, the last reload
                 response->body() += "tls: " + core_.tls->health_json() + "\n";
             }
@@ -145,6 +149,9 @@ void HttpSession::respond(const Request& request) {
             }
             response->body() = core_.metrics.prometheus_text() +
                                store_prometheus_text(health ? &*health : nullptr);
+            if (core_.store && core_.store->cluster() != nullptr) {
+                response->body() += cluster_prometheus_text(core_.store->cluster()->status());
+            }
         }
     } else {
         response->result(http::status::not_found);

@@ -7,6 +7,8 @@
 #include "tls_context.hpp"
 #include "ws_session.hpp"
 
+#include "store/cluster.hpp"
+
 #include <boost/asio/executor_work_guard.hpp>
 #include <boost/asio/signal_set.hpp>
 #include <spdlog/spdlog.h>
@@ -68,6 +70,17 @@ void Server::start() {
         // Before the I/O threads run: no hello can come before the recovered rooms exist.
         const int recovered = impl_->core.restore_matches();
         spdlog::info("recovered {} matches", recovered);
+        if (store::Cluster* cluster = impl_->core.store->cluster()) {
+            // Lease renewals, ownership checks and takeovers, on the cluster's own thread.
+            auto& core = impl_->core;
+            cluster->start(store::ClusterHandlers{
+                [&core](std::vector<store::RecoveredMatch> matches) {
+                    core.take_over(std::move(matches));
+                },
+                [&core](const store::MatchId& match, const std::string& room_code) {
+                    core.match_lost(match, room_code);
+                }});
+        }
     }
     impl_->work.emplace(impl_->core.ioc.get_executor());
     const int count = std::max(1, impl_->core.settings.threads);
@@ -83,6 +96,9 @@ void Server::shutdown() {
     impl_->stopped = true;
     auto& core = impl_->core;
     core.stopping = true;
+    if (core.store && core.store->cluster()) {
+        core.store->cluster()->stop(); // no takeover from now on
+    }
     if (impl_->listener) {
         impl_->listener->stop();
     }

@@ -31,7 +31,7 @@ std::string query(const std::string& database, const std::string& sql) {
     return ran.out;
 }
 
-TEST(PostgresStoreOpen, ANewDatabaseGetsTheSchemaWithTheReservedClusterColumns) {
+TEST(PostgresStoreOpen, ANewDatabaseGetsTheSchemaWithTheClusterColumnsAndInstances) {
     auto& server = test::postgres_server();
     const std::string database = server.create_database();
     {
@@ -41,10 +41,10 @@ TEST(PostgresStoreOpen, ANewDatabaseGetsTheSchemaWithTheReservedClusterColumns) 
         ASSERT_TRUE(opened.store->flush(test::kFlush));
     }
     EXPECT_EQ(query(database, "SELECT application, version FROM carrom_schema"),
-              "carrom-match-store|1\n");
+              "carrom-match-store|2\n");
     EXPECT_EQ(query(database, "SELECT table_name FROM information_schema.tables WHERE "
                               "table_schema = 'public' ORDER BY table_name"),
-              "carrom_schema\nentries\nmatches\nplayers\nseat_tokens\n");
+              "carrom_schema\nentries\ninstances\nmatches\nplayers\nseat_tokens\n");
     EXPECT_EQ(query(database, "SELECT id, owner_instance IS NULL, owner_epoch FROM matches"),
               "m1|t|0\n");
 }

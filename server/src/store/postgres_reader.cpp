@@ -13,6 +13,8 @@ namespace {
 
 using ReadTransaction = pqxx::transaction<pqxx::repeatable_read, pqxx::read_only>;
 
+} // namespace
+
 std::optional<proto::MatchJournal> read_journal(pqxx::transaction_base& t, const MatchId& match) {
     const pqxx::result head = t.exec_params("SELECT head FROM matches WHERE id = $1", match);
     if (head.empty()) {
@@ -44,7 +46,11 @@ std::vector<std::optional<TokenHash>> read_tokens(pqxx::transaction_base& t, con
     return out;
 }
 
-} // namespace
+RecoveredMatch read_recovered(pqxx::transaction_base& t, const MatchId& match) {
+    return stored::recover(
+        match, [&] { return read_journal(t, match); },
+        [&](int seats) { return read_tokens(t, match, seats); });
+}
 
 PostgresReader::PostgresReader(std::string url, std::string shown)
     : url_(std::move(url)), shown_(std::move(shown)), connection_(connect(url_)) {}
@@ -77,10 +83,7 @@ Loaded<std::vector<RecoveredMatch>> PostgresReader::load_unfinished() {
         std::vector<RecoveredMatch> out;
         for (const auto& row : t.exec("SELECT id FROM matches WHERE finished_ms IS NULL "
                                       "ORDER BY created_ms, id")) {
-            const MatchId id = row[0].as<std::string>();
-            out.push_back(stored::recover(
-                id, [&] { return read_journal(t, id); },
-                [&](int seats) { return read_tokens(t, id, seats); }));
+            out.push_back(read_recovered(t, row[0].as<std::string>()));
         }
         return out;
     });
