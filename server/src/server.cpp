@@ -77,8 +77,11 @@ void Server::start() {
                 [&core](std::vector<store::RecoveredMatch> matches) {
                     core.take_over(std::move(matches));
                 },
-                [&core](const store::MatchId& match, const std::string& room_code) {
-                    core.match_lost(match, room_code);
+                // Also from the store's writer thread, which may outlive the server: through the
+                // gate that Server::shutdown closes.
+                [&core, gate = core.confirmations](const store::MatchId& match,
+                                                   const std::string& room_code) {
+                    gate->pass([&] { core.match_lost(match, room_code); });
                 }});
         }
     }
