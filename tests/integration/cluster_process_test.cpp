@@ -18,6 +18,7 @@
 #include <algorithm>
 
 #include <thread>
+#include <vector>
 
 namespace carrom::integration {
 namespace {
@@ -31,9 +32,20 @@ std::unique_ptr<test_support::ServerProcess> start_instance(const std::string& d
     test_support::ServerProcess::Options options;
     options.program = CARROM_SERVER_PATH;
     options.data = data;
-    options.args = {"--time-scale", "25",   "--grace",       "20",
-                    "--log-level",  "info", "--instance-id", id,
-                    "--lease",      "2",    "--public-url",  "ws://" + id + ".cluster.test:7777"};
+    options.args = {"--time-scale",
+                    "25",
+                    "--grace",
+                    "20",
+                    "--log-level",
+                    "info",
+                    "--instance-id",
+                    id,
+                    "--lease",
+                    "2",
+                    "--public-url",
+                    "ws://" + id + ".cluster.test:7777",
+                    "--max-connections-per-address",
+                    "1000"};
     return std::make_unique<test_support::ServerProcess>(options);
 }
 
@@ -213,6 +225,63 @@ TEST_F(ClusterProcess, AKilledOwnersMatchIsTakenOverAndTheBotsFinishOnTheOtherIn
 
 TEST_F(ClusterProcess, AFrozenOwnerWakesToAMatchTakenOverWritesNothingAndClosesItsSockets) {
     take_over(url, true);
+}
+
+// Twenty matches on a, a killed while they play: b claims all twenty in one round, restores
+// them, and every pair resumes on b and finishes.
+TEST_F(ClusterProcess, TwentyMatchesOfAKilledOwnerAreAllTakenOverAndFinish) {
+    auto a = start_instance(url, "a");
+    auto b = start_instance(url, "b");
+    ASSERT_NE(a->port(), 0) << a->log();
+    ASSERT_NE(b->port(), 0) << b->log();
+    constexpr int kMatches = 20;
+    std::vector<std::unique_ptr<Pair>> pairs;
+    for (int i = 0; i < kMatches; ++i) {
+        pairs.push_back(std::make_unique<Pair>(a->url(), static_cast<std::uint64_t>(200 + i)));
+        ASSERT_FALSE(pairs.back()->creator->summary().room_code.empty());
+    }
+    const auto run_all = [&](bool to_the_end, std::chrono::milliseconds timeout) {
+        std::vector<std::thread> runs;
+        for (auto& pair : pairs) {
+            runs.emplace_back([p = pair.get(), to_the_end, timeout] {
+                p->run([p, to_the_end] { return !to_the_end && p->shots >= 2; }, timeout);
+            });
+        }
+        for (auto& run : runs) {
+            run.join();
+        }
+    };
+    run_all(false, 15s);
+    EXPECT_EQ(metric_value(*a, "carrom_cluster_matches_owned"), kMatches);
+    a->kill9();
+    const auto killed_at = Clock::now();
+    for (auto& pair : pairs) {
+        pair->move_to(b->url());
+    }
+    // Every match running on b: the twentieth "taken over: match" line of b.
+    std::optional<std::string> last;
+    while (Clock::now() < killed_at + 10s) {
+        const std::string log = b->log_of_this_start();
+        int count = 0;
+        for (auto at = log.find("taken over: match"); at != std::string::npos;
+             at = log.find("taken over: match", at + 1)) {
+            ++count;
+        }
+        if (count == kMatches) {
+            last = log;
+            break;
+        }
+        std::this_thread::sleep_for(20ms);
+    }
+    ASSERT_TRUE(last) << b->log();
+    std::fprintf(stderr, "%d matches running on b %.2f s after the kill\n", kMatches,
+                 std::chrono::duration<double>(Clock::now() - killed_at).count());
+    run_all(true, 40s);
+    for (const auto& pair : pairs) {
+        pair->expect_finished();
+    }
+    EXPECT_EQ(metric_value(*b, "carrom_cluster_takeovers_total"), kMatches);
+    EXPECT_GT(expect_finished_journals_clean(*b, kMatches), 3 * kMatches);
 }
 
 } // namespace
