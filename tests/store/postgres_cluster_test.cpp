@@ -37,7 +37,7 @@ struct LostLog {
     }
 };
 
-class PostgresCluster : public ::testing::Test {
+class PostgresClusterStore : public ::testing::Test {
 protected:
     std::unique_ptr<PostgresMatchStore> open(const std::string& id,
                                              std::chrono::milliseconds lease = 60s) {
@@ -65,7 +65,7 @@ protected:
 
 const proto::JournalEntry kEntry{1, proto::SeatLeftEntry{0}};
 
-TEST_F(PostgresCluster, AMatchIsCreatedOwnedByItsInstanceAtEpochZero) {
+TEST_F(PostgresClusterStore, AMatchIsCreatedOwnedByItsInstanceAtEpochZero) {
     auto a = open("a");
     a->create(test::created("m1"));
     a->append("m1", 0, kEntry);
@@ -76,7 +76,7 @@ TEST_F(PostgresCluster, AMatchIsCreatedOwnedByItsInstanceAtEpochZero) {
               "a|ws://a:7777|t\n");
 }
 
-TEST_F(PostgresCluster, AWriteToAMatchAnotherInstanceClaimedIsRefusedAndTheMatchReportedLost) {
+TEST_F(PostgresClusterStore, AWriteToAMatchAnotherInstanceClaimedIsRefusedAndTheMatchReportedLost) {
     auto a = open("a");
     LostLog lost;
     a->cluster()->start(lost.handlers());
@@ -111,7 +111,7 @@ TEST_F(PostgresCluster, AWriteToAMatchAnotherInstanceClaimedIsRefusedAndTheMatch
     EXPECT_FALSE(health.degraded);
 }
 
-TEST_F(PostgresCluster, AnExpiredOwnersMatchesAreClaimedOnceWithTheirJournals) {
+TEST_F(PostgresClusterStore, AnExpiredOwnersMatchesAreClaimedOnceWithTheirJournals) {
     auto a = open("a");
     a->create(test::created("m1"));
     a->append("m1", 0, kEntry);
@@ -141,7 +141,7 @@ TEST_F(PostgresCluster, AnExpiredOwnersMatchesAreClaimedOnceWithTheirJournals) {
     EXPECT_EQ(pg_query(database, "SELECT seq, time_ms FROM entries ORDER BY seq"), "0|1\n1|1\n");
 }
 
-TEST_F(PostgresCluster, AnInstanceOfTheSameIdClaimsItsOwnMatchesAtItsStart) {
+TEST_F(PostgresClusterStore, AnInstanceOfTheSameIdClaimsItsOwnMatchesAtItsStart) {
     {
         auto a = open("a");
         a->create(test::created("m1"));
@@ -156,7 +156,7 @@ TEST_F(PostgresCluster, AnInstanceOfTheSameIdClaimsItsOwnMatchesAtItsStart) {
     EXPECT_EQ(again->cluster()->status().takeovers_total, 0U); // its own: no takeover
 }
 
-TEST_F(PostgresCluster, ASecondLiveStoreOfTheSameIdIsRefused) {
+TEST_F(PostgresClusterStore, ASecondLiveStoreOfTheSameIdIsRefused) {
     auto a = open("a");
     postgres::ClusterOptions options;
     options.instance_id = "a";
