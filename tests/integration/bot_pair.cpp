@@ -88,6 +88,21 @@ void Pair::expect_finished(int resumes) const {
     }
 }
 
+test_support::ServerProcess::Options bot_server_options(const std::string& data) {
+    test_support::ServerProcess::Options options;
+    options.program = CARROM_SERVER_PATH;
+    options.data = data;
+    options.args = {"--time-scale",
+                    "25",
+                    "--grace",
+                    "20",
+                    "--log-level",
+                    "info",
+                    "--max-connections-per-address",
+                    "1000"};
+    return options;
+}
+
 int expect_finished_journals_clean(const test_support::ServerProcess& server, std::size_t count) {
     const auto json = nlohmann::json::parse(server.get("/matches?player=creator&limit=100").body);
     const auto& matches = json["matches"];

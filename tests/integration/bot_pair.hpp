@@ -43,6 +43,10 @@ private:
     std::string url_;
 };
 
+// carrom-server's options for bot pairs on data: playback 25 times faster, a 20 s grace period,
+// info logs, 1,000 connections per address.
+test_support::ServerProcess::Options bot_server_options(const std::string& data);
+
 // Every match the creator played on the server: finished, and its journal replays clean with
 // consecutive turns. Returns the strokes.
 int expect_finished_journals_clean(const test_support::ServerProcess& server, std::size_t count);

@@ -29,23 +29,9 @@ using Clock = std::chrono::steady_clock;
 // An instance of the cluster on data, with a 2 s lease (renewed and scanned every 0.67 s).
 std::unique_ptr<test_support::ServerProcess> start_instance(const std::string& data,
                                                             const std::string& id) {
-    test_support::ServerProcess::Options options;
-    options.program = CARROM_SERVER_PATH;
-    options.data = data;
-    options.args = {"--time-scale",
-                    "25",
-                    "--grace",
-                    "20",
-                    "--log-level",
-                    "info",
-                    "--instance-id",
-                    id,
-                    "--lease",
-                    "2",
-                    "--public-url",
-                    "ws://" + id + ".cluster.test:7777",
-                    "--max-connections-per-address",
-                    "1000"};
+    test_support::ServerProcess::Options options = bot_server_options(data);
+    options.args.insert(options.args.end(), {"--instance-id", id, "--lease", "2", "--public-url",
+                                             "ws://" + id + ".cluster.test:7777"});
     return std::make_unique<test_support::ServerProcess>(options);
 }
 

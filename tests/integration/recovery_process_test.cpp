@@ -38,17 +38,7 @@ public:
 
 // carrom-server --data on a port (0: any), logging at info.
 std::unique_ptr<test_support::ServerProcess> start_server(const std::string& data) {
-    test_support::ServerProcess::Options options;
-    options.program = CARROM_SERVER_PATH;
-    options.data = data;
-    options.args = {"--time-scale",
-                    "25",
-                    "--grace",
-                    "20",
-                    "--log-level",
-                    "info",
-                    "--max-connections-per-address",
-                    "1000"};
+    test_support::ServerProcess::Options options = bot_server_options(data);
     if (data.rfind("postgresql://", 0) == 0) { // cluster mode, one instance of a fixed id
         options.args.insert(options.args.end(),
                             {"--instance-id", "recovery", "--public-url", "ws://127.0.0.1:7777"});

@@ -12,45 +12,43 @@ namespace carrom::store {
 
 PostgresMatchStore::Opened PostgresMatchStore::open(const std::string& url, StoreOptions options,
                                                     bool hold_lock) {
-    Opened out;
-    if ((out.error = postgres::check_url(url))) {
-        return out;
-    }
-    const std::string shown = postgres::shown_url(url);
-    std::unique_ptr<PostgresMatchStore> store(new PostgresMatchStore(shown, std::move(options)));
-    store->writer_ = std::make_unique<postgres::PostgresWriter>(url, shown, hold_lock);
-    if ((out.error = store->writer_->open())) {
-        return out;
-    }
-    return finish_open(std::move(store), url);
+    return open_with(
+        url, std::move(options), [&](PostgresMatchStore& store) -> std::optional<StoreError> {
+            store.writer_ =
+                std::make_unique<postgres::PostgresWriter>(url, store.shown_, hold_lock);
+            return store.writer_->open();
+        });
 }
 
 PostgresMatchStore::Opened PostgresMatchStore::open_cluster(const std::string& url,
                                                             postgres::ClusterOptions cluster,
                                                             StoreOptions options) {
+    return open_with(
+        url, std::move(options), [&](PostgresMatchStore& store) -> std::optional<StoreError> {
+            auto ownership = std::make_shared<MatchOwnership>();
+            store.writer_ = std::make_unique<postgres::PostgresWriter>(
+                url, store.shown_, cluster.instance_id, ownership);
+            if (auto e = store.writer_->open()) { // the schema first: `instances` is in it
+                return e;
+            }
+            store.cluster_ = std::make_unique<postgres::PostgresCluster>(
+                url, store.shown_, std::move(cluster), ownership);
+            return store.cluster_->open();
+        });
+}
+
+PostgresMatchStore::Opened PostgresMatchStore::open_with(
+    const std::string& url, StoreOptions options,
+    const std::function<std::optional<StoreError>(PostgresMatchStore&)>& open_writer) {
     Opened out;
     if ((out.error = postgres::check_url(url))) {
         return out;
     }
-    const std::string shown = postgres::shown_url(url);
-    std::unique_ptr<PostgresMatchStore> store(new PostgresMatchStore(shown, std::move(options)));
-    auto ownership = std::make_shared<MatchOwnership>();
-    store->writer_ =
-        std::make_unique<postgres::PostgresWriter>(url, shown, cluster.instance_id, ownership);
-    if ((out.error = store->writer_->open())) { // the schema first: `instances` is in it
+    std::unique_ptr<PostgresMatchStore> store(
+        new PostgresMatchStore(postgres::shown_url(url), std::move(options)));
+    if ((out.error = open_writer(*store))) {
         return out;
     }
-    store->cluster_ =
-        std::make_unique<postgres::PostgresCluster>(url, shown, std::move(cluster), ownership);
-    if ((out.error = store->cluster_->open())) {
-        return out;
-    }
-    return finish_open(std::move(store), url);
-}
-
-PostgresMatchStore::Opened
-PostgresMatchStore::finish_open(std::unique_ptr<PostgresMatchStore> store, const std::string& url) {
-    Opened out;
     try {
         store->reader_ = std::make_unique<postgres::PostgresReader>(url, store->shown_);
     } catch (const std::exception& e) {

@@ -30,6 +30,7 @@
 #include "store/queued_match_store.hpp"
 #include "store/store_options.hpp"
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -72,8 +73,11 @@ public:
 
 private:
     PostgresMatchStore(std::string shown, StoreOptions options);
-    // The reader and the writer thread, once writer_ is open.
-    static Opened finish_open(std::unique_ptr<PostgresMatchStore> store, const std::string& url);
+    // Checks the URL, makes the store, opens its writer (and cluster) with open_writer, then the
+    // reader, and starts the writer thread.
+    static Opened
+    open_with(const std::string& url, StoreOptions options,
+              const std::function<std::optional<StoreError>(PostgresMatchStore&)>& open_writer);
 
     std::string shown_;
     StoreOptions options_;
