@@ -213,6 +213,42 @@ TEST_F(ClusterProcess, AFrozenOwnerWakesToAMatchTakenOverWritesNothingAndClosesI
     take_over(url, true);
 }
 
+// PostgreSQL stopped longer than the lease while a match plays on a, then started again: every
+// lease lapsed meanwhile, and the instances renew theirs before any claims, so the match stays
+// on a (no takeover, no connection closed) and finishes with every stroke written once.
+TEST_F(ClusterProcess, ADatabaseOutageLongerThanTheLeaseMovesNoMatch) {
+    // b first: its rounds come just before a's, so b is back before a renews.
+    auto b = start_instance(url, "b");
+    auto a = start_instance(url, "a");
+    ASSERT_NE(a->port(), 0) << a->log();
+    ASSERT_NE(b->port(), 0) << b->log();
+    Pair pair(a->url(), 13);
+    pair.run([&] { return pair.shots >= 3; }, 20s);
+    ASSERT_GE(pair.shots, 3);
+    ASSERT_TRUE(postgres.stop());
+    pair.run([] { return false; }, 3s); // strokes go on in memory, their writes retried
+    ASSERT_TRUE(postgres.start());
+    EXPECT_TRUE(a->wait_log("cluster: lease renewed again", Clock::now() + 10s)) << a->log();
+    EXPECT_TRUE(b->wait_log("cluster: lease renewed again", Clock::now() + 10s)) << b->log();
+    pair.run([] { return false; }, 30s);
+    pair.expect_finished(0);
+    ASSERT_TRUE(a->get("/healthz").body.find("\"lease_ok\":true") != std::string::npos);
+    EXPECT_EQ(metric_value(*b, "carrom_cluster_takeovers_total"), 0);
+    EXPECT_EQ(metric_value(*a, "carrom_cluster_matches_lost_total"), 0);
+    // The writes held in memory reach the database once a retry finds it back (backoff up to
+    // 5 s); the read connection broke with the restart and reconnects at a later read.
+    const auto deadline = Clock::now() + 15s;
+    while (Clock::now() < deadline && (metric_value(*a, "carrom_store_pending") != 0 ||
+                                       a->get("/matches?player=creator&limit=1").status != 200)) {
+        std::this_thread::sleep_for(100ms);
+    }
+    EXPECT_EQ(metric_value(*a, "carrom_store_pending"), 0);
+    EXPECT_GT(expect_finished_journals_clean(*a, 1), 3);
+    if (::testing::Test::HasFailure()) {
+        std::fprintf(stderr, "a:\n%s\nb:\n%s", a->log().c_str(), b->log().c_str());
+    }
+}
+
 // Twenty matches on a, a killed while they play: b claims all twenty in one round, restores
 // them, and every pair resumes on b and finishes.
 TEST_F(ClusterProcess, TwentyMatchesOfAKilledOwnerAreAllTakenOverAndFinish) {

@@ -187,7 +187,7 @@ Loaded<std::vector<RecoveredMatch>> PostgresCluster::claim(bool mine_too) {
     return out;
 }
 
-void PostgresCluster::renew() {
+bool PostgresCluster::renew() {
     pqxx::work t(connection());
     const pqxx::result old =
         t.exec_params("SELECT lease_expires < now() FROM instances WHERE id = $1 FOR UPDATE",
@@ -201,12 +201,14 @@ void PostgresCluster::renew() {
         static_cast<std::int64_t>(options_.lease.count()));
     t.commit();
     lease_expires_ms_ = r[0][0].as<std::int64_t>();
+    lease_ok_ = true;
     if (old.empty() || old[0][0].as<bool>()) {
         spdlog::warn("cluster: the lease of instance {} had expired; renewed (its matches that "
                      "another instance claimed meanwhile stop here)",
                      options_.instance_id);
+        return true;
     }
-    lease_ok_ = true;
+    return false;
 }
 
 void PostgresCluster::check_owned() {
@@ -246,8 +248,20 @@ void PostgresCluster::check_owned() {
 
 void PostgresCluster::round() {
     try {
-        renew();
+        const auto now = std::chrono::steady_clock::now();
+        if (renew() || failing_) {
+            // Back from a freeze or an outage, in which every lease may have lapsed: the other
+            // instances get a lease's time to renew theirs before this one claims any match.
+            claims_from_ = now + options_.lease;
+        }
+        if (failing_) {
+            spdlog::info("cluster: lease renewed again");
+            failing_ = false;
+        }
         check_owned();
+        if (now < claims_from_) {
+            return;
+        }
         auto claimed = claim(false);
         if (!claimed.ok()) {
             throw std::runtime_error(claimed.error->message);
@@ -255,17 +269,13 @@ void PostgresCluster::round() {
         if (!claimed.value.empty() && handlers_.on_claimed) {
             handlers_.on_claimed(std::move(claimed.value));
         }
-        if (failing_) {
-            spdlog::info("cluster: lease renewed again");
-            failing_ = false;
-        }
     } catch (const std::exception& e) {
         if (dynamic_cast<const pqxx::broken_connection*>(&e) != nullptr) {
             connection_.reset();
         }
         lease_ok_ = false;
         if (!failing_) {
-            spdlog::error("cluster: cannot renew the lease of instance {}: {}",
+            spdlog::error("cluster: instance {} cannot renew its lease or claim matches: {}",
                           options_.instance_id, e.what());
             failing_ = true;
         }

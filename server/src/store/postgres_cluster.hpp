@@ -76,7 +76,8 @@ private:
     void run();
     // One round of the cluster thread: renew, check, claim. Logs its failures.
     void round();
-    void renew();
+    // True when the lease had expired (or the row was gone) before this renewal.
+    bool renew();
     void check_owned();
     pqxx::connection& connection(); // made again (and the instance lock retaken) after it broke
 
@@ -91,7 +92,11 @@ private:
     std::atomic<std::int64_t> lease_expires_ms_{0};
     std::atomic<std::uint64_t> takeovers_total_{0};
     bool registered_ = false; // open() succeeded
-    bool failing_ = false;    // cluster thread: the last round failed (one log line per outage)
+    bool failing_ = false;
+    // Cluster thread: no claim before this (steady clock), after this instance's lease lapsed or
+    // a round failed.
+    std::chrono::steady_clock::time_point
+        claims_from_{}; // cluster thread: the last round failed (one log line per outage)
 
     std::mutex mutex_;
     std::condition_variable wake_;
