@@ -157,6 +157,7 @@ PostgresWriter::write_items(std::span<WriteItem> items, bool one_by_one,
         }
         std::optional<std::string> refusal;
         bool lost = false;
+        const std::size_t finished_before = finished_.size();
         t.exec("SAVEPOINT item");
         try {
             lost = !write_one(t, items[i]);
@@ -167,6 +168,12 @@ PostgresWriter::write_items(std::span<WriteItem> items, bool one_by_one,
             const std::string what = e.what();
             refusal = what.substr(0, what.find('\n')); // one line
             t.exec("ROLLBACK TO SAVEPOINT item");
+            // The rollback released the row locks the item's ownership check took: check again.
+            checked_.clear();
+            finished_.resize(finished_before);
+            if (const auto* create = std::get_if<CreateItem>(&items[i].what)) {
+                created_.erase(create->created.match_id);
+            }
         }
         t.exec("RELEASE SAVEPOINT item");
         if (refusal) {
