@@ -183,7 +183,7 @@ void take_over(const std::string& url, bool freeze) {
     const auto taken = b->wait_log("taken over from instance a", Clock::now() + 6s);
     ASSERT_TRUE(taken) << b->log();
     const double seconds = std::chrono::duration<double>(Clock::now() - stopped_at).count();
-    EXPECT_LT(seconds, 2.0 + 0.67 + 1.0); // lease + scan interval + margin
+    EXPECT_LT(seconds, 2.0 + 0.67 + 2.0); // lease + scan interval + margin
     std::fprintf(stderr, "taken over %.2f s after the %s\n", seconds, freeze ? "SIGSTOP" : "kill");
     if (freeze) {
         ::kill(a->process().pid(), SIGCONT);
