@@ -109,16 +109,8 @@ std::optional<StoreError> PostgresCluster::open() {
                                   shown_ + " (another live carrom-server has it)"};
         }
         pqxx::work t(*connection_);
-        const pqxx::result r = t.exec_params(
-            "INSERT INTO instances (id, public_url, lease_expires) VALUES ($1, $2, now() + " +
-                lease_interval(3) +
-                ") ON CONFLICT (id) DO UPDATE SET public_url = excluded.public_url, "
-                "lease_expires = excluded.lease_expires, started_at = now() RETURNING " +
-                unix_ms("lease_expires"),
-            options_.instance_id, options_.public_url,
-            static_cast<std::int64_t>(options_.lease.count()));
+        write_lease(t, true);
         t.commit();
-        lease_expires_ms_ = r[0][0].as<std::int64_t>();
         lease_ok_ = true;
         registered_ = true;
     } catch (const std::exception& e) {
@@ -187,20 +179,24 @@ Loaded<std::vector<RecoveredMatch>> PostgresCluster::claim(bool mine_too) {
     return out;
 }
 
+void PostgresCluster::write_lease(pqxx::transaction_base& t, bool registering) {
+    const pqxx::result r = t.exec_params(
+        "INSERT INTO instances (id, public_url, lease_expires) VALUES ($1, $2, now() + " +
+            lease_interval(3) + ") ON CONFLICT (id) DO UPDATE SET " +
+            (registering ? "public_url = excluded.public_url, started_at = now(), " : "") +
+            "lease_expires = excluded.lease_expires RETURNING " + unix_ms("lease_expires"),
+        options_.instance_id, options_.public_url,
+        static_cast<std::int64_t>(options_.lease.count()));
+    lease_expires_ms_ = r[0][0].as<std::int64_t>();
+}
+
 bool PostgresCluster::renew() {
     pqxx::work t(connection());
     const pqxx::result old =
         t.exec_params("SELECT lease_expires < now() FROM instances WHERE id = $1 FOR UPDATE",
                       options_.instance_id);
-    const pqxx::result r = t.exec_params(
-        "INSERT INTO instances (id, public_url, lease_expires) VALUES ($1, $2, now() + " +
-            lease_interval(3) +
-            ") ON CONFLICT (id) DO UPDATE SET lease_expires = excluded.lease_expires RETURNING " +
-            unix_ms("lease_expires"),
-        options_.instance_id, options_.public_url,
-        static_cast<std::int64_t>(options_.lease.count()));
+    write_lease(t, false);
     t.commit();
-    lease_expires_ms_ = r[0][0].as<std::int64_t>();
     lease_ok_ = true;
     if (old.empty() || old[0][0].as<bool>()) {
         spdlog::warn("cluster: the lease of instance {} had expired; renewed (its matches that "

@@ -13,6 +13,7 @@
 // kill -9) gets it.
 
 #include <pqxx/connection>
+#include <pqxx/transaction_base>
 
 #include "store/cluster.hpp"
 #include "store/match_ownership.hpp"
@@ -78,6 +79,9 @@ private:
     void round();
     // True when the lease had expired (or the row was gone) before this renewal.
     bool renew();
+    // The instance's row with lease_expires = now() + lease (registering: its public URL and
+    // start time too), in t; lease_expires_ms_ from it.
+    void write_lease(pqxx::transaction_base& t, bool registering);
     void check_owned();
     pqxx::connection& connection(); // made again (and the instance lock retaken) after it broke
 
