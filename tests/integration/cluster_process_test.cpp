@@ -227,6 +227,7 @@ TEST_F(ClusterProcess, ADatabaseOutageLongerThanTheLeaseMovesNoMatch) {
     ASSERT_GE(pair.shots, 3);
     ASSERT_TRUE(postgres.stop());
     pair.run([] { return false; }, 3s); // strokes go on in memory, their writes retried
+    EXPECT_EQ(a->get("/healthz").body.substr(0, 9), "degraded:");
     ASSERT_TRUE(postgres.start());
     EXPECT_TRUE(a->wait_log("cluster: lease renewed again", Clock::now() + 10s)) << a->log();
     EXPECT_TRUE(b->wait_log("cluster: lease renewed again", Clock::now() + 10s)) << b->log();
