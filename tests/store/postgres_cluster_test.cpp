@@ -83,6 +83,9 @@ TEST_F(PostgresClusterStore, AWriteToAMatchAnotherInstanceClaimedIsRefusedAndThe
     a->create(test::created("m1"));
     a->append("m1", 0, kEntry);
     ASSERT_TRUE(a->flush(test::kFlush));
+    // Instance b, live, claims the match (as PostgresCluster::claim would).
+    pg_query(database, "INSERT INTO instances (id, public_url, lease_expires) VALUES ('b', "
+                       "'ws://b:7777', now() + interval '1 hour')");
     pg_query(database, "UPDATE matches SET owner_instance = 'b', owner_epoch = owner_epoch + 1");
     std::vector<int> told;
     std::mutex told_mutex;
