@@ -102,6 +102,8 @@ std::string close_code_meaning(std::uint16_t close_code) {
         return "the seat was resumed on another connection";
     case 4003:
         return "this client read too slowly";
+    case 4004:
+        return "the match moved to another server instance";
     default:
         return "close code " + std::to_string(close_code);
     }

@@ -257,6 +257,12 @@ bool Room::abandoned() const {
 
 // --- messages ---------------------------------------------------------------------------------
 
+void Room::close_connections(int close_code, const std::string& reason) {
+    for (Peer* peer : members()) {
+        peer->close(close_code, reason);
+    }
+}
+
 std::vector<Peer*> Room::members() {
     std::vector<Peer*> out;
     for (auto& seat : seats_) {

@@ -3,6 +3,7 @@
 #include "carrom/server/server.hpp"
 #include "carrom/server/web_assets.hpp"
 #include "store/open_match_store.hpp"
+#include "store/postgres_url.hpp"
 
 #include "bot_brains.hpp"
 
@@ -10,6 +11,7 @@
 #include <spdlog/sinks/stdout_color_sinks.h>
 #include <spdlog/spdlog.h>
 
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -137,6 +139,20 @@ int main(int argc, char** argv) {
                    "Match store: the SQLite database file (created on first start), a "
                    "PostgreSQL URL (postgresql://USER@HOST[:PORT]/DB), or none")
         ->envname("CARROM_DATA");
+    carrom::store::postgres::ClusterOptions cluster;
+    double lease_s = 10.0;
+    app.add_option("--instance-id", cluster.instance_id,
+                   "With a PostgreSQL store: this instance's id in the cluster, 1-64 of "
+                   "[A-Za-z0-9._-] (default: HOSTNAME-XXXXXX, generated and logged)")
+        ->envname("CARROM_INSTANCE_ID");
+    app.add_option("--public-url", cluster.public_url,
+                   "With a PostgreSQL store (required): the ws:// or wss:// URL clients reach "
+                   "this instance at")
+        ->envname("CARROM_PUBLIC_URL");
+    app.add_option("--lease", lease_s,
+                   "With a PostgreSQL store: seconds a lease lasts (renewed every third of it); "
+                   "a dead instance's matches are taken over after it")
+        ->envname("CARROM_LEASE");
     app.add_option("--log-level", log_level, "trace, debug, info, warn, error, off")
         ->envname("CARROM_LOG_LEVEL")
         ->check(CLI::IsMember({"trace", "debug", "info", "warn", "error", "off"}));
@@ -175,7 +191,26 @@ int main(int argc, char** argv) {
             };
             spdlog::warn("test seam: match store writes fail while {} exists", fail_file);
         }
-        auto opened = carrom::store::open_match_store(data, std::move(options));
+        const bool postgres = carrom::store::postgres::is_postgres_url(data);
+        if (postgres) {
+            if (cluster.public_url.empty()) {
+                std::fprintf(stderr, "carrom-server: public_url_required: a PostgreSQL store "
+                                     "runs in cluster mode: give --public-url ws://HOST:PORT "
+                                     "(the address clients reach this instance at)\n");
+                return 2;
+            }
+            if (cluster.instance_id.empty()) {
+                cluster.instance_id = carrom::store::postgres::generate_instance_id();
+            }
+            cluster.lease = std::chrono::milliseconds(std::llround(lease_s * 1000.0));
+            if (auto bad = carrom::store::postgres::check_cluster_options(cluster)) {
+                std::fprintf(stderr, "carrom-server: %s: %s\n", bad->code.c_str(),
+                             bad->message.c_str());
+                return 2;
+            }
+        }
+        auto opened = carrom::store::open_match_store(data, std::move(options),
+                                                      postgres ? &cluster : nullptr);
         if (!opened.store) {
             std::fprintf(stderr, "carrom-server: %s: %s\n", opened.error->code.c_str(),
                          opened.error->message.c_str());
@@ -183,6 +218,10 @@ int main(int argc, char** argv) {
         }
         store = std::move(opened.store);
         spdlog::info("match store: {} ({})", opened.shown, store->health().backend);
+        if (postgres) {
+            spdlog::info("cluster: instance {} at {} (lease {} s)", cluster.instance_id,
+                         cluster.public_url, lease_s);
+        }
     } else {
         spdlog::info("no match store: matches end with the process (--data none)");
     }

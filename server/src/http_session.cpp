@@ -116,10 +116,16 @@ void HttpSession::respond(const Request& request) {
             return;
         } else if (target == "/healthz") {
             // 200 "ok", 200 "degraded: ..." while match store writes fail (matches go on in
-            // memory), 503 "stopping" during shutdown; with TLS, a second line "tls: {...}".
+            // memory), 200 "degraded: cluster lease not renewed" (cluster mode, the last lease
+            // round failed), 503 "stopping" during shutdown; in cluster mode a line "cluster:
+            // {...}"; with TLS, a line "tls: {...}".
             std::optional<store::StoreHealth> health;
             if (core_.store) {
                 health = core_.store->health();
+            }
+            std::optional<store::ClusterStatus> cluster;
+            if (core_.store && core_.store->cluster() != nullptr) {
+                cluster = core_.store->cluster()->status();
             }
             response->result(core_.stopping ? http::status::service_unavailable : http::status::ok);
             if (core_.stopping) {
@@ -127,11 +133,16 @@ void HttpSession::respond(const Request& request) {
             } else if (health && health->degraded) {
                 response->body() = "degraded: match store writes failing (" +
                                    std::to_string(health->pending) + " items waiting)\n";
+            } else if (cluster && !cluster->lease_ok) {
+                response->body() = "degraded: cluster lease not renewed\n";
             } else {
                 response->body() = "ok\n";
             }
             if (health) { // which backend (sqlite, postgresql), for operators and probes
                 response->set("Carrom-Store", health->backend);
+            }
+            if (cluster && !core_.stopping) {
+                response->body() += cluster_health_line(*cluster);
             }
             if (core_.tls && !core_.stopping) { // the certificate in use, the last reload
                 response->body() += "tls: " + core_.tls->health_json() + "\n";
@@ -145,6 +156,9 @@ void HttpSession::respond(const Request& request) {
             }
             response->body() = core_.metrics.prometheus_text() +
                                store_prometheus_text(health ? &*health : nullptr);
+            if (core_.store && core_.store->cluster() != nullptr) {
+                response->body() += cluster_prometheus_text(core_.store->cluster()->status());
+            }
         }
     } else {
         response->result(http::status::not_found);

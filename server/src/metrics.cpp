@@ -1,5 +1,7 @@
 #include "carrom/server/metrics.hpp"
 
+#include <nlohmann/json.hpp>
+
 #include <cstdio>
 #include <sstream>
 
@@ -91,6 +93,44 @@ std::string store_prometheus_text(const store::StoreHealth* health) {
             << h.backend << "\"} 1\n";
     }
     return out.str();
+}
+
+std::string cluster_prometheus_text(const store::ClusterStatus& status) {
+    std::ostringstream out;
+    const auto line = [&](const char* name, const char* type, const char* help,
+                          std::int64_t value) {
+        out << "# HELP " << name << ' ' << help << "\n# TYPE " << name << ' ' << type << '\n'
+            << name << ' ' << value << '\n';
+    };
+    // The id and URL are checked at start ([A-Za-z0-9._-], a ws:// URL without quotes).
+    out << "# HELP carrom_cluster_info This instance of the cluster.\n"
+           "# TYPE carrom_cluster_info gauge\ncarrom_cluster_info{instance=\""
+        << status.instance_id << "\",public_url=\"" << status.public_url << "\"} 1\n";
+    line("carrom_cluster_lease_ok", "gauge", "1 while the instance's last lease renewal succeeded.",
+         status.lease_ok ? 1 : 0);
+    line("carrom_cluster_lease_expires_seconds", "gauge",
+         "Unix time the lease expires at, by the database's clock.",
+         status.lease_expires_ms / 1000);
+    line("carrom_cluster_matches_owned", "gauge", "Unfinished matches this instance owns.",
+         static_cast<std::int64_t>(status.matches_owned));
+    line("carrom_cluster_takeovers_total", "counter",
+         "Matches this instance claimed from an instance whose lease expired.",
+         static_cast<std::int64_t>(status.takeovers_total));
+    line("carrom_cluster_matches_lost_total", "counter",
+         "Matches another instance claimed from this one.",
+         static_cast<std::int64_t>(status.matches_lost_total));
+    return out.str();
+}
+
+std::string cluster_health_line(const store::ClusterStatus& status) {
+    const nlohmann::json j = {{"instance", status.instance_id},
+                              {"public_url", status.public_url},
+                              {"lease_ok", status.lease_ok},
+                              {"lease_expires_ms", status.lease_expires_ms},
+                              {"matches_owned", status.matches_owned},
+                              {"takeovers_total", status.takeovers_total},
+                              {"matches_lost_total", status.matches_lost_total}};
+    return "cluster: " + j.dump() + "\n";
 }
 
 } // namespace carrom::server

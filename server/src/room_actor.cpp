@@ -29,6 +29,9 @@ void RoomActor::bind_journal() {
         gate->pass([&] {
             if (auto self = weak.lock()) {
                 asio::post(self->strand_, [self, match_id, seq] {
+                    if (self->lost_) {
+                        return; // nothing of a stroke of a lost match streams
+                    }
                     self->room_.journal_written(match_id, seq);
                     self->after();
                 });
@@ -55,6 +58,39 @@ std::optional<std::string> RoomActor::restore(const proto::MatchJournal& journal
     }
     asio::post(strand_, [self = shared_from_this()] { self->after(); });
     return std::nullopt;
+}
+
+void RoomActor::restore_on_strand(proto::MatchJournal journal,
+                                  std::vector<room::RestoredSeat> seats,
+                                  std::function<void(bool restored)> on_done) {
+    asio::post(strand_, [self = shared_from_this(), journal = std::move(journal),
+                         seats = std::move(seats), on_done = std::move(on_done)]() mutable {
+        if (auto refused = self->room_.restore(journal, std::move(seats))) {
+            spdlog::warn("match {} not taken over (left in the store): {}",
+                         journal.created.match_id, *refused);
+            self->removed_ = true;
+            self->core_.registry.remove_room(self->code_); // and the claims for its seats
+            on_done(false);
+            return;
+        }
+        on_done(true);
+        self->after();
+    });
+}
+
+void RoomActor::lose() {
+    asio::post(strand_, [self = shared_from_this()] {
+        if (self->lost_) {
+            return;
+        }
+        self->lost_ = true;
+        self->timer_.cancel();
+        self->room_.close_connections(proto::kCloseMatchMoved, "match_moved");
+        if (!self->removed_) {
+            self->removed_ = true;
+            self->core_.remove_room(self->code_);
+        }
+    });
 }
 
 void RoomActor::stop() {
@@ -84,6 +120,9 @@ void RoomActor::after() {
                 std::chrono::steady_clock::now() - queued_at);
             const Shot shot = t.brain->choose_shot(t.state, t.seat, waited);
             asio::post(self->strand_, [self, seat = t.seat, turn_number = t.turn, shot] {
+                if (self->lost_) {
+                    return;
+                }
                 const room::BotShotOutcome outcome = self->room_.bot_shoot(seat, turn_number, shot);
                 if (outcome.refused) {
                     spdlog::warn("room {}: bot shot refused: {} ({})", self->code_,
@@ -124,6 +163,9 @@ void RoomActor::schedule(std::int64_t wake_ms) {
 }
 
 void RoomActor::on_timer() {
+    if (lost_) {
+        return;
+    }
     room_.tick();
     after();
 }

@@ -14,6 +14,7 @@
 
 #include <atomic>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -32,8 +33,12 @@ public:
     const std::string& code() const { return code_; }
     // Runs f(room) on the room's strand, then reschedules the timer and handles bots and an
     // abandoned room.
+    // Nothing runs once the match is lost (lose()).
     template <class F> void post(F&& f) {
         asio::post(strand_, [self = shared_from_this(), f = std::forward<F>(f)]() mutable {
+            if (self->lost_) {
+                return;
+            }
             f(self->room_);
             self->after();
         });
@@ -43,6 +48,15 @@ public:
     // run; on success the room's timers and bot turns start on its strand. Why not, otherwise.
     std::optional<std::string> restore(const proto::MatchJournal& journal,
                                        std::vector<room::RestoredSeat> seats);
+    // A takeover while the server runs (docs/cluster.md): the same restore on the room's strand,
+    // queued before anything a client can send it (call it before the room is in the registry,
+    // or from its factory). Refused: logged, the room removed. on_done(true) once it runs.
+    void restore_on_strand(proto::MatchJournal journal, std::vector<room::RestoredSeat> seats,
+                           std::function<void(bool restored)> on_done);
+    // The match is another instance's (cluster mode): from now on the room takes nothing (no
+    // message, no stroke confirmation, no bot shot, no timer), closes its members' connections
+    // with close code 4004 match_moved and leaves the registry. Any thread.
+    void lose();
     // With a match store: the journal's write confirmations go to the room on its strand. Called
     // once, right after construction (it needs the actor's shared_ptr).
     void bind_journal();
@@ -72,6 +86,7 @@ private:
     room::Room room_;
     std::int64_t scheduled_ms_ = -1;
     bool removed_ = false;
+    bool lost_ = false; // strand only
 };
 
 } // namespace carrom::server

@@ -7,6 +7,8 @@
 #include "tls_context.hpp"
 #include "ws_session.hpp"
 
+#include "store/cluster.hpp"
+
 #include <boost/asio/executor_work_guard.hpp>
 #include <boost/asio/signal_set.hpp>
 #include <spdlog/spdlog.h>
@@ -69,6 +71,20 @@ void Server::start() {
         const int recovered = impl_->core.restore_matches();
         spdlog::info("recovered {} matches", recovered);
         impl_->core.load_identities();
+        if (store::Cluster* cluster = impl_->core.store->cluster()) {
+            // Lease renewals, ownership checks and takeovers, on the cluster's own thread.
+            auto& core = impl_->core;
+            cluster->start(store::ClusterHandlers{
+                [&core](std::vector<store::RecoveredMatch> matches) {
+                    core.take_over(std::move(matches));
+                },
+                // Also from the store's writer thread, which may outlive the server: through the
+                // gate that Server::shutdown closes.
+                [&core, gate = core.confirmations](const store::MatchId& match,
+                                                   const std::string& room_code) {
+                    gate->pass([&] { core.match_lost(match, room_code); });
+                }});
+        }
     }
     impl_->work.emplace(impl_->core.ioc.get_executor());
     const int count = std::max(1, impl_->core.settings.threads);
@@ -84,6 +100,9 @@ void Server::shutdown() {
     impl_->stopped = true;
     auto& core = impl_->core;
     core.stopping = true;
+    if (core.store && core.store->cluster()) {
+        core.store->cluster()->stop(); // no takeover from now on
+    }
     if (impl_->listener) {
         impl_->listener->stop();
     }

@@ -127,86 +127,106 @@ int ServerCore::restore_matches() {
     }
     int recovered = 0;
     for (const store::RecoveredMatch& match : loaded.value) {
-        auto refuse = [&](std::string_view why) {
-            spdlog::warn("match {} not recovered (left in the store): {}", match.id, why);
-        };
-        if (match.error || !match.journal) {
-            refuse(match.error ? match.error->message : "no journal");
-            continue;
-        }
-        const proto::MatchJournal& journal = *match.journal;
-        if (auto version = proto::check_versions(journal.created)) {
-            refuse(version->message);
-            continue;
-        }
-        const auto rule_set = wire_rule_set(journal.created.rule_set);
-        if (!rule_set) {
-            refuse("its rule set is unknown to this server");
-            continue;
-        }
-        const auto journal_seats = room::journal_seats(journal);
-        std::vector<room::RestoredSeat> seats(journal_seats.size());
-        bool bots_missing = false;
-        for (std::size_t i = 0; i < journal_seats.size(); ++i) {
-            if (journal_seats[i].bot) {
-                if (!bots) {
-                    bots_missing = true;
-                    break;
-                }
-                seats[i].bot = bots(bot_level_of_name(journal_seats[i].name));
-            }
-        }
-        if (bots_missing) {
-            refuse("it has a bot seat and this server has no bots");
-            continue;
-        }
-        room::RoomConfig config;
-        config.rule_set = *rule_set;
-        config.rules = journal.created.rules;
-        config.physics = journal.created.physics;
-        config.snapshot_hz = settings.snapshot_hz;
-        config.contact_snapshots = settings.contact_snapshots;
-        config.time_scale = settings.time_scale;
-        config.grace_s = settings.grace_s;
-        config.server_version = CARROM_SERVER_VERSION;
-        config.aim_assist = !match.rated;
-        const std::string& code = journal.created.room_code;
-        auto actor = registry.add_room(code, [&](const std::string& c) {
-            return std::make_shared<RoomActor>(*this, c, config);
-        });
-        if (!actor) {
-            refuse("room code " + code + " is taken by another recovered match");
-            continue;
-        }
-        if (match.rated) {
-            actor->set_rated();
-        }
-        actor->bind_journal();
-        // Claims for the human seats, by token hash; the room waits for those player ids.
-        std::vector<std::string> claims;
-        for (std::size_t i = 0; i < seats.size(); ++i) {
-            if (seats[i].bot) {
-                continue;
-            }
-            const auto& token = i < match.seat_tokens.size() ? match.seat_tokens[i]
-                                                             : std::optional<store::TokenHash>{};
-            if (token) {
-                claims.push_back(store::to_hex(*token));
-                seats[i].player_id = registry.add_restored_seat(claims.back(), code);
-            }
-        }
-        if (auto refused = actor->restore(journal, std::move(seats))) {
-            actor->stop();
-            registry.remove_room(code); // and the claims for its seats
-            refuse(*refused);
-            continue;
-        }
-        metrics.rooms.fetch_add(1, std::memory_order_relaxed);
-        spdlog::info("room {} recovered: match {}, {} journal entries", code, match.id,
-                     journal.entries.size());
-        ++recovered;
+        recovered += restore_match(match, false) ? 1 : 0;
     }
     return recovered;
+}
+
+void ServerCore::take_over(std::vector<store::RecoveredMatch> matches) {
+    for (const store::RecoveredMatch& match : matches) {
+        restore_match(match, true);
+    }
+}
+
+void ServerCore::match_lost(const std::string& match_id, const std::string& room_code) {
+    if (auto room = registry.find_room(room_code)) {
+        spdlog::warn("room {}: match {} is run by another instance now; its connections here "
+                     "close (4004 match_moved)",
+                     room_code, match_id);
+        room->lose();
+    }
+}
+
+bool ServerCore::restore_match(const store::RecoveredMatch& match, bool running) {
+    auto refuse = [&](std::string_view why) {
+        spdlog::warn("match {} not {} (left in the store): {}", match.id,
+                     running ? "taken over" : "recovered", why);
+        return false;
+    };
+    if (match.error || !match.journal) {
+        return refuse(match.error ? match.error->message : "no journal");
+    }
+    const proto::MatchJournal& journal = *match.journal;
+    if (auto version = proto::check_versions(journal.created)) {
+        return refuse(version->message);
+    }
+    const auto rule_set = wire_rule_set(journal.created.rule_set);
+    if (!rule_set) {
+        return refuse("its rule set is unknown to this server");
+    }
+    const auto journal_seats = room::journal_seats(journal);
+    std::vector<room::RestoredSeat> seats(journal_seats.size());
+    for (std::size_t i = 0; i < journal_seats.size(); ++i) {
+        if (journal_seats[i].bot) {
+            if (!bots) {
+                return refuse("it has a bot seat and this server has no bots");
+            }
+            seats[i].bot = bots(bot_level_of_name(journal_seats[i].name));
+        }
+    }
+    room::RoomConfig config;
+    config.rule_set = *rule_set;
+    config.rules = journal.created.rules;
+    config.physics = journal.created.physics;
+    config.snapshot_hz = settings.snapshot_hz;
+    config.contact_snapshots = settings.contact_snapshots;
+    config.time_scale = settings.time_scale;
+    config.grace_s = settings.grace_s;
+    config.server_version = CARROM_SERVER_VERSION;
+    config.aim_assist = !match.rated;
+    const std::string& code = journal.created.room_code;
+    if (registry.find_room(code)) {
+        return refuse("room code " + code + " is taken by another room here");
+    }
+    // Claims for the human seats, by token hash; the room waits for those player ids.
+    for (std::size_t i = 0; i < seats.size(); ++i) {
+        const auto& token =
+            i < match.seat_tokens.size() ? match.seat_tokens[i] : std::optional<store::TokenHash>{};
+        if (!seats[i].bot && token) {
+            seats[i].player_id = registry.add_restored_seat(store::to_hex(*token), code);
+        }
+    }
+    auto actor = registry.add_room(code, [&](const std::string& c) {
+        auto made = std::make_shared<RoomActor>(*this, c, config);
+        if (match.rated) {
+            made->set_rated(); // before bind_journal: the journal reads it
+        }
+        made->bind_journal();
+        if (running) { // queued on its strand before anything a client can send it
+            made->restore_on_strand(journal, seats, [this, id = match.id, c](bool restored) {
+                if (restored) {
+                    metrics.rooms.fetch_add(1, std::memory_order_relaxed);
+                    spdlog::info("room {} taken over: match {}", c, id);
+                }
+            });
+        }
+        return made;
+    });
+    if (!actor) {
+        return refuse("room code " + code + " is taken by another room here");
+    }
+    if (running) {
+        return true;
+    }
+    if (auto refused = actor->restore(journal, std::move(seats))) {
+        actor->stop();
+        registry.remove_room(code); // and the claims for its seats
+        return refuse(*refused);
+    }
+    metrics.rooms.fetch_add(1, std::memory_order_relaxed);
+    spdlog::info("room {} recovered: match {}, {} journal entries", code, match.id,
+                 journal.entries.size());
+    return true;
 }
 
 std::optional<PlayerRecord> ServerCore::claim_restored_seat(const std::string& token) {

@@ -93,6 +93,15 @@ struct ServerCore {
     // replays with this build is restored in a room under its old code (docs/store.md,
     // "Recovery after a restart"); the others are logged and left in the store. Returns how many.
     int restore_matches();
+    // Cluster mode (docs/cluster.md), on the cluster's thread: matches this instance claimed
+    // from a dead instance, each restored as at a restart in a room under its code, restored on
+    // the room's strand.
+    void take_over(std::vector<store::RecoveredMatch> matches);
+    // Cluster mode: another instance took this match over; its room stops (RoomActor::lose).
+    void match_lost(const std::string& match_id, const std::string& room_code);
+    // One match of restore_matches (running: false) or take_over (true); false when refused
+    // (logged).
+    bool restore_match(const store::RecoveredMatch& match, bool running);
     // A resume token the registry does not know: the player of a restored seat whose token hash
     // the store kept, given a player record with that same token. Empty if none.
     std::optional<PlayerRecord> claim_restored_seat(const std::string& token);

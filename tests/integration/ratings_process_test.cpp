@@ -40,6 +40,10 @@ start_rated_server(const std::string& data, std::vector<std::string> more = {}) 
     options.args = {"--time-scale", "25", "--log-level", "info", "--max-connections-per-address",
                     "1000"};
     options.args.insert(options.args.end(), more.begin(), more.end());
+    if (data.starts_with("postgresql://")) { // cluster mode: one instance, the same after a restart
+        options.args.insert(options.args.end(),
+                            {"--instance-id", "ratings", "--public-url", "ws://127.0.0.1:7777"});
+    }
     return std::make_unique<test_support::ServerProcess>(options);
 }
 

@@ -5,8 +5,8 @@
 // the same port and data, recovers the matches, the bots resume and finish, every journal replays
 // clean with consecutive turns. The kill -9 case runs on a PostgreSQL store too (a server of the
 // test's own, tests/support/postgres_instance.hpp).
+#include "bot_pair.hpp"
 #include "harness.hpp"
-#include "journal_check.hpp"
 
 #include "support/postgres_instance.hpp"
 #include "support/server_process.hpp"
@@ -38,17 +38,11 @@ public:
 
 // carrom-server --data on a port (0: any), logging at info.
 std::unique_ptr<test_support::ServerProcess> start_server(const std::string& data) {
-    test_support::ServerProcess::Options options;
-    options.program = CARROM_SERVER_PATH;
-    options.data = data;
-    options.args = {"--time-scale",
-                    "25",
-                    "--grace",
-                    "20",
-                    "--log-level",
-                    "info",
-                    "--max-connections-per-address",
-                    "1000"};
+    test_support::ServerProcess::Options options = bot_server_options(data);
+    if (data.rfind("postgresql://", 0) == 0) { // cluster mode, one instance of a fixed id
+        options.args.insert(options.args.end(),
+                            {"--instance-id", "recovery", "--public-url", "ws://127.0.0.1:7777"});
+    }
     return std::make_unique<test_support::ServerProcess>(options);
 }
 
@@ -59,100 +53,6 @@ int recovered(const test_support::ServerProcess& server) {
         return -1;
     }
     return std::stoi(line->substr(line->find("recovered ") + 10));
-}
-
-std::unique_ptr<bots::Strategy> sampling(std::uint64_t seed) {
-    return test_strategy("sampling", seed);
-}
-
-// Two bots in one room; `shots` counts the strokes the creator saw played (shot_result).
-struct Pair {
-    Pair(const std::string& url, std::uint64_t seed)
-        : first(sampling(seed * 10 + 1)), second(sampling(seed * 10 + 2)) {
-        bots::BotConfig config;
-        config.url = url;
-        config.budget.time = 60ms;
-        config.name = "creator";
-        config.mode = bots::JoinMode::Create;
-        config.create.rule_set = proto::RuleSet::Icf; // one board: tens of strokes
-        config.create.options.boards = 1;
-        config.create.options.shot_clock_s = 4.0;
-        creator = std::make_unique<bots::BotRunner>(config, *first);
-        creator->on_message = [this](const proto::ServerMessage& m) {
-            if (std::holds_alternative<proto::ShotResult>(m)) {
-                ++shots;
-            }
-            if (hook) {
-                hook(m);
-            }
-        };
-        creator->start();
-        const auto deadline = std::chrono::steady_clock::now() + 10s;
-        while (creator->summary().room_code.empty() && !creator->done() &&
-               std::chrono::steady_clock::now() < deadline) {
-            creator->step(20ms);
-        }
-        config.name = "joiner";
-        config.mode = bots::JoinMode::Join;
-        config.code = creator->summary().room_code;
-        joiner = std::make_unique<bots::BotRunner>(config, *second);
-        joiner->start();
-    }
-
-    // Steps both bots until `until` or both are done or the timeout passes.
-    void run(const std::function<bool()>& until, std::chrono::milliseconds timeout) {
-        const auto deadline = std::chrono::steady_clock::now() + timeout;
-        while (!(creator->done() && joiner->done()) && !until() &&
-               std::chrono::steady_clock::now() < deadline) {
-            creator->step(2ms);
-            if (until()) {
-                break;
-            }
-            joiner->step(2ms);
-        }
-    }
-    void drop() {
-        creator->drop();
-        joiner->drop();
-    }
-    void resume() {
-        creator->resume();
-        joiner->resume();
-    }
-    void expect_finished() const {
-        for (const auto* bot : {creator.get(), joiner.get()}) {
-            EXPECT_TRUE(bot->summary().finished)
-                << bot->summary().room_code << ": " << bot->summary().failure;
-            EXPECT_EQ(bot->summary().resumes, 1);
-            EXPECT_EQ(bot->summary().errors.count("bad_token"), 0U);
-        }
-    }
-
-    std::unique_ptr<bots::Strategy> first;
-    std::unique_ptr<bots::Strategy> second;
-    std::unique_ptr<bots::BotRunner> creator;
-    std::unique_ptr<bots::BotRunner> joiner;
-    std::atomic<int> shots{0};
-    std::function<void(const proto::ServerMessage&)> hook;
-};
-
-// Every match the creator played: finished, and its journal replays clean with consecutive
-// turns. Returns the strokes.
-int expect_finished_journals_clean(const test_support::ServerProcess& server, std::size_t count) {
-    const auto json = nlohmann::json::parse(server.get("/matches?player=creator&limit=100").body);
-    const auto& matches = json["matches"];
-    EXPECT_EQ(matches.size(), count);
-    int strokes = 0;
-    for (const auto& m : matches) {
-        const std::string id = m["id"];
-        EXPECT_FALSE(m["result"].is_null()) << id;
-        const JournalCheck check = check_journal(server.get("/matches/" + id).body);
-        EXPECT_TRUE(check.problem.empty()) << id << ": " << check.problem;
-        EXPECT_TRUE(check.game_over) << id;
-        EXPECT_TRUE(check.turns_consecutive) << id;
-        strokes += check.strokes;
-    }
-    return strokes;
 }
 
 // Plays a match to its fourth stroke, kills the server (SIGKILL) when `moment` says so, restarts
@@ -215,8 +115,8 @@ TEST(RecoveryProcess, KilledWhileAShotMovesTheBotsResumeByThemselvesAndFinish) {
         true);
 }
 
-// The same on PostgreSQL: the restarted server takes the database over (the killed one's session
-// and its advisory lock are gone with it) and recovers the match from it.
+// The same on PostgreSQL (cluster mode, one instance): the restarted server, of the same instance
+// id, claims the killed one's matches at its start and recovers them.
 TEST(RecoveryProcess, OnPostgresqlKilledWhileAShotMovesTheBotsResumeAndFinish) {
     test_support::PostgresInstance postgres;
     kill_and_recover(

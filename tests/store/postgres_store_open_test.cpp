@@ -41,14 +41,14 @@ void store_one_match(const std::string& database) {
     ASSERT_TRUE(opened.store->flush(test::kFlush));
 }
 
-TEST(PostgresStoreOpen, ANewDatabaseGetsTheSchemaWithTheReservedClusterColumns) {
+TEST(PostgresStoreOpen, ANewDatabaseGetsTheSchemaWithTheClusterColumnsAndInstances) {
     const std::string database = test::postgres_server().create_database();
     ASSERT_NO_FATAL_FAILURE(store_one_match(database));
     EXPECT_EQ(query(database, "SELECT application, version FROM carrom_schema"),
-              "carrom-match-store|2\n");
+              "carrom-match-store|3\n");
     EXPECT_EQ(query(database, "SELECT table_name FROM information_schema.tables WHERE "
                               "table_schema = 'public' ORDER BY table_name"),
-              "carrom_schema\nentries\nidentities\nmatches\nplayers\nrated_seats\n"
+              "carrom_schema\nentries\nidentities\ninstances\nmatches\nplayers\nrated_seats\n"
               "rating_changes\nratings\nseat_tokens\n");
     EXPECT_EQ(query(database, "SELECT id, owner_instance IS NULL, owner_epoch FROM matches"),
               "m1|t|0\n");

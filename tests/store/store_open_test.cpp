@@ -5,6 +5,9 @@
 
 #include "store_support.hpp"
 
+#include "store/postgres_database.hpp"
+#include "store/sqlite_database.hpp"
+
 namespace carrom::store {
 namespace {
 
@@ -48,11 +51,14 @@ TEST_P(StoreOpen, AStoreOpensAgainWithItsContents) {
 
 TEST_P(StoreOpen, ANewerSchemaIsRefusedAndUntouched) {
     store_games(*open(), 1);
-    execute(postgres() ? "UPDATE carrom_schema SET version = 3" : "PRAGMA user_version = 3");
+    const int known = postgres() ? store::postgres::kSchemaVersion : store::sqlite::kSchemaVersion;
+    const std::string newer = std::to_string(known + 1);
+    execute(postgres() ? "UPDATE carrom_schema SET version = " + newer
+                       : "PRAGMA user_version = " + newer);
     const std::string before = snapshot();
     EXPECT_EQ(expect_refused(try_open(), "store_newer_schema", location()),
-              location() + " was written by a newer carrom-server (schema version 3; this one "
-                           "knows up to 2)");
+              location() + " was written by a newer carrom-server (schema version " + newer +
+                  "; this one knows up to " + std::to_string(known) + ")");
     EXPECT_EQ(snapshot(), before);
 }
 

@@ -165,6 +165,7 @@ export function closeSentence(code, reason) {
     4001: 'The server speaks another protocol version',
     4002: 'This seat was opened in another tab or window',
     4003: 'The connection was too slow to keep up',
+    4004: 'The match moved to another server',
   }[code];
   return words ?? (reason ? `Connection closed: ${reason}` : `Connection closed (code ${code})`);
 }

@@ -106,6 +106,8 @@ struct StoreHealth {
 // from it.
 using OnWritten = std::function<void(bool written)>;
 
+class Cluster;
+
 class MatchStore {
 public:
     virtual ~MatchStore() = default;
@@ -159,6 +161,10 @@ public:
     virtual Loaded<std::vector<LeaderboardRow>> leaderboard(rules::RuleSet rule_set, int limit) = 0;
 
     virtual StoreHealth health() const = 0;
+
+    // Cluster mode (cluster.hpp): the instance's lease, takeovers and lost matches; null for a
+    // store without it (SQLite, and a PostgreSQL store opened for one server).
+    virtual Cluster* cluster() { return nullptr; }
 };
 
 } // namespace carrom::store

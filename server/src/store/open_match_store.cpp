@@ -6,11 +6,14 @@
 
 namespace carrom::store {
 
-OpenedStore open_match_store(const std::string& location, StoreOptions options) {
+OpenedStore open_match_store(const std::string& location, StoreOptions options,
+                             const postgres::ClusterOptions* cluster) {
     OpenedStore out;
     if (postgres::is_postgres_url(location)) {
         out.shown = postgres::shown_url(location);
-        auto opened = PostgresMatchStore::open(location, std::move(options));
+        auto opened = cluster != nullptr
+                          ? PostgresMatchStore::open_cluster(location, *cluster, std::move(options))
+                          : PostgresMatchStore::open(location, std::move(options));
         out.store = std::move(opened.store);
         out.error = std::move(opened.error);
     } else {

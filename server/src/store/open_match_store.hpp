@@ -4,6 +4,7 @@
 // SQLite file (SqliteMatchStore).
 
 #include "store/match_store.hpp"
+#include "store/postgres_cluster.hpp"
 #include "store/store_options.hpp"
 
 #include <memory>
@@ -18,6 +19,9 @@ struct OpenedStore {
     std::string shown; // the location for logs (a URL's password hidden)
 };
 
-OpenedStore open_match_store(const std::string& location, StoreOptions options = {});
+// cluster: a PostgreSQL store opens in cluster mode with these options (docs/cluster.md); an
+// SQLite store ignores it.
+OpenedStore open_match_store(const std::string& location, StoreOptions options = {},
+                             const postgres::ClusterOptions* cluster = nullptr);
 
 } // namespace carrom::store

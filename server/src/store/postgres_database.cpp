@@ -105,14 +105,25 @@ CREATE TABLE rating_changes (
     PRIMARY KEY (match_id, key_sha256)
 );
 CREATE INDEX rating_changes_recent ON rating_changes (key_sha256, time_ms);
+    // 3 (cluster: instances): the instances of a cluster with the address clients reach each at
+    // and its lease (expiry by the database's clock), and the index by which an instance finds
+    // the unfinished matches it owns.
+    R"sql(
+CREATE TABLE instances (
+    id text PRIMARY KEY,
+    public_url text NOT NULL,
+    started_at timestamptz NOT NULL DEFAULT now(),
+    lease_expires timestamptz NOT NULL
+);
+CREATE INDEX matches_owner ON matches (owner_instance) WHERE finished_ms IS NULL;
 )sql",
 };
 static_assert(std::size(kMigrations) == kSchemaVersion);
 
 // Every table a schema version has (what a database of ours may hold).
-const std::set<std::string> kOurTables = {"carrom_schema", "matches",     "entries",
-                                          "players",       "seat_tokens", "identities",
-                                          "ratings",       "rated_seats", "rating_changes"};
+const std::set<std::string> kOurTables = {"carrom_schema",  "matches",    "entries", "players",
+                                          "seat_tokens",    "identities", "ratings", "rated_seats",
+                                          "rating_changes", "instances"};
 
 StoreError make_error(std::string_view code, std::string message) {
     std::replace(message.begin(), message.end(), '\n', ' '); // one line
@@ -206,8 +217,8 @@ std::optional<StoreError> migrate(pqxx::connection& c, const std::string& shown)
     // The role must be able to do everything the store does, not only to read.
     const pqxx::result missing =
         t.exec("SELECT current_user, p, t FROM unnest(ARRAY['matches', 'entries', 'players', "
-               "'seat_tokens', 'identities', 'ratings', 'rated_seats', 'rating_changes']) AS t, "
-               "unnest(ARRAY['SELECT', 'INSERT', 'UPDATE', 'DELETE']) AS p "
+               "'seat_tokens', 'identities', 'ratings', 'rated_seats', 'rating_changes', "
+               "'instances']) AS t, unnest(ARRAY['SELECT', 'INSERT', 'UPDATE', 'DELETE']) AS p "
                "WHERE NOT has_table_privilege(t, p) LIMIT 1");
     if (!missing.empty()) {
         return make_error(store_code::kPermission,

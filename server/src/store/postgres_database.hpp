@@ -20,12 +20,16 @@
 namespace carrom::store::postgres {
 
 // carrom_schema.version: the schema this build writes. A database with a larger one is refused.
-inline constexpr int kSchemaVersion = 2;
+inline constexpr int kSchemaVersion = 3;
 // carrom_schema.application: the mark of a carrom match store.
 inline constexpr std::string_view kApplication = "carrom-match-store";
 // The session-level advisory lock (pg_try_advisory_lock) a single-instance server holds on its
 // write connection: "CRMJ".
 inline constexpr std::int64_t kLockKey = 0x43524d4a;
+// The class of the session-level advisory lock (pg_try_advisory_lock(kInstanceLockClass,
+// hashtext(id))) a cluster instance holds on its lease connection while it runs: a second live
+// process with the same instance id is refused. "CRMI".
+inline constexpr int kInstanceLockClass = 0x43524d49;
 
 // A new connection (libpq's connect_timeout 5 s unless the URL sets one). Throws
 // pqxx::broken_connection (and others from pqxx) when it cannot connect.

@@ -12,25 +12,53 @@ namespace carrom::store {
 
 PostgresMatchStore::Opened PostgresMatchStore::open(const std::string& url, StoreOptions options,
                                                     bool hold_lock) {
+    return open_with(
+        url, std::move(options), [&](PostgresMatchStore& store) -> std::optional<StoreError> {
+            store.writer_ =
+                std::make_unique<postgres::PostgresWriter>(url, store.shown_, hold_lock);
+            return store.writer_->open();
+        });
+}
+
+PostgresMatchStore::Opened PostgresMatchStore::open_cluster(const std::string& url,
+                                                            postgres::ClusterOptions cluster,
+                                                            StoreOptions options) {
+    return open_with(
+        url, std::move(options), [&](PostgresMatchStore& store) -> std::optional<StoreError> {
+            auto ownership = std::make_shared<MatchOwnership>();
+            store.writer_ = std::make_unique<postgres::PostgresWriter>(
+                url, store.shown_, cluster.instance_id, ownership);
+            if (auto e = store.writer_->open()) { // the schema first: `instances` is in it
+                return e;
+            }
+            store.cluster_ = std::make_unique<postgres::PostgresCluster>(
+                url, store.shown_, std::move(cluster), ownership);
+            return store.cluster_->open();
+        });
+}
+
+PostgresMatchStore::Opened PostgresMatchStore::open_with(
+    const std::string& url, StoreOptions options,
+    const std::function<std::optional<StoreError>(PostgresMatchStore&)>& open_writer) {
     Opened out;
     if ((out.error = postgres::check_url(url))) {
         return out;
     }
-    const std::string shown = postgres::shown_url(url);
-    std::unique_ptr<PostgresMatchStore> store(new PostgresMatchStore(shown, std::move(options)));
-    store->writer_ = std::make_unique<postgres::PostgresWriter>(url, shown, hold_lock);
-    if ((out.error = store->writer_->open())) {
+    std::unique_ptr<PostgresMatchStore> store(
+        new PostgresMatchStore(postgres::shown_url(url), std::move(options)));
+    if ((out.error = open_writer(*store))) {
         return out;
     }
     try {
-        store->reader_ = std::make_unique<postgres::PostgresReader>(url, shown);
+        store->reader_ = std::make_unique<postgres::PostgresReader>(url, store->shown_);
     } catch (const std::exception& e) {
-        out.error = postgres::error_from(e, shown, "connecting to");
+        out.error = postgres::error_from(e, store->shown_, "connecting to");
         return out;
     }
-    store->start_writing(shown, store->options_, [s = store.get()](std::span<WriteItem> items) {
-        return s->writer_->write(items, s->options_.fail_writes);
-    });
+    store->start_writing(store->shown_, store->options_,
+                         [s = store.get()](std::span<WriteItem> items) {
+                             return s->writer_->write(items, s->options_.fail_writes);
+                         });
     out.store = std::move(store);
     return out;
 }
@@ -39,10 +67,19 @@ PostgresMatchStore::PostgresMatchStore(std::string shown, StoreOptions options)
     : QueuedMatchStore("postgresql"), shown_(std::move(shown)), options_(std::move(options)) {}
 
 PostgresMatchStore::~PostgresMatchStore() {
+    if (cluster_) {
+        cluster_->stop();
+    }
     stop_writing();
+    if (cluster_ && writer_) {
+        cluster_->end_lease(); // after the last write: the others may claim at once
+    }
 }
 
 Loaded<std::vector<RecoveredMatch>> PostgresMatchStore::load_unfinished() {
+    if (cluster_) {
+        return cluster_->claim(true);
+    }
     return reader_->load_unfinished();
 }
 

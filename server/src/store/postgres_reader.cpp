@@ -20,6 +20,8 @@ IdentifiedPlayer player_fields(const pqxx::row& row) {
                             row[2].as<std::string>(), row[3].as<std::int64_t>()};
 }
 
+} // namespace
+
 std::optional<proto::MatchJournal> read_journal(pqxx::transaction_base& t, const MatchId& match) {
     const pqxx::result head = t.exec_params("SELECT head FROM matches WHERE id = $1", match);
     if (head.empty()) {
@@ -51,7 +53,15 @@ std::vector<std::optional<TokenHash>> read_tokens(pqxx::transaction_base& t, con
     return out;
 }
 
-} // namespace
+RecoveredMatch read_recovered(pqxx::transaction_base& t, const MatchId& match) {
+    RecoveredMatch out = stored::recover(
+        match, [&] { return read_journal(t, match); },
+        [&](int seats) { return read_tokens(t, match, seats); });
+    out.rated =
+        t.exec_params("SELECT EXISTS (SELECT 1 FROM rated_seats WHERE match_id = $1)", match)[0][0]
+            .as<bool>();
+    return out;
+}
 
 PostgresReader::PostgresReader(std::string url, std::string shown)
     : url_(std::move(url)), shown_(std::move(shown)), connection_(connect(url_)) {}
@@ -82,14 +92,9 @@ template <class T, class F> Loaded<T> PostgresReader::read(F f) {
 Loaded<std::vector<RecoveredMatch>> PostgresReader::load_unfinished() {
     return read<std::vector<RecoveredMatch>>([](pqxx::transaction_base& t) {
         std::vector<RecoveredMatch> out;
-        for (const auto& row : t.exec("SELECT m.id, EXISTS (SELECT 1 FROM rated_seats r "
-                                      "WHERE r.match_id = m.id) FROM matches m "
-                                      "WHERE m.finished_ms IS NULL ORDER BY m.created_ms, m.id")) {
-            const MatchId id = row[0].as<std::string>();
-            out.push_back(stored::recover(
-                id, [&] { return read_journal(t, id); },
-                [&](int seats) { return read_tokens(t, id, seats); }));
-            out.back().rated = row[1].as<bool>();
+        for (const auto& row : t.exec("SELECT id FROM matches WHERE finished_ms IS NULL "
+                                      "ORDER BY created_ms, id")) {
+            out.push_back(read_recovered(t, row[0].as<std::string>()));
         }
         return out;
     });

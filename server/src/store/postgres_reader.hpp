@@ -18,6 +18,15 @@
 
 namespace carrom::store::postgres {
 
+// A match's journal in transaction t (none when there is no such match); throws
+// stored::BadJournal for one that does not decode.
+std::optional<proto::MatchJournal> read_journal(pqxx::transaction_base& t, const MatchId& match);
+// The seat token hashes of a match of `seats` seats, by seat.
+std::vector<std::optional<TokenHash>> read_tokens(pqxx::transaction_base& t, const MatchId& match,
+                                                  int seats);
+// An unfinished match for recovery: its journal and tokens, or its error.
+RecoveredMatch read_recovered(pqxx::transaction_base& t, const MatchId& match);
+
 class PostgresReader {
 public:
     // Connects. Throws (pqxx) when it cannot.

@@ -29,6 +29,17 @@ constexpr std::pair<const char*, const char*> kStatements[] = {
     {"delete_token", "DELETE FROM seat_tokens WHERE match_id = $1 AND seat = $2"},
 };
 
+// Cluster mode's: a match created owned by this instance (epoch 0), and the ownership check that
+// holds the match's row lock until the COMMIT (a takeover's claim waits for it, or it finds the
+// epoch the claim incremented and updates nothing).
+constexpr std::pair<const char*, const char*> kClusterStatements[] = {
+    {"insert_owned_match",
+     "INSERT INTO matches (id, room_code, rule_set, created_ms, physics_version, rules_version, "
+     "head, owner_instance, owner_epoch) VALUES ($1, $2, $3, $4, $5, $6, $7, $8, 0)"},
+    {"check_owner", "UPDATE matches SET owner_epoch = owner_epoch WHERE id = $1 AND "
+                    "owner_instance = $2 AND owner_epoch = $3"},
+};
+
 // An error of the item, not of the database: it would fail every time (class 22, data
 // exception: text the database cannot hold; class 23, integrity constraint violation).
 bool item_error(const pqxx::sql_error& e) {
@@ -43,6 +54,23 @@ struct RetryOneByOne {};
 
 PostgresWriter::PostgresWriter(std::string url, std::string shown, bool lock)
     : url_(std::move(url)), shown_(std::move(shown)), lock_(lock) {}
+
+PostgresWriter::PostgresWriter(std::string url, std::string shown, std::string instance_id,
+                               std::shared_ptr<MatchOwnership> ownership)
+    : url_(std::move(url)), shown_(std::move(shown)), lock_(false),
+      instance_id_(std::move(instance_id)), ownership_(std::move(ownership)) {}
+
+void PostgresWriter::prepare(pqxx::connection& c) const {
+    for (const auto& [name, sql] : kStatements) {
+        c.prepare(name, sql);
+    }
+    PostgresRatingWriter::prepare(c);
+    if (ownership_) {
+        for (const auto& [name, sql] : kClusterStatements) {
+            c.prepare(name, sql);
+        }
+    }
+}
 
 PostgresWriter::~PostgresWriter() = default;
 
@@ -64,10 +92,7 @@ std::optional<StoreError> PostgresWriter::open() {
                                   ": another carrom-server holds it (its advisory lock " +
                                   std::to_string(kLockKey) + ")"};
         }
-        for (const auto& [name, sql] : kStatements) {
-            connection_->prepare(name, sql);
-        }
-        PostgresRatingWriter::prepare(*connection_);
+        prepare(*connection_);
     } catch (const std::exception& e) {
         connection_.reset();
         return error_from(e, shown_, "opening");
@@ -85,10 +110,7 @@ pqxx::connection& PostgresWriter::connection() {
         throw std::runtime_error("another carrom-server holds " + shown_ +
                                  " (its advisory lock); writing waits for it to let go");
     }
-    for (const auto& [name, sql] : kStatements) {
-        c->prepare(name, sql);
-    }
-    PostgresRatingWriter::prepare(*c);
+    prepare(*c);
     connection_ = std::move(c);
     return *connection_;
 }
@@ -114,11 +136,19 @@ std::vector<WriteRefusal>
 PostgresWriter::write_items(std::span<WriteItem> items, bool one_by_one,
                             const std::function<bool()>& fail_before_commit) {
     std::vector<WriteRefusal> refused;
+    created_.clear();
+    checked_.clear();
+    finished_.clear();
+    const auto refuse_lost = [&](std::size_t i) {
+        refused.push_back(WriteRefusal{i, "the match is owned by another instance", true});
+    };
     pqxx::work t(connection());
     for (std::size_t i = 0; i < items.size(); ++i) {
         if (!one_by_one) {
             try {
-                write_one(t, items[i]);
+                if (!write_one(t, items[i])) {
+                    refuse_lost(i);
+                }
             } catch (const pqxx::sql_error& e) {
                 if (!item_error(e)) {
                     throw;
@@ -128,9 +158,11 @@ PostgresWriter::write_items(std::span<WriteItem> items, bool one_by_one,
             continue;
         }
         std::optional<std::string> refusal;
+        bool lost = false;
+        const std::size_t finished_before = finished_.size();
         t.exec("SAVEPOINT item");
         try {
-            write_one(t, items[i]);
+            lost = !write_one(t, items[i]);
         } catch (const pqxx::sql_error& e) {
             if (!item_error(e)) {
                 throw;
@@ -138,32 +170,82 @@ PostgresWriter::write_items(std::span<WriteItem> items, bool one_by_one,
             const std::string what = e.what();
             refusal = what.substr(0, what.find('\n')); // one line
             t.exec("ROLLBACK TO SAVEPOINT item");
+            // The rollback released the row locks the item's ownership check took: check again.
+            checked_.clear();
+            finished_.resize(finished_before);
+            if (const auto* create = std::get_if<CreateItem>(&items[i].what)) {
+                created_.erase(create->created.match_id);
+            }
         }
         t.exec("RELEASE SAVEPOINT item");
         if (refusal) {
             refused.push_back(WriteRefusal{i, *refusal});
+        } else if (lost) {
+            refuse_lost(i);
         }
     }
     if (fail_before_commit && fail_before_commit()) {
         throw std::runtime_error("injected write failure (test seam)");
     }
     t.commit();
+    if (ownership_) {
+        for (auto& [match, owned] : created_) {
+            ownership_->add(match, std::move(owned));
+        }
+        for (const MatchId& match : finished_) {
+            ownership_->finished(match);
+        }
+        for (const auto& [match, owns] : checked_) {
+            if (!owns) {
+                ownership_->lost(match); // before the callers hear of the lost items
+            }
+        }
+    }
     return refused;
 }
 
-void PostgresWriter::write_one(pqxx::transaction_base& t, const WriteItem& item) {
-    std::visit(
-        [&t](const auto& what) {
+bool PostgresWriter::owns(pqxx::transaction_base& t, const MatchId& match) {
+    if (created_.count(match) != 0) {
+        return true;
+    }
+    if (const auto it = checked_.find(match); it != checked_.end()) {
+        return it->second;
+    }
+    const auto owned = ownership_->find(match);
+    const bool owns =
+        owned &&
+        t.exec_prepared("check_owner", match, instance_id_, owned->epoch).affected_rows() == 1;
+    checked_[match] = owns;
+    return owns;
+}
+
+bool PostgresWriter::write_one(pqxx::transaction_base& t, const WriteItem& item) {
+    return std::visit(
+        [this, &t](const auto& what) {
             using T = std::decay_t<decltype(what)>;
             if constexpr (std::is_same_v<T, CreateItem>) {
                 const proto::MatchCreated& c = what.created;
-                t.exec_prepared("insert_match", c.match_id, c.room_code,
-                                std::string(rules::to_string(c.rule_set)),
-                                static_cast<std::int64_t>(c.time_ms), c.versions.physics,
-                                c.versions.rules, stored::head_text(c));
+                if (ownership_) {
+                    t.exec_prepared("insert_owned_match", c.match_id, c.room_code,
+                                    std::string(rules::to_string(c.rule_set)),
+                                    static_cast<std::int64_t>(c.time_ms), c.versions.physics,
+                                    c.versions.rules, stored::head_text(c), instance_id_);
+                    created_[c.match_id] = MatchOwnership::Owned{0, c.room_code};
+                } else {
+                    t.exec_prepared("insert_match", c.match_id, c.room_code,
+                                    std::string(rules::to_string(c.rule_set)),
+                                    static_cast<std::int64_t>(c.time_ms), c.versions.physics,
+                                    c.versions.rules, stored::head_text(c));
+                }
                 for (const proto::JournalSeat& seat : c.seats) {
                     t.exec_prepared("insert_player", seat.name, c.match_id);
                 }
+                return true;
+            } else if constexpr (std::is_same_v<T, PlayerItem>) {
+                PostgresRatingWriter::save_player(t, what); // of no match
+                return true;
+            } else if (ownership_ && !owns(t, what.match)) {
+                return false;
             } else if constexpr (std::is_same_v<T, AppendItem>) {
                 t.exec_prepared("insert_entry", what.match, static_cast<std::int64_t>(what.seq),
                                 static_cast<std::int64_t>(what.entry.time_ms),
@@ -179,6 +261,7 @@ void PostgresWriter::write_one(pqxx::transaction_base& t, const WriteItem& item)
                         stored::result_text(*outcome->game_end, outcome->scores), what.match);
                     PostgresRatingWriter::match_ended(t, what.match, *outcome->game_end,
                                                       what.entry.time_ms);
+                    finished_.push_back(what.match);
                 }
             } else if constexpr (std::is_same_v<T, SeatTokenItem>) {
                 if (what.token) {
@@ -186,13 +269,13 @@ void PostgresWriter::write_one(pqxx::transaction_base& t, const WriteItem& item)
                 } else {
                     t.exec_prepared("delete_token", what.match, what.seat);
                 }
-            } else if constexpr (std::is_same_v<T, PlayerItem>) {
-                PostgresRatingWriter::save_player(t, what);
             } else if constexpr (std::is_same_v<T, RatedSeatItem>) {
                 PostgresRatingWriter::rated_seat(t, what);
             } else {
                 t.exec_prepared("finish", static_cast<std::int64_t>(what.time_ms), what.match);
+                finished_.push_back(what.match);
             }
+            return true;
         },
         item.what);
 }

@@ -3,10 +3,16 @@
 // Used by one thread only (the store's StoreWriteQueue writer). The connection is made again after
 // it breaks (the database restarted, the network cut), and with it the advisory lock retaken: a
 // writer that cannot retake it (another server took the database meanwhile) writes nothing.
+//
+// In cluster mode (an ownership given) there is no lock: every item of a match checks, in the
+// transaction that writes it, that this instance still owns the match (matches.owner_instance and
+// owner_epoch, docs/cluster.md). An item of a match another instance claimed is left out (a
+// refusal marked lost) and the match reported lost after the COMMIT.
 
 #include <pqxx/connection>
 #include <pqxx/transaction_base>
 
+#include "store/match_ownership.hpp"
 #include "store/write_item.hpp"
 
 #include <functional>
@@ -14,6 +20,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 namespace carrom::store::postgres {
@@ -23,6 +30,9 @@ public:
     // shown: the URL for messages (postgres_database.hpp, shown_url). lock: hold the
     // one-server advisory lock (single-instance mode).
     PostgresWriter(std::string url, std::string shown, bool lock);
+    // Cluster mode: instance_id writes the matches ownership holds, and no others.
+    PostgresWriter(std::string url, std::string shown, std::string instance_id,
+                   std::shared_ptr<MatchOwnership> ownership);
     ~PostgresWriter();
     PostgresWriter(const PostgresWriter&) = delete;
     PostgresWriter& operator=(const PostgresWriter&) = delete;
@@ -45,12 +55,24 @@ private:
     pqxx::connection& connection();
     std::vector<WriteRefusal> write_items(std::span<WriteItem> items, bool one_by_one,
                                           const std::function<bool()>& fail_before_commit);
-    static void write_one(pqxx::transaction_base& t, const WriteItem& item);
+    // Writes one item; false (nothing written) when the match is not this instance's any more
+    // (cluster mode).
+    bool write_one(pqxx::transaction_base& t, const WriteItem& item);
+    // Cluster mode: whether this instance owns the match in this transaction (checked once per
+    // match and transaction, holding the match's row lock until the COMMIT).
+    bool owns(pqxx::transaction_base& t, const MatchId& match);
+    void prepare(pqxx::connection& c) const;
 
     std::string url_;
     std::string shown_;
     bool lock_ = true;
+    std::string instance_id_;                   // cluster mode only
+    std::shared_ptr<MatchOwnership> ownership_; // null: single-instance mode
     std::unique_ptr<pqxx::connection> connection_;
+    // This transaction's matches: created (the epoch they get at COMMIT), checked, finished, lost.
+    std::unordered_map<MatchId, MatchOwnership::Owned> created_;
+    std::unordered_map<MatchId, bool> checked_;
+    std::vector<MatchId> finished_;
 };
 
 } // namespace carrom::store::postgres

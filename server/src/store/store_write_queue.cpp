@@ -143,8 +143,12 @@ bool StoreWriteQueue::write(std::deque<WriteItem>& batch) {
         return false;
     }
     std::vector<bool> dropped(items.size(), false);
+    std::size_t invalid = 0; // refused as invalid (errors); the others are of a lost match
     for (const auto& r : refused) {
-        spdlog::error("store {}: an item was refused and dropped: {}", name_, r.reason);
+        if (!r.lost) {
+            spdlog::error("store {}: an item was refused and dropped: {}", name_, r.reason);
+            ++invalid;
+        }
         dropped[r.index] = true;
     }
     for (std::size_t i = 0; i < items.size(); ++i) {
@@ -155,7 +159,7 @@ bool StoreWriteQueue::write(std::deque<WriteItem>& batch) {
     const std::size_t written = items.size() - refused.size();
     written_total_.fetch_add(written, std::memory_order_relaxed);
     dropped_total_.fetch_add(refused.size(), std::memory_order_relaxed);
-    errors_total_.fetch_add(refused.size(), std::memory_order_relaxed);
+    errors_total_.fetch_add(invalid, std::memory_order_relaxed);
     if (after_commit_) {
         after_commit_();
     }

@@ -13,6 +13,8 @@
 // the first failure and at most one per log_interval after it, and one when writing resumes.
 // Items beyond max_pending are dropped (counted). An item write_batch refuses as invalid (an
 // append to a match never created, a seq written twice) is dropped and counted too.
+// An item of a match another cluster instance owns (WriteRefusal::lost) is dropped and counted
+// as dropped, not as an error, and not logged here (the store reports the match lost).
 
 #include "store/match_store.hpp"
 #include "store/store_options.hpp"

@@ -49,6 +49,7 @@ struct WriteItem {
 struct WriteRefusal {
     std::size_t index = 0; // in the batch
     std::string reason;    // the database's message
+    bool lost = false;     // cluster mode: the match is another instance's (docs/cluster.md)
 };
 
 } // namespace carrom::store

@@ -106,5 +106,6 @@ inline constexpr int kCloseTryAgainLater = 1013;   // server full
 inline constexpr int kCloseVersionMismatch = 4001; // hello with another protocol version
 inline constexpr int kCloseReplaced = 4002;        // the seat was resumed on another connection
 inline constexpr int kCloseSlowClient = 4003;      // write queue bound exceeded
+inline constexpr int kCloseMatchMoved = 4004;      // another instance took the match over: resume
 
 } // namespace carrom::proto

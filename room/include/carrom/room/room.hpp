@@ -124,6 +124,9 @@ public:
     void journal_written(const std::string& match_id, std::int64_t seq);
     // The current game's match id in the journal ("" without a sink or before the first game).
     const std::string& match_id() const { return match_id_; }
+    // Closes every member's connection (seat holders and spectators) with close_code and reason,
+    // as the server does for a match another instance took over; the room's state stays.
+    void close_connections(int close_code, const std::string& reason);
 
     // No human holds a seat (connected or within grace) and no spectator watches.
     bool abandoned() const;

@@ -3,6 +3,7 @@
 // exposition format for GET /metrics: the rooms' own (room::RoomCounters) and the network's.
 
 #include "carrom/room/room_counters.hpp"
+#include "store/cluster.hpp"
 #include "store/match_store.hpp"
 
 #include <atomic>
@@ -34,5 +35,12 @@ struct Metrics : room::RoomCounters {
 // The match store's metrics (carrom_store_errors_total, carrom_store_pending,
 // carrom_store_written_total, carrom_store_degraded), all 0 without a store (health null).
 std::string store_prometheus_text(const store::StoreHealth* health);
+
+// Cluster mode (docs/cluster.md): carrom_cluster_info{instance,public_url},
+// carrom_cluster_lease_ok, carrom_cluster_lease_expires_seconds, carrom_cluster_matches_owned,
+// carrom_cluster_takeovers_total, carrom_cluster_matches_lost_total.
+std::string cluster_prometheus_text(const store::ClusterStatus& status);
+// /healthz's line in cluster mode: "cluster: {JSON}\n" with the same figures.
+std::string cluster_health_line(const store::ClusterStatus& status);
 
 } // namespace carrom::server

@@ -1,0 +1,338 @@
+#include "store/postgres_cluster.hpp"
+
+#include "store/postgres_database.hpp"
+#include "store/postgres_reader.hpp"
+
+#include <pqxx/pqxx>
+#include <spdlog/spdlog.h>
+
+#include <unistd.h>
+
+#include <cctype>
+#include <random>
+#include <stdexcept>
+
+namespace carrom::store::postgres {
+namespace {
+
+// The lease's length as an SQL interval expression on parameter $n (milliseconds).
+std::string lease_interval(int n) {
+    return "($" + std::to_string(n) + "::bigint * interval '1 millisecond')";
+}
+
+// Unix milliseconds of a timestamptz expression.
+std::string unix_ms(const std::string& timestamp) {
+    return "(extract(epoch FROM " + timestamp + ") * 1000)::bigint";
+}
+
+bool take_instance_lock(pqxx::connection& c, const std::string& id) {
+    pqxx::nontransaction t(c);
+    return t
+        .exec_params("SELECT pg_try_advisory_lock($1, hashtext($2))", kInstanceLockClass, id)[0][0]
+        .as<bool>();
+}
+
+} // namespace
+
+std::optional<StoreError> check_cluster_options(const ClusterOptions& options) {
+    const std::string& id = options.instance_id;
+    const bool id_ok = !id.empty() && id.size() <= 64 &&
+                       id.find_first_not_of("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz"
+                                            "0123456789._-") == std::string::npos;
+    if (!id_ok) {
+        return StoreError{"bad_instance_id", "--instance-id \"" + id +
+                                                 "\" is not 1 to 64 characters of "
+                                                 "A-Z, a-z, 0-9, '.', '_' and '-'"};
+    }
+    const std::string& url = options.public_url;
+    const std::size_t scheme = url.rfind("ws://", 0) == 0 ? 5 : url.rfind("wss://", 0) == 0 ? 6 : 0;
+    bool url_ok = scheme != 0 && url.size() > scheme && url.size() <= 2000 && url[scheme] != '/' &&
+                  url[scheme] != ':';
+    for (const char c : url) {
+        url_ok = url_ok && static_cast<unsigned char>(c) > 0x20 && c != 0x7f && c != '"' &&
+                 c != '\'' && c != '\\';
+    }
+    if (!url_ok) {
+        return StoreError{"bad_public_url",
+                          "--public-url \"" + url.substr(0, 200) +
+                              "\" is not a ws:// or wss:// URL with a host (the address clients "
+                              "reach this instance at)"};
+    }
+    if (options.lease < std::chrono::milliseconds(500) ||
+        options.lease > std::chrono::minutes(10)) {
+        return StoreError{"bad_lease", "--lease must be 0.5 to 600 seconds"};
+    }
+    return std::nullopt;
+}
+
+std::string generate_instance_id() {
+    char host[256] = {};
+    (void)::gethostname(host, sizeof host - 1);
+    std::string id;
+    for (const char* c = host; *c != '\0' && id.size() < 40; ++c) {
+        if (std::isalnum(static_cast<unsigned char>(*c)) != 0 || *c == '.' || *c == '-') {
+            id.push_back(*c);
+        }
+    }
+    static constexpr char kDigits[] = "0123456789abcdefghijklmnopqrstuvwxyz";
+    std::random_device random;
+    id += id.empty() ? "" : "-";
+    for (int i = 0; i < 6; ++i) {
+        id.push_back(kDigits[random() % 36]);
+    }
+    return id;
+}
+
+PostgresCluster::PostgresCluster(std::string url, std::string shown, ClusterOptions options,
+                                 std::shared_ptr<MatchOwnership> ownership)
+    : url_(std::move(url)), shown_(std::move(shown)), options_(std::move(options)),
+      ownership_(std::move(ownership)) {}
+
+PostgresCluster::~PostgresCluster() {
+    stop();
+}
+
+std::optional<StoreError> PostgresCluster::open() {
+    try {
+        connection_ = connect(url_);
+        // A process of the same id that just died (kill -9) holds the lock until PostgreSQL
+        // has ended its session: a moment.
+        bool locked = take_instance_lock(*connection_, options_.instance_id);
+        for (int i = 0; i < 30 && !locked; ++i) {
+            std::this_thread::sleep_for(std::chrono::milliseconds(100));
+            locked = take_instance_lock(*connection_, options_.instance_id);
+        }
+        if (!locked) {
+            connection_.reset();
+            return StoreError{"cluster_instance_in_use",
+                              "instance id " + options_.instance_id + " is running already on " +
+                                  shown_ + " (another live carrom-server has it)"};
+        }
+        pqxx::work t(*connection_);
+        write_lease(t, true);
+        t.commit();
+        lease_ok_ = true;
+        registered_ = true;
+    } catch (const std::exception& e) {
+        connection_.reset();
+        return error_from(e, shown_, "registering the instance on");
+    }
+    return std::nullopt;
+}
+
+pqxx::connection& PostgresCluster::connection() {
+    if (connection_ && connection_->is_open()) {
+        return *connection_;
+    }
+    connection_.reset();
+    auto c = connect(url_);
+    if (!take_instance_lock(*c, options_.instance_id)) {
+        throw std::runtime_error("instance id " + options_.instance_id +
+                                 " is held by another live carrom-server");
+    }
+    connection_ = std::move(c);
+    return *connection_;
+}
+
+Loaded<std::vector<RecoveredMatch>> PostgresCluster::claim(bool mine_too) {
+    Loaded<std::vector<RecoveredMatch>> out;
+    try {
+        pqxx::work t(connection());
+        // Rows another claimer or a writer holds are skipped (the next scan sees them again);
+        // the epoch condition makes a claim of a row that changed meanwhile update nothing.
+        const pqxx::result claimed = t.exec_params(
+            "UPDATE matches m SET owner_instance = $1, owner_epoch = m.owner_epoch + 1 FROM ("
+            "SELECT x.id, x.owner_epoch, x.owner_instance AS previous FROM matches x "
+            "LEFT JOIN instances i ON i.id = x.owner_instance WHERE x.finished_ms IS NULL AND "
+            "(x.owner_instance IS NULL OR i.id IS NULL OR i.lease_expires < now() OR "
+            "($2 AND x.owner_instance = $1)) ORDER BY x.created_ms, x.id LIMIT $3 "
+            "FOR UPDATE OF x SKIP LOCKED) c WHERE m.id = c.id AND m.owner_epoch = c.owner_epoch "
+            "RETURNING m.id, m.owner_epoch, m.room_code, c.previous",
+            options_.instance_id, mine_too, options_.claim_limit);
+        std::vector<std::pair<MatchId, MatchOwnership::Owned>> owned;
+        std::uint64_t takeovers = 0;
+        for (const auto& row : claimed) {
+            const MatchId id = row[0].as<std::string>();
+            owned.emplace_back(
+                id, MatchOwnership::Owned{row[1].as<std::int64_t>(), row[2].as<std::string>()});
+            const std::string previous = row[3].is_null() ? "" : row[3].as<std::string>();
+            if (previous != options_.instance_id) {
+                ++takeovers;
+                spdlog::info("cluster: match {} (room {}) taken over from {} (epoch {})", id,
+                             owned.back().second.room_code,
+                             previous.empty() ? std::string("no owner") : "instance " + previous,
+                             owned.back().second.epoch);
+            }
+            out.value.push_back(read_recovered(t, id));
+        }
+        t.commit();
+        for (auto& [id, o] : owned) {
+            ownership_->add(id, std::move(o));
+        }
+        takeovers_total_ += takeovers;
+    } catch (const pqxx::broken_connection& e) {
+        connection_.reset();
+        out.error = error_from(e, shown_, "claiming matches on");
+    } catch (const std::exception& e) {
+        out.error = error_from(e, shown_, "claiming matches on");
+    }
+    return out;
+}
+
+void PostgresCluster::write_lease(pqxx::transaction_base& t, bool registering) {
+    const pqxx::result r = t.exec_params(
+        "INSERT INTO instances (id, public_url, lease_expires) VALUES ($1, $2, now() + " +
+            lease_interval(3) + ") ON CONFLICT (id) DO UPDATE SET " +
+            (registering ? "public_url = excluded.public_url, started_at = now(), " : "") +
+            "lease_expires = excluded.lease_expires RETURNING " + unix_ms("lease_expires"),
+        options_.instance_id, options_.public_url,
+        static_cast<std::int64_t>(options_.lease.count()));
+    lease_expires_ms_ = r[0][0].as<std::int64_t>();
+}
+
+bool PostgresCluster::renew() {
+    pqxx::work t(connection());
+    const pqxx::result old =
+        t.exec_params("SELECT lease_expires < now() FROM instances WHERE id = $1 FOR UPDATE",
+                      options_.instance_id);
+    write_lease(t, false);
+    t.commit();
+    lease_ok_ = true;
+    if (old.empty() || old[0][0].as<bool>()) {
+        spdlog::warn("cluster: the lease of instance {} had expired; renewed (its matches that "
+                     "another instance claimed meanwhile stop here)",
+                     options_.instance_id);
+        return true;
+    }
+    return false;
+}
+
+void PostgresCluster::check_owned() {
+    const auto owned = ownership_->all();
+    if (owned.empty()) {
+        return;
+    }
+    std::string ids = "{";
+    for (const auto& [id, o] : owned) {
+        ids += (ids.size() > 1 ? "," : "") + id; // ids are [0-9a-z]
+    }
+    ids += "}";
+    std::unordered_map<MatchId, std::pair<std::string, std::int64_t>> now;
+    {
+        pqxx::work t(connection());
+        for (const auto& row :
+             t.exec_params("SELECT id, coalesce(owner_instance, ''), owner_epoch FROM matches "
+                           "WHERE id = ANY($1::text[])",
+                           ids)) {
+            now[row[0].as<std::string>()] = {row[1].as<std::string>(), row[2].as<std::int64_t>()};
+        }
+        t.commit();
+    }
+    for (const auto& [id, o] : owned) {
+        const auto it = now.find(id);
+        if (it == now.end()) {
+            continue; // created, not yet written
+        }
+        if (it->second.first != options_.instance_id || it->second.second != o.epoch) {
+            spdlog::warn("cluster: match {} (room {}) is owned by instance {} now; its room here "
+                         "stops",
+                         id, o.room_code, it->second.first);
+            ownership_->lost(id);
+        }
+    }
+}
+
+void PostgresCluster::round() {
+    try {
+        const auto now = std::chrono::steady_clock::now();
+        if (renew() || failing_) {
+            // Back from a freeze or an outage, in which every lease may have lapsed: the other
+            // instances get a lease's time to renew theirs before this one claims any match.
+            claims_from_ = now + options_.lease;
+        }
+        if (failing_) {
+            spdlog::info("cluster: lease renewed again");
+            failing_ = false;
+        }
+        check_owned();
+        if (now < claims_from_) {
+            return;
+        }
+        auto claimed = claim(false);
+        if (!claimed.ok()) {
+            throw std::runtime_error(claimed.error->message);
+        }
+        if (!claimed.value.empty() && handlers_.on_claimed) {
+            handlers_.on_claimed(std::move(claimed.value));
+        }
+    } catch (const std::exception& e) {
+        if (dynamic_cast<const pqxx::broken_connection*>(&e) != nullptr) {
+            connection_.reset();
+        }
+        lease_ok_ = false;
+        if (!failing_) {
+            spdlog::error("cluster: instance {} cannot renew its lease or claim matches: {}",
+                          options_.instance_id, e.what());
+            failing_ = true;
+        }
+    }
+}
+
+void PostgresCluster::start(ClusterHandlers handlers) {
+    handlers_ = std::move(handlers);
+    ownership_->set_on_lost(handlers_.on_lost);
+    thread_ = std::thread([this] { run(); });
+}
+
+void PostgresCluster::run() {
+    std::unique_lock lock(mutex_);
+    while (!stopping_) {
+        lock.unlock();
+        round();
+        lock.lock();
+        wake_.wait_for(lock, renew_interval(), [this] { return stopping_; });
+    }
+}
+
+void PostgresCluster::stop() {
+    {
+        const std::lock_guard lock(mutex_);
+        stopping_ = true;
+    }
+    wake_.notify_all();
+    if (thread_.joinable()) {
+        thread_.join();
+    }
+}
+
+void PostgresCluster::end_lease() {
+    if (!registered_) {
+        return;
+    }
+    try {
+        pqxx::work t(connection());
+        t.exec_params("UPDATE instances SET lease_expires = now() WHERE id = $1",
+                      options_.instance_id);
+        t.commit();
+        lease_ok_ = false;
+        spdlog::info("cluster: lease of instance {} ended", options_.instance_id);
+    } catch (const std::exception& e) {
+        spdlog::warn("cluster: the lease of instance {} could not be ended (it expires by "
+                     "itself): {}",
+                     options_.instance_id, e.what());
+    }
+}
+
+ClusterStatus PostgresCluster::status() const {
+    ClusterStatus s;
+    s.instance_id = options_.instance_id;
+    s.public_url = options_.public_url;
+    s.lease_expires_ms = lease_expires_ms_.load();
+    s.lease_ok = lease_ok_.load();
+    s.matches_owned = ownership_->size();
+    s.takeovers_total = takeovers_total_.load();
+    s.matches_lost_total = ownership_->lost_total();
+    return s;
+}
+
+} // namespace carrom::store::postgres

@@ -1,0 +1,54 @@
+#pragma once
+// Two bots in one room of a carrom-server process (the in-process BotRunner over real sockets),
+// for the recovery and cluster tests: the creator makes an ICF room of one board with a 4 s shot
+// clock, the joiner joins it. The bots reach the server at a URL the test can move (move_to: the
+// next connection, a resume included, goes there), as a player's client reaches another
+// instance after a takeover.
+
+#include "harness.hpp"
+
+#include "support/server_process.hpp"
+
+#include <atomic>
+#include <chrono>
+#include <functional>
+#include <memory>
+#include <mutex>
+#include <string>
+
+namespace carrom::integration {
+
+struct Pair {
+    Pair(const std::string& url, std::uint64_t seed);
+
+    // Steps both bots until `until` or both are done or the timeout passes.
+    void run(const std::function<bool()>& until, std::chrono::milliseconds timeout);
+    void drop();
+    void resume();
+    // Where the bots connect from now on.
+    void move_to(const std::string& url);
+    std::string url() const;
+    // Both finished their game, each resumed `resumes` times, never with bad_token.
+    void expect_finished(int resumes = 1) const;
+
+    std::unique_ptr<bots::Strategy> first;
+    std::unique_ptr<bots::Strategy> second;
+    std::unique_ptr<bots::BotRunner> creator;
+    std::unique_ptr<bots::BotRunner> joiner;
+    std::atomic<int> shots{0}; // strokes the creator saw played (shot_result)
+    std::function<void(const proto::ServerMessage&)> hook;
+
+private:
+    mutable std::mutex url_mutex_;
+    std::string url_;
+};
+
+// carrom-server's options for bot pairs on data: playback 25 times faster, a 20 s grace period,
+// info logs, 1,000 connections per address.
+test_support::ServerProcess::Options bot_server_options(const std::string& data);
+
+// Every match the creator played on the server: finished, and its journal replays clean with
+// consecutive turns. Returns the strokes.
+int expect_finished_journals_clean(const test_support::ServerProcess& server, std::size_t count);
+
+} // namespace carrom::integration
