@@ -54,20 +54,20 @@ TEST(PostgresStoreOpen, ANewDatabaseGetsTheSchemaWithTheClusterColumnsAndInstanc
               "m1|t|0\n");
 }
 
-TEST(PostgresStoreOpen, ASchemaOneDatabaseGetsTheRatingsTablesAndKeepsItsMatches) {
+TEST(PostgresStoreOpen, ASchemaOneDatabaseGetsTheRatingsAndClusterTablesAndKeepsItsMatches) {
     const std::string database = test::postgres_server().create_database();
     ASSERT_NO_FATAL_FAILURE(store_one_match(database));
-    // Back to schema 1: without migration 2's tables.
-    query(database, "DROP TABLE rating_changes, rated_seats, ratings, identities; "
-                    "UPDATE carrom_schema SET version = 1");
+    // Back to schema 1: without migration 2's and 3's tables.
+    query(database, "DROP TABLE rating_changes, rated_seats, ratings, identities, instances; "
+                    "DROP INDEX matches_owner; UPDATE carrom_schema SET version = 1");
     auto opened =
         PostgresMatchStore::open(test::postgres_server().url(database), test::fast_options());
     ASSERT_NE(opened.store, nullptr) << opened.error->message;
-    EXPECT_EQ(query(database, "SELECT version FROM carrom_schema"), "2\n");
+    EXPECT_EQ(query(database, "SELECT version FROM carrom_schema"), "3\n");
     EXPECT_EQ(query(database, "SELECT count(*) FROM information_schema.tables WHERE "
                               "table_schema = 'public' AND table_name IN ('identities', "
-                              "'ratings', 'rated_seats', 'rating_changes')"),
-              "4\n");
+                              "'ratings', 'rated_seats', 'rating_changes', 'instances')"),
+              "5\n");
     EXPECT_TRUE(opened.store->journal("m1").value.has_value());
     EXPECT_TRUE(opened.store->load_players().ok());
 }

@@ -105,6 +105,7 @@ CREATE TABLE rating_changes (
     PRIMARY KEY (match_id, key_sha256)
 );
 CREATE INDEX rating_changes_recent ON rating_changes (key_sha256, time_ms);
+)sql",
     // 3 (cluster: instances): the instances of a cluster with the address clients reach each at
     // and its lease (expiry by the database's clock), and the index by which an instance finds
     // the unfinished matches it owns.
