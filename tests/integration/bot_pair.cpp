@@ -9,7 +9,7 @@ namespace carrom::integration {
 
 using namespace std::chrono_literals;
 
-Pair::Pair(const std::string& url, std::uint64_t seed)
+Pair::Pair(const std::string& url, std::uint64_t seed, bool rated)
     : first(test_strategy("sampling", seed * 10 + 1)),
       second(test_strategy("sampling", seed * 10 + 2)), url_(url) {
     const auto connect = [this](const bots::BotConfig& config) {
@@ -23,6 +23,10 @@ Pair::Pair(const std::string& url, std::uint64_t seed)
     config.create.rule_set = proto::RuleSet::Icf; // one board: tens of strokes
     config.create.options.boards = 1;
     config.create.options.shot_clock_s = 4.0;
+    config.create.rated = rated;
+    if (rated) {
+        config.identity = std::string(64, 'c');
+    }
     creator = std::make_unique<bots::BotRunner>(config, *first);
     creator->connect = connect;
     creator->on_message = [this](const proto::ServerMessage& m) {
@@ -42,6 +46,9 @@ Pair::Pair(const std::string& url, std::uint64_t seed)
     config.name = "joiner";
     config.mode = bots::JoinMode::Join;
     config.code = creator->summary().room_code;
+    if (rated) {
+        config.identity = std::string(64, 'f'); // 'j' is not a hex digit
+    }
     joiner = std::make_unique<bots::BotRunner>(config, *second);
     joiner->connect = connect;
     joiner->start();

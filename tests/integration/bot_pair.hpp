@@ -19,7 +19,9 @@
 namespace carrom::integration {
 
 struct Pair {
-    Pair(const std::string& url, std::uint64_t seed);
+    // rated: the bots say hello with player keys (64 hex digits: all 'c', all 'f') and the room
+    // is rated (docs/ratings.md).
+    Pair(const std::string& url, std::uint64_t seed, bool rated = false);
 
     // Steps both bots until `until` or both are done or the timeout passes.
     void run(const std::function<bool()>& until, std::chrono::milliseconds timeout);

@@ -12,6 +12,7 @@
 #include "support/temp_dir.hpp"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <signal.h>
 
@@ -152,14 +153,28 @@ long metric_value(const test_support::ServerProcess& server, const std::string& 
     return line.empty() ? -1 : std::stol(line.substr(name.size() + 1));
 }
 
+// Each bot of a rated Pair has one rated game in the store, counted once (docs/ratings.md).
+void expect_rated_once(const test_support::ServerProcess& server) {
+    for (const char* name : {"creator", "joiner"}) {
+        const auto answer = server.get(std::string("/players/") + name);
+        ASSERT_EQ(answer.status, 200) << answer.body;
+        const auto player = nlohmann::json::parse(answer.body, nullptr, false);
+        ASSERT_TRUE(player.is_object()) << answer.body;
+        ASSERT_EQ(player["ratings"].size(), 1U) << answer.body;
+        EXPECT_EQ(player["ratings"][0]["games"], 1) << answer.body;
+        EXPECT_NE(player["ratings"][0]["rating"], 1500.0) << answer.body;
+    }
+}
+
 // A match on a, a killed (SIGKILL) or frozen (SIGSTOP, then SIGCONT once b took over) while a
-// shot moves; the bots resume on b by themselves and finish.
-void take_over(const std::string& url, bool freeze) {
+// shot moves; the bots resume on b by themselves and finish. rated: the match is rated, and its
+// result moves each bot's rating once.
+void take_over(const std::string& url, bool freeze, bool rated = false) {
     auto a = start_instance(url, "a");
     auto b = start_instance(url, "b");
     ASSERT_NE(a->port(), 0) << a->log();
     ASSERT_NE(b->port(), 0) << b->log();
-    Pair pair(a->url(), 11);
+    Pair pair(a->url(), 11, rated);
     ASSERT_FALSE(pair.creator->summary().room_code.empty());
     pair.run([&] { return pair.shots >= 1; }, 10s);
     EXPECT_EQ(metric_value(*a, "carrom_cluster_matches_owned"), 1);
@@ -195,6 +210,9 @@ void take_over(const std::string& url, bool freeze) {
     EXPECT_EQ(metric_value(*b, "carrom_cluster_takeovers_total"), 1);
     EXPECT_EQ(metric_value(*b, "carrom_cluster_matches_owned"), 0);
     EXPECT_GT(expect_finished_journals_clean(*b, 1), 3);
+    if (rated) {
+        expect_rated_once(*b);
+    }
     if (freeze) {
         EXPECT_EQ(metric_value(*a, "carrom_cluster_matches_lost_total"), 1);
         EXPECT_EQ(metric_value(*a, "carrom_cluster_matches_owned"), 0);
@@ -207,6 +225,10 @@ void take_over(const std::string& url, bool freeze) {
 
 TEST_F(ClusterProcess, AKilledOwnersMatchIsTakenOverAndTheBotsFinishOnTheOtherInstance) {
     take_over(url, false);
+}
+
+TEST_F(ClusterProcess, ARatedMatchTakenOverFromAKilledOwnerIsRatedOnce) {
+    take_over(url, false, true);
 }
 
 TEST_F(ClusterProcess, AFrozenOwnerWakesToAMatchTakenOverWritesNothingAndClosesItsSockets) {
