@@ -38,15 +38,15 @@ using Clock = std::chrono::steady_clock;
 using namespace std::chrono_literals;
 namespace fs = std::filesystem;
 
-struct TempDir {
+struct ReplayDir {
     fs::path path;
-    explicit TempDir(const std::string& name)
+    explicit ReplayDir(const std::string& name)
         : path(fs::temp_directory_path() /
                ("carrom-replay-" + name + "-" + std::to_string(::getpid()))) {
         fs::remove_all(path);
         fs::create_directories(path);
     }
-    ~TempDir() { fs::remove_all(path); }
+    ~ReplayDir() { fs::remove_all(path); }
 };
 
 void write_file(const fs::path& path, const std::string& text) {
@@ -133,7 +133,7 @@ void expect_final_state(const fs::path& file, const proto::MatchJournal& journal
 }
 
 TEST(ReplayCli, AJournalFilePlaysToTheEndAndWritesItsReplayedFinalState) {
-    TempDir dir("file");
+    ReplayDir dir("file");
     write_file(dir.path / "match.json", proto::journal_to_json(short_journal()).dump());
     const fs::path final_state = dir.path / "final.json";
     const ClientRun run = run_client({"--replay", (dir.path / "match.json").string(),
@@ -147,7 +147,7 @@ TEST(ReplayCli, AJournalFilePlaysToTheEndAndWritesItsReplayedFinalState) {
 // --replay-at past the end opens the replay finished: the same final state, game_end's reason
 // included (the outcomes jumped over reach the HUD too).
 TEST(ReplayCli, OpenedAtTheEndItWritesTheSameFinalState) {
-    TempDir dir("end");
+    ReplayDir dir("end");
     write_file(dir.path / "match.json", proto::journal_to_json(short_journal()).dump());
     const fs::path final_state = dir.path / "final.json";
     const ClientRun run = run_client({"--replay", (dir.path / "match.json").string(), "--replay-at",
@@ -160,7 +160,7 @@ TEST(ReplayCli, OpenedAtTheEndItWritesTheSameFinalState) {
 // The replay window holds the match window's unattended modes: --timeout ends it with code 3
 // saying where the replay was.
 TEST(ReplayCli, ATimeoutEndsItWithCodeThreeSayingWhereTheReplayWas) {
-    TempDir dir("timeout");
+    ReplayDir dir("timeout");
     write_file(dir.path / "match.json", proto::journal_to_json(short_journal()).dump());
     const ClientRun run =
         run_client({"--replay", (dir.path / "match.json").string(), "--replay-at", "1", "--timeout",
@@ -174,7 +174,7 @@ TEST(ReplayCli, ATimeoutEndsItWithCodeThreeSayingWhereTheReplayWas) {
 
 // --screenshot with --report: the PNG and, as for a match, what it shows (the replay's pieces).
 TEST(ReplayCli, AScreenshotWithAReportShowsTheReplayedPieces) {
-    TempDir dir("shot");
+    ReplayDir dir("shot");
     write_file(dir.path / "match.json", proto::journal_to_json(short_journal()).dump());
     const fs::path png = dir.path / "replay.png";
     const fs::path report = dir.path / "report.json";
@@ -206,7 +206,7 @@ TEST(ReplayCli, AScreenshotWithAReportShowsTheReplayedPieces) {
 }
 
 TEST(ReplayCli, AJournalFromAServersHttpPortPlaysTheSame) {
-    TempDir dir("url");
+    ReplayDir dir("url");
     write_file(dir.path / "index.html", "<!doctype html><title>carrom</title>");
     write_file(dir.path / "m-0001.json", proto::journal_to_json(short_journal()).dump());
     ServerProcess server(web_server(dir.path));
@@ -222,7 +222,7 @@ TEST(ReplayCli, AJournalFromAServersHttpPortPlaysTheSame) {
 // A match two carrom-bots played through carrom-server --data, replayed from the server's own
 // GET /matches/ID: the client ends on the state the journal replays to.
 TEST(ReplayCli, AMatchFromTheServersMatchApiPlaysToItsFinalState) {
-    TempDir dir("api");
+    ReplayDir dir("api");
     write_file(dir.path / "index.html", "<!doctype html><title>carrom</title>");
     ServerProcess server(web_server(dir.path, (dir.path / "c.db").string()));
     ASSERT_NE(server.port(), 0);
@@ -274,7 +274,7 @@ void expect_refused(const std::vector<std::string>& args, const std::string& nee
 }
 
 TEST(ReplayCli, JournalsItCannotReplayExitTwoWithOneLine) {
-    TempDir dir("bad");
+    ReplayDir dir("bad");
     write_file(dir.path / "broken.json", "{\"format\": 1, \"match\": ");
     expect_refused({"--replay", (dir.path / "broken.json").string()}, "(malformed_json)");
 
@@ -303,7 +303,7 @@ TEST(ReplayCli, JournalsItCannotReplayExitTwoWithOneLine) {
 class HttpGet : public ::testing::Test {
 protected:
     static void SetUpTestSuite() {
-        dir_ = new TempDir("http");
+        dir_ = new ReplayDir("http");
         write_file(dir_->path / "index.html", "<!doctype html><title>carrom</title>");
         write_file(dir_->path / "big.json", std::string(5000, ' ') + "{}");
         server_ = new ServerProcess(web_server(dir_->path));
@@ -312,10 +312,10 @@ protected:
         delete server_;
         delete dir_;
     }
-    static TempDir* dir_;
+    static ReplayDir* dir_;
     static ServerProcess* server_;
 };
-TempDir* HttpGet::dir_ = nullptr;
+ReplayDir* HttpGet::dir_ = nullptr;
 ServerProcess* HttpGet::server_ = nullptr;
 
 TEST_F(HttpGet, AFileComesBackWhole) {
