@@ -134,8 +134,7 @@ void ServerRecords::take(const ApiFetcher::Done& done) {
         if (auto* record = std::get_if<PlayerRecord>(&parsed)) {
             record->name = name; // as the room spells it (the server's may differ in case)
             book_.record(*record, why.rfind("base", 0) == 0);
-        } else if ((why == "base" || why == "late") &&
-                   done.answer.body.find("\"store_disabled\"") == std::string::npos) {
+        } else if ((why == "base" || why == "late") && !keeps_no_players(done.answer)) {
             // A busy store (503), the rate limit (429) or no answer: once more in 1 s (a server
             // that keeps no players, 503 store_disabled, is not asked again). Until then the
             // seat or the lobby line stays as it was.

@@ -176,7 +176,7 @@ std::optional<std::string> status_problem(const ApiAnswer& answer, const json& b
         return std::string("The server has had too many requests from this address (429): try "
                            "again in a moment.");
     }
-    if (answer.status == 503 && code == "store_disabled") {
+    if (keeps_no_players(answer)) {
         return std::string("This server keeps no players or ratings (it runs without a store).");
     }
     if (answer.status == 503) {
@@ -199,6 +199,18 @@ std::string unreadable(const std::string& what, const std::string& problem) {
 }
 
 } // namespace player_api_json
+
+bool keeps_no_players(const ApiAnswer& answer) {
+    if (answer.status != 503) {
+        return false;
+    }
+    const auto body = nlohmann::json::parse(answer.body, nullptr, false);
+    if (!body.is_object() || !body.contains("error") || !body.at("error").is_object()) {
+        return false;
+    }
+    const auto& error = body.at("error");
+    return error.contains("code") && error.at("code") == "store_disabled";
+}
 
 std::variant<PlayerRecord, std::string> parse_player_answer(const std::string& name,
                                                             const ApiAnswer& answer) {
@@ -242,8 +254,7 @@ std::variant<Leaderboard, std::string> parse_leaderboard_answer(const ApiAnswer&
     if (answer.status == 429) {
         return std::string("Too many requests: try the leaderboard again in a few seconds.");
     }
-    if (answer.status == 503 && body.is_object() && body.contains("error") &&
-        body["error"].is_object() && body["error"].value("code", "") == "store_disabled") {
+    if (keeps_no_players(answer)) {
         return std::string("This server keeps no ratings, so it has no leaderboard.");
     }
     if (auto problem = player_api_json::status_problem(answer, body)) {

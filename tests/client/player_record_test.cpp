@@ -95,6 +95,16 @@ TEST(PlayerRecord, ADrawHasANullWinner) {
     EXPECT_EQ(std::get<PlayerRecord>(got).matches[0].reason, "target_points");
 }
 
+TEST(PlayerRecord, OnlyA503StoreDisabledSaysTheServerKeepsNoPlayers) {
+    const std::string disabled = R"({"error":{"code":"store_disabled","message":"No store."}})";
+    EXPECT_TRUE(keeps_no_players(ApiAnswer{503, disabled, ""}));
+    EXPECT_FALSE(keeps_no_players(ApiAnswer{503, R"({"error":{"code":"store_busy"}})", ""}));
+    EXPECT_FALSE(keeps_no_players(ApiAnswer{500, disabled, ""}));
+    EXPECT_FALSE(keeps_no_players(ApiAnswer{503, "store_disabled", ""}));
+    EXPECT_FALSE(keeps_no_players(ApiAnswer{503, R"({"error":"store_disabled"})", ""}));
+    EXPECT_FALSE(keeps_no_players(ApiAnswer{0, "", "The server did not answer."}));
+}
+
 TEST(PlayerRecord, NotJsonIsASentence) {
     EXPECT_EQ(player_problem(200, "<html>"),
               "The server sent the record of Asha in a form this client does not read (not "

@@ -67,6 +67,10 @@ struct ApiAnswer {
     std::string failure;
 };
 
+// The server keeps no players or ratings (503 with the error code store_disabled): asking it
+// again changes nothing.
+bool keeps_no_players(const ApiAnswer& answer);
+
 // The sentence for an answer that is not a 200 (none came, 429, 503, 404, ...), or none.
 std::optional<std::string> answer_problem(const ApiAnswer& answer);
 
