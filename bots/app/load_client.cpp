@@ -288,6 +288,7 @@ private:
 
     void on_message(const proto::Snapshot&, Clock::time_point) {}
     void on_message(const proto::Pong&, Clock::time_point) {}
+    void on_message(const proto::Redirect&, Clock::time_point) {}
 
     void maybe_shoot() {
         if (!room_ || closing_ || room_->you < 0 || room_->phase != proto::Phase::Aiming ||

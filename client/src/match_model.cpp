@@ -66,7 +66,8 @@ void MatchModel::handle(const proto::ServerMessage& message, double local_s) {
                    [&](const proto::Event& m) { on_event(m, local_s); },
                    [&](const proto::ShotResult& m) { on_shot_result(m, local_s); },
                    [&](const proto::Error& m) { on_error(m, local_s); },
-                   [&](const proto::Pong&) {}, // the session measures round trips
+                   [&](const proto::Pong&) {},     // the session measures round trips
+                   [&](const proto::Redirect&) {}, // the session follows it
                },
                message);
 }
@@ -286,65 +287,67 @@ void MatchModel::cue(int turn, double t_s, SoundKind kind, double volume) {
 }
 
 void MatchModel::on_event(const proto::Event& m, double local_s) {
-    std::visit(Overloaded{
-                   [&](const proto::CollisionEvent& e) {
-                       cue(e.turn, e.t_s, SoundKind::Click, loudness_from_impulse(e.impulse));
-                   },
-                   [&](const proto::CushionEvent& e) {
-                       cue(e.turn, e.t_s, SoundKind::Cushion,
-                           0.8 * loudness_from_impulse(e.impulse));
-                   },
-                   [&](const proto::PocketEvent& e) { cue(e.turn, e.t_s, SoundKind::Pocket, 1.0); },
-                   [&](const proto::FoulEvent&) {}, // said with its stroke's shot_result
-                   [&](const proto::QueenEvent& e) {
-                       view_.queen = e.queen;
-                       say(queen_sentence(e.queen, seat_name(e.queen.seat)), Tone::Info, local_s);
-                   },
-                   [&](const proto::DueEvent& e) { on_due(e, local_s); },
-                   [&](const proto::TurnEvent& e) {
-                       server_clock_.one_way(e.server_time_ms, local_s);
-                       view_.turn = e.turn;
-                       view_.to_play = e.seat;
-                       view_.deadline_ms = e.deadline_ms;
-                       view_.phase = proto::Phase::Aiming;
-                       view_.aim_x_px.reset();
-                       // Not said: the status line names the seat to play ("Your turn").
-                   },
-                   [&](const proto::BoardEndEvent& e) { on_board_end(e, local_s); },
-                   [&](const proto::GameEndEvent& e) {
-                       for (std::size_t i = 0; i < e.scores.size() && i < view_.seats.size(); ++i) {
-                           view_.seats[i].score = e.scores[i];
-                       }
-                       view_.winner = e.winner;
-                       view_.phase = proto::Phase::GameOver;
-                       view_.board_summary.reset(); // the game-over panel says it
-                       view_.result =
-                           GameResult{e.winner, e.reason, e.scores, names_of(view_.seats), e.rule};
-                       on_forfeit_end(e, local_s);
-                   },
-                   [&](const proto::PlayerDroppedEvent& e) {
-                       if (e.seat >= 0 && static_cast<std::size_t>(e.seat) < view_.seats.size()) {
-                           view_.seats[static_cast<std::size_t>(e.seat)].connected = false;
-                       }
-                       const auto grace_s = (e.grace_deadline_ms - e.server_time_ms) / 1000;
-                       say(seat_name(e.seat) + " lost the connection; they have " +
-                               std::to_string(grace_s) + " s to come back",
-                           Tone::Error, local_s);
-                   },
-                   [&](const proto::PlayerReturnedEvent& e) {
-                       if (e.seat >= 0 && static_cast<std::size_t>(e.seat) < view_.seats.size()) {
-                           view_.seats[static_cast<std::size_t>(e.seat)].connected = true;
-                       }
-                       say(seat_name(e.seat) + " is back", Tone::Info, local_s);
-                   },
-                   [&](const proto::AimEvent& e) {
-                       if (e.seat != view_.you && e.turn == view_.turn) {
-                           view_.aim_x_px = e.x_px;
-                       }
-                   },
-                   [&](const proto::EmoteEvent& e) { emotes_.receive(e.seat, e.emote, local_s); },
-               },
-               m);
+    std::visit(
+        Overloaded{
+            [&](const proto::CollisionEvent& e) {
+                cue(e.turn, e.t_s, SoundKind::Click, loudness_from_impulse(e.impulse));
+            },
+            [&](const proto::CushionEvent& e) {
+                cue(e.turn, e.t_s, SoundKind::Cushion, 0.8 * loudness_from_impulse(e.impulse));
+            },
+            [&](const proto::PocketEvent& e) { cue(e.turn, e.t_s, SoundKind::Pocket, 1.0); },
+            [&](const proto::FoulEvent&) {}, // said with its stroke's shot_result
+            [&](const proto::QueenEvent& e) {
+                view_.queen = e.queen;
+                say(queen_sentence(e.queen, seat_name(e.queen.seat)), Tone::Info, local_s);
+            },
+            [&](const proto::DueEvent& e) { on_due(e, local_s); },
+            [&](const proto::TurnEvent& e) {
+                server_clock_.one_way(e.server_time_ms, local_s);
+                view_.turn = e.turn;
+                view_.to_play = e.seat;
+                view_.deadline_ms = e.deadline_ms;
+                view_.phase = proto::Phase::Aiming;
+                view_.aim_x_px.reset();
+                // Not said: the status line names the seat to play ("Your turn").
+            },
+            [&](const proto::BoardEndEvent& e) { on_board_end(e, local_s); },
+            [&](const proto::GameEndEvent& e) {
+                for (std::size_t i = 0; i < e.scores.size() && i < view_.seats.size(); ++i) {
+                    view_.seats[i].score = e.scores[i];
+                }
+                view_.winner = e.winner;
+                view_.phase = proto::Phase::GameOver;
+                view_.board_summary.reset(); // the game-over panel says it
+                view_.result =
+                    GameResult{e.winner, e.reason, e.scores, names_of(view_.seats), e.rule};
+                on_forfeit_end(e, local_s);
+            },
+            [&](const proto::PlayerDroppedEvent& e) {
+                if (e.seat >= 0 && static_cast<std::size_t>(e.seat) < view_.seats.size()) {
+                    view_.seats[static_cast<std::size_t>(e.seat)].connected = false;
+                }
+                const auto grace_s = (e.grace_deadline_ms - e.server_time_ms) / 1000;
+                say(seat_name(e.seat) + " lost the connection; they have " +
+                        std::to_string(grace_s) + " s to come back",
+                    Tone::Error, local_s);
+            },
+            [&](const proto::PlayerReturnedEvent& e) {
+                if (e.seat >= 0 && static_cast<std::size_t>(e.seat) < view_.seats.size()) {
+                    view_.seats[static_cast<std::size_t>(e.seat)].connected = true;
+                }
+                say(seat_name(e.seat) + " is back", Tone::Info, local_s);
+            },
+            [&](const proto::AimEvent& e) {
+                if (e.seat != view_.you && e.turn == view_.turn) {
+                    view_.aim_x_px = e.x_px;
+                }
+            },
+            [&](const proto::EmoteEvent& e) { emotes_.receive(e.seat, e.emote, local_s); },
+            [&](const proto::PausedEvent& e) { say(e.message, Tone::Error, local_s); },
+            [&](const proto::ResumedEvent&) { say("The match goes on", Tone::Info, local_s); },
+        },
+        m);
 }
 
 // Dues are the team's: partners owe them together. The server sends one `due` per seat of the

@@ -38,6 +38,9 @@ json encode_body(const Hello& m) {
     if (m.identity) {
         out["identity"] = *m.identity;
     }
+    if (m.follows_redirects) {
+        out["follows_redirects"] = true;
+    }
     return out;
 }
 // "seats" and "bot.seats" go on the wire only when they differ from the singles defaults, so a
@@ -102,6 +105,9 @@ void decode_body(JsonReader& r, Hello& m) {
     }
     if (r.has("identity")) {
         m.identity = r.text("identity", 1, kMaxIdentityBytes);
+    }
+    if (r.has("follows_redirects")) {
+        m.follows_redirects = r.boolean("follows_redirects");
     }
 }
 

@@ -22,12 +22,13 @@ inline constexpr std::array<std::string_view, 10> kClientTypeNames{
     "hello", "create_room", "join_room", "quick_match", "aim",
     "shoot", "rematch",     "leave",     "ping",        "emote"};
 // Same order as the ServerMessage variant.
-inline constexpr std::array<std::string_view, 7> kServerTypeNames{
-    "welcome", "room_state", "snapshot", "event", "shot_result", "error", "pong"};
+inline constexpr std::array<std::string_view, 8> kServerTypeNames{
+    "welcome", "room_state", "snapshot", "event", "shot_result", "error", "pong", "redirect"};
 // Same order as the Event variant.
-inline constexpr std::array<std::string_view, 13> kEventKindNames{
-    "collision", "cushion",        "pocket",          "foul", "queen", "due", "turn", "board_end",
-    "game_end",  "player_dropped", "player_returned", "aim",  "emote"};
+inline constexpr std::array<std::string_view, 15> kEventKindNames{
+    "collision", "cushion",   "pocket",   "foul",           "queen",           "due",
+    "turn",      "board_end", "game_end", "player_dropped", "player_returned", "aim",
+    "emote",     "paused",    "resumed"};
 
 template <std::size_t N>
 std::optional<std::size_t> find_type(const std::array<std::string_view, N>& names,

@@ -309,6 +309,12 @@ json encode_event(const AimEvent& e) {
 json encode_event(const EmoteEvent& e) {
     return json{{"seat", e.seat}, {"emote", to_string(e.emote)}};
 }
+json encode_event(const PausedEvent& e) {
+    return json{{"reason", e.reason}, {"message", e.message}};
+}
+json encode_event(const ResumedEvent&) {
+    return json::object();
+}
 
 int read_turn(JsonReader& r) {
     return static_cast<int>(r.integer("turn", 0, kMaxTurn));
@@ -389,6 +395,11 @@ void decode_event(JsonReader& r, EmoteEvent& e) {
     e.seat = read_seat(r, "seat");
     e.emote = r.enumeration("emote", kEmoteNames, Emote::NiceShot);
 }
+void decode_event(JsonReader& r, PausedEvent& e) {
+    e.reason = r.text("reason", 1, 32);
+    e.message = r.text("message", 0, kMaxTextBytes);
+}
+void decode_event(JsonReader&, ResumedEvent&) {}
 
 json encode_body(const Event& m) {
     json out = std::visit([](const auto& e) { return encode_event(e); }, m);
@@ -475,6 +486,32 @@ json encode_body(const Pong& m) {
 void decode_body(JsonReader& r, Pong& m) {
     m.nonce = r.integer("nonce", 0, kMaxNonce);
     m.server_time_ms = r.integer("server_time_ms", 0, kMaxTimeMs);
+}
+
+// --- redirect ---
+json encode_body(const Redirect& m) {
+    json out{{"url", m.url}, {"reason", m.reason}};
+    if (!m.code.empty()) {
+        out["code"] = m.code;
+        out["as"] = to_string(m.as);
+    }
+    return out;
+}
+void decode_body(JsonReader& r, Redirect& m) {
+    m.url = r.text("url", 6, kMaxUrlBytes);
+    if (r.ok() && m.url.rfind("ws://", 0) != 0 && m.url.rfind("wss://", 0) != 0) {
+        r.fail("url", "must be a ws:// or wss:// URL");
+    }
+    m.reason = r.text("reason", 1, 32);
+    if (r.has("code")) {
+        m.code = r.text("code", kRoomCodeLength, kRoomCodeLength);
+        if (r.ok() && !is_room_code(m.code)) {
+            r.fail("code", "must be 6 characters from " + std::string(kRoomCodeAlphabet));
+        }
+        if (r.has("as")) {
+            m.as = r.enumeration("as", kRoleNames, Role::Player);
+        }
+    }
 }
 
 } // namespace

@@ -197,8 +197,8 @@ void BotRunner::handle(const proto::ServerMessage& message) {
                    [&](const proto::Snapshot& m) { on_snapshot(m); },
                    [&](const proto::Event& m) { on_event(m); },
                    [&](const proto::ShotResult& m) { on_shot_result(m); },
-                   [&](const proto::Error& m) { on_error(m); },
-                   [&](const proto::Pong&) {},
+                   [&](const proto::Error& m) { on_error(m); }, [&](const proto::Pong&) {},
+                   [&](const proto::Redirect&) {}, // the session follows it
                },
                message);
 }

@@ -22,6 +22,10 @@ struct Hello {
     // server accepts only is_identity_key (64 lowercase hex, 256 bits) and refuses anything else
     // with bad_identity. Absent: a guest (docs/ratings.md, "Identity").
     std::optional<std::string> identity = {};
+    // "follows_redirects", optional (default false; sent only when true): the client follows a
+    // `redirect` to another instance of a cluster (docs/cluster.md). Without it the server
+    // answers a room or seat run by another instance with an error naming that instance's URL.
+    bool follows_redirects = false;
     friend bool operator==(const Hello&, const Hello&) = default;
 };
 

@@ -61,6 +61,15 @@ inline constexpr std::string_view kRoomNotFound = "room_not_found";
 inline constexpr std::string_view kRoomFull = "room_full";
 inline constexpr std::string_view kAlreadyInRoom = "already_in_room";
 inline constexpr std::string_view kNotInRoom = "not_in_room";
+// Cluster mode (docs/cluster.md).
+inline constexpr std::string_view kRoomElsewhere =
+    "room_elsewhere"; // the room runs on another instance; the message names its URL
+inline constexpr std::string_view kSeatElsewhere =
+    "seat_elsewhere"; // the resumed seat's match runs on another instance (URL in the message)
+inline constexpr std::string_view kMatchMoving =
+    "match_moving"; // the match's instance stopped; another takes it over: try again shortly
+inline constexpr std::string_view kStoreUnavailable =
+    "store_unavailable"; // the match store does not answer: no new room until it does
 // Game input.
 inline constexpr std::string_view kSpectator = "spectator"; // spectators send no game input
 inline constexpr std::string_view kNotYourTurn = "not_your_turn";
@@ -107,5 +116,6 @@ inline constexpr int kCloseVersionMismatch = 4001; // hello with another protoco
 inline constexpr int kCloseReplaced = 4002;        // the seat was resumed on another connection
 inline constexpr int kCloseSlowClient = 4003;      // write queue bound exceeded
 inline constexpr int kCloseMatchMoved = 4004;      // another instance took the match over: resume
+inline constexpr int kCloseRedirected = 4005;      // after a `redirect`: connect to its URL
 
 } // namespace carrom::proto

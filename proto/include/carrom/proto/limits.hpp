@@ -17,6 +17,7 @@ inline constexpr std::size_t kResumeTokenLength = 32; // lowercase hex, 128 bits
 inline constexpr std::size_t kIdentityKeyLength = 64; // lowercase hex, 256 bits
 inline constexpr std::size_t kMaxIdentityBytes = 128; // the wire's bound; see is_identity_key
 inline constexpr std::size_t kMaxTextBytes = 200;     // error messages, foul descriptions
+inline constexpr std::size_t kMaxUrlBytes = 2000;     // a redirect's URL
 inline constexpr std::size_t kMaxSeats = 4;           // 2 (singles) or 4 (doubles)
 inline constexpr std::size_t kMaxBodies = 64;         // bodies in one board or snapshot
 

@@ -198,10 +198,21 @@ struct EmoteEvent { // "emote": seat `seat` sent the quick reaction `emote` (not
     friend bool operator==(const EmoteEvent&, const EmoteEvent&) = default;
 };
 
+// "paused": the match waits: the server cannot commit its latest stroke (the match store does not
+// answer) and streams nothing of it until it can (docs/cluster.md, "The database down").
+struct PausedEvent {
+    std::string reason;  // "reason": "store"
+    std::string message; // "message": a sentence for the players
+    friend bool operator==(const PausedEvent&, const PausedEvent&) = default;
+};
+struct ResumedEvent { // "resumed": the wait of `paused` is over; the stroke streams now
+    friend bool operator==(const ResumedEvent&, const ResumedEvent&) = default;
+};
+
 // "event": {"type": "event", "kind": <name above>, ...payload fields}.
 using Event = std::variant<CollisionEvent, CushionEvent, PocketEvent, FoulEvent, QueenEvent,
                            DueEvent, TurnEvent, BoardEndEvent, GameEndEvent, PlayerDroppedEvent,
-                           PlayerReturnedEvent, AimEvent, EmoteEvent>;
+                           PlayerReturnedEvent, AimEvent, EmoteEvent, PausedEvent, ResumedEvent>;
 std::string_view event_kind(const Event& event);
 
 struct Foul {
@@ -242,7 +253,21 @@ struct Pong {
     friend bool operator==(const Pong&, const Pong&) = default;
 };
 
-using ServerMessage = std::variant<Welcome, RoomState, Snapshot, Event, ShotResult, Error, Pong>;
+// "redirect": the room or seat the client asked for is run by another instance of the cluster
+// (docs/cluster.md, "Redirects"); sent only to a client whose hello had follows_redirects. The
+// server closes the connection after it (close 4005). The client connects to `url`, says hello
+// (with its resume token when it holds a seat) and, when `code` is set and it holds no seat
+// there, joins that room `as`.
+struct Redirect {
+    std::string url;        // "url": ws:// or wss://, at most kMaxUrlBytes
+    std::string reason;     // "reason": "room", "seat", "quick_match" or "moved"
+    std::string code;       // "code"?: the room to join there; empty when absent
+    Role as = Role::Player; // "as"?: with code: player (default) or spectator
+    friend bool operator==(const Redirect&, const Redirect&) = default;
+};
+
+using ServerMessage =
+    std::variant<Welcome, RoomState, Snapshot, Event, ShotResult, Error, Pong, Redirect>;
 
 std::string_view type_name(const ServerMessage& message);
 
