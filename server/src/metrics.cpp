@@ -56,6 +56,8 @@ std::string Metrics::prometheus_text() const {
            tls_handshakes_total);
     metric(out, "carrom_tls_handshake_failures_total", "counter",
            "TLS handshakes that failed or timed out.", tls_handshake_failures_total);
+    metric(out, "carrom_redirects_total", "counter",
+           "Clients sent to another instance of the cluster (redirect).", redirects_total);
     out << "# HELP carrom_snapshot_lag_seconds Snapshot send time minus its scheduled time.\n"
         << "# TYPE carrom_snapshot_lag_seconds histogram\n";
     for (std::size_t i = 0; i < kLagBucketsMs.size(); ++i) {

@@ -78,6 +78,18 @@ void RoomActor::restore_on_strand(proto::MatchJournal journal,
     });
 }
 
+std::future<void> RoomActor::freeze() {
+    auto frozen = std::make_shared<std::promise<void>>();
+    auto future = frozen->get_future();
+    asio::post(strand_, [self = shared_from_this(), frozen] {
+        self->lost_ = true;
+        self->removed_ = true;
+        self->timer_.cancel();
+        frozen->set_value();
+    });
+    return future;
+}
+
 void RoomActor::lose() {
     asio::post(strand_, [self = shared_from_this()] {
         if (self->lost_) {

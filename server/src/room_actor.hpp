@@ -15,6 +15,7 @@
 #include <atomic>
 #include <cstdint>
 #include <functional>
+#include <future>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -57,6 +58,10 @@ public:
     // message, no stroke confirmation, no bot shot, no timer), closes its members' connections
     // with close code 4004 match_moved and leaves the registry. Any thread.
     void lose();
+    // A draining instance hands the match to another (docs/cluster.md, "Draining"): from now on
+    // the room takes nothing, as after lose(), but keeps its connections (the server tells
+    // them where to go). The future is ready once the room is frozen on its strand.
+    std::future<void> freeze();
     // With a match store: the journal's write confirmations go to the room on its strand. Called
     // once, right after construction (it needs the actor's shared_ptr).
     void bind_journal();

@@ -16,9 +16,11 @@
 #include <algorithm>
 #include <chrono>
 #include <functional>
+#include <future>
 #include <optional>
 #include <stdexcept>
 #include <thread>
+#include <unordered_map>
 #include <vector>
 
 namespace carrom::server {
@@ -83,6 +85,10 @@ void Server::start() {
                 [&core, gate = core.confirmations](const store::MatchId& match,
                                                    const std::string& room_code) {
                     gate->pass([&] { core.match_lost(match, room_code); });
+                },
+                // On the directory's thread, which Server::shutdown stops first.
+                [&core](std::vector<store::QuickPairing> pairings) {
+                    core.quick_paired(std::move(pairings));
                 }});
         }
     }
@@ -92,6 +98,44 @@ void Server::start() {
         impl_->threads.emplace_back([this] { impl_->core.ioc.run(); });
     }
 }
+
+namespace {
+
+using UrlByRoom = std::unordered_map<std::string, std::string>;
+
+// Cluster mode, SIGTERM (docs/cluster.md, "Draining"): every room stops taking anything, the
+// store writes what they journaled, and their unfinished matches go to the other live instances.
+// The room codes handed over, with the URL of the instance that runs each now; null when nothing
+// was handed over (no live instance, or the database does not answer: the matches are claimed as
+// orphans once the lease ends).
+std::shared_ptr<const UrlByRoom> drain(ServerCore& core) {
+    std::vector<std::future<void>> frozen;
+    core.registry.for_each_room(
+        [&](const std::shared_ptr<RoomActor>& room) { frozen.push_back(room->freeze()); });
+    for (auto& f : frozen) {
+        (void)f.wait_for(std::chrono::seconds(2));
+    }
+    if (!core.store->flush(std::chrono::seconds(5))) {
+        spdlog::error("drain: the match store did not write everything; no match handed over");
+        return nullptr;
+    }
+    auto handed = core.cluster()->hand_over();
+    if (!handed.ok()) {
+        spdlog::error("drain: no match handed over: {}", handed.error->message);
+        return nullptr;
+    }
+    if (handed.value.empty()) {
+        return nullptr;
+    }
+    auto urls = std::make_shared<UrlByRoom>();
+    for (const auto& match : handed.value) {
+        (*urls)[match.room_code] = match.public_url;
+    }
+    spdlog::info("drain: {} matches handed over", handed.value.size());
+    return urls;
+}
+
+} // namespace
 
 void Server::shutdown() {
     if (impl_->stopped) {
@@ -106,6 +150,10 @@ void Server::shutdown() {
     if (impl_->listener) {
         impl_->listener->stop();
     }
+    std::shared_ptr<const UrlByRoom> moved;
+    if (core.cluster() != nullptr && !impl_->threads.empty()) {
+        moved = drain(core);
+    }
     std::vector<std::shared_ptr<WsSession>> sessions;
     {
         std::lock_guard lock(core.sessions_mutex);
@@ -116,7 +164,11 @@ void Server::shutdown() {
         }
     }
     for (auto& s : sessions) {
-        s->shutdown();
+        if (moved) {
+            s->move_or_shutdown(moved);
+        } else {
+            s->shutdown();
+        }
     }
     sessions.clear();
     const auto deadline =

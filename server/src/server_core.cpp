@@ -3,6 +3,7 @@
 #include "bot_seat_name.hpp"
 
 #include "room_actor.hpp"
+#include "ws_session.hpp"
 
 #include "carrom/proto/journal_replay.hpp"
 
@@ -55,7 +56,16 @@ void ServerCore::remove_address(const std::string& address) {
 
 std::variant<std::shared_ptr<RoomActor>, proto::Error>
 ServerCore::create_room(proto::RuleSet rule_set, const proto::RoomOptions& options, int seats,
-                        bool server_bots, bool rated) {
+                        bool server_bots, bool rated, std::string code) {
+    if (store::Cluster* in_cluster = cluster(); in_cluster != nullptr && code.empty()) {
+        auto reserved = in_cluster->take_room_code();
+        if (!reserved) {
+            return proto::Error{std::string(proto::code::kStoreUnavailable),
+                                "No new room now: the server's database does not answer. Try "
+                                "again in a moment."};
+        }
+        code = std::move(*reserved);
+    }
     room::RoomConfig config;
     config.rule_set = rule_set;
     // A game against the server's bots gives its players the longer of the two default clocks;
@@ -72,7 +82,10 @@ ServerCore::create_room(proto::RuleSet rule_set, const proto::RoomOptions& optio
     config.server_version = CARROM_SERVER_VERSION;
     config.aim_assist = !rated;
     auto created = registry.create_room(
-        [&](const std::string& code) { return std::make_shared<RoomActor>(*this, code, config); });
+        [&](const std::string& c) { return std::make_shared<RoomActor>(*this, c, config); }, code);
+    if (std::holds_alternative<proto::Error>(created) && !code.empty()) {
+        cluster()->release_room_code(code); // too many rooms here
+    }
     if (const auto* room = std::get_if<std::shared_ptr<RoomActor>>(&created)) {
         if (rated) {
             (*room)->set_rated(); // before bind_journal: the journal reads it
@@ -83,6 +96,23 @@ ServerCore::create_room(proto::RuleSet rule_set, const proto::RoomOptions& optio
                      seats);
     }
     return created;
+}
+
+void ServerCore::quick_paired(std::vector<store::QuickPairing> pairings) {
+    for (store::QuickPairing& pairing : pairings) {
+        std::shared_ptr<WsSession> session;
+        {
+            const std::lock_guard lock(tickets_mutex);
+            const auto it = tickets.find(pairing.ticket);
+            if (it != tickets.end()) {
+                session = it->second.lock();
+                tickets.erase(it);
+            }
+        }
+        if (session) {
+            session->on_quick_paired(std::move(pairing));
+        } // else the player left: the other instance's room gives the seat to a bot
+    }
 }
 
 void ServerCore::load_identities() {
@@ -97,6 +127,10 @@ void ServerCore::load_identities() {
 
 void ServerCore::remove_room(const std::string& code) {
     registry.remove_room(code);
+    if (store::Cluster* in_cluster = cluster(); in_cluster != nullptr && !stopping.load()) {
+        // Free for the cluster again; a room stopped at shutdown keeps its code with its match.
+        in_cluster->release_room_code(code);
+    }
     metrics.rooms.fetch_sub(1, std::memory_order_relaxed);
     spdlog::info("room {} closed", code);
 }

@@ -17,6 +17,7 @@
 #include "carrom/server/registry.hpp"
 #include "carrom/server/settings.hpp"
 #include "carrom/server/static_site.hpp"
+#include "store/cluster.hpp"
 #include "store/match_store.hpp"
 
 #include <boost/asio/thread_pool.hpp>
@@ -83,11 +84,21 @@ struct ServerCore {
     void remove_address(const std::string& address);
 
     // A new room of `seats` seats (2 or 4; counted in metrics, logged), or an error. A rated
-    // room (docs/ratings.md) has no aim assist.
+    // room (docs/ratings.md) has no aim assist. In cluster mode its code is one the cluster
+    // reserved for this instance (`code`, when given: one reserved already), or
+    // store_unavailable when none is (the database does not answer).
     std::variant<std::shared_ptr<RoomActor>, proto::Error>
     create_room(proto::RuleSet rule_set, const proto::RoomOptions& options, int seats = 2,
-                bool server_bots = false, bool rated = false);
+                bool server_bots = false, bool rated = false, std::string code = {});
     void remove_room(const std::string& code);
+
+    // Cluster mode (docs/cluster.md): the store's cluster, or null.
+    store::Cluster* cluster() const { return store ? store->cluster() : nullptr; }
+    // Quick-match tickets of this instance's waiting sessions, by ticket.
+    std::mutex tickets_mutex;
+    std::unordered_map<std::int64_t, std::weak_ptr<WsSession>> tickets;
+    // Another instance paired these tickets (on the directory's thread): their sessions move.
+    void quick_paired(std::vector<store::QuickPairing> pairings);
 
     // At start, before the I/O threads run: every unfinished match in the store whose journal
     // replays with this build is restored in a room under its old code (docs/store.md,

@@ -19,10 +19,6 @@ namespace websocket = beast::websocket;
 
 namespace {
 
-// Sent with shutting_down before close 1012 "restarting" (SIGINT/SIGTERM).
-constexpr const char* kRestartingText =
-    "The server is restarting; reconnect with your resume token.";
-
 // Frames above this are refused by Beast itself (close 1009 without an error message); frames
 // between max_message_bytes and this get a "too_large" error first.
 std::size_t hard_frame_limit(std::size_t max_message_bytes) {
@@ -42,7 +38,8 @@ WsSession::WsSession(ServerCore& core, ServerStream stream)
       idle_timer_(ws_.get_executor()), kill_timer_(ws_.get_executor()),
       quick_timer_(ws_.get_executor()), rated_timer_(ws_.get_executor()),
       queue_(core.settings.max_queue_bytes, core.settings.snapshot_backlog),
-      limiter_(core.settings.max_rate, core.settings.rate_burst, core.clock.now_ms()) {}
+      limiter_(core.settings.max_rate, core.settings.rate_burst, core.clock.now_ms()),
+      partner_timer_(ws_.get_executor()) {}
 
 WsSession::~WsSession() = default;
 
@@ -171,6 +168,13 @@ void WsSession::handle(const proto::ClientMessage& message) {
     }
     if (!hello_done_) {
         send_error(proto::code::kHelloRequired, "Send hello first.");
+        return;
+    }
+    if (hello_pending_) {
+        // The resumed seat is being located in the cluster: this input follows the welcome.
+        if (deferred_.size() < 16) {
+            deferred_.push_back(message);
+        }
         return;
     }
     if (const auto* ping = std::get_if<proto::Ping>(&message)) {
@@ -363,6 +367,8 @@ void WsSession::end() {
     quick_waiting_ = false;
     rated_timer_.cancel();
     rated_waiting_ = false;
+    partner_timer_.cancel();
+    withdraw_cluster_ticket();
     if (!accepted_) {
         return;
     }

@@ -9,8 +9,12 @@
 #include "rated_queue.hpp"
 #include "server_stream.hpp"
 
+#include "carrom/server/registry.hpp"
+#include "store/cluster.hpp"
+
 #include "carrom/proto/client_messages.hpp"
 #include "carrom/proto/error.hpp"
+#include "carrom/proto/server_messages.hpp"
 #include "carrom/room/peer.hpp"
 #include "carrom/server/rate_limiter.hpp"
 #include "carrom/server/write_queue.hpp"
@@ -26,6 +30,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -33,6 +38,10 @@ namespace carrom::server {
 
 class RoomActor;
 struct ServerCore;
+
+// Sent with shutting_down before close 1012 "restarting" (SIGINT/SIGTERM).
+inline constexpr const char* kRestartingText =
+    "The server is restarting; reconnect with your resume token.";
 
 // A close that does not finish within this is cut off (the socket is closed).
 inline constexpr std::chrono::milliseconds kCloseDeadline{3000};
@@ -59,6 +68,13 @@ public:
     void release_room() { room_.reset(); }
     // Server shutdown (any thread).
     void shutdown();
+    // Cluster mode (any thread). Another instance paired this session's quick-match ticket.
+    void on_quick_paired(store::QuickPairing pairing);
+    // A draining instance handed this session's room to another instance: the client goes
+    // there (url_by_room: room code to the instance's URL); any other session gets
+    // shutting_down, as at shutdown().
+    void move_or_shutdown(
+        std::shared_ptr<const std::unordered_map<std::string, std::string>> url_by_room);
 
 private:
     void on_accept(beast::error_code ec);
@@ -67,6 +83,8 @@ private:
     void handle_text(std::string_view text);
     void handle(const proto::ClientMessage& message);
     void handle_hello(const proto::Hello& hello);
+    // The welcome of a hello (record: the resumed seat's player; none: a new player).
+    void finish_hello(const proto::Hello& hello, std::optional<PlayerRecord> record);
     void handle_create(const proto::CreateRoom& create);
     void handle_join(const proto::JoinRoom& join);
     void handle_quick_match(const proto::QuickMatch& quick);
@@ -99,6 +117,24 @@ private:
     // The room refused this session's join or resume (called on the room's strand): the client
     // gets the error, and the session forgets the room unless it has entered another meanwhile.
     void on_room_refused(const std::shared_ptr<RoomActor>& room, const proto::Error& error);
+    // ws_session_cluster.cpp: cluster mode (docs/cluster.md, "Rooms across the cluster").
+    // `redirect` for a client that follows it (then close 4005).
+    void redirect(proto::Redirect to);
+    // join_room of a room not here, hello with a resume token not known here: asks the
+    // cluster's directory, answers on the strand (redirect, room_elsewhere/seat_elsewhere,
+    // match_moving, or as a server alone would).
+    void locate_room(const proto::JoinRoom& join);
+    void on_room_located(const proto::JoinRoom& join,
+                         const store::Loaded<store::RoomLocation>& located);
+    void locate_seat(const proto::Hello& hello);
+    void on_seat_located(const proto::Hello& hello,
+                         const store::Loaded<store::RoomLocation>& located);
+    // Quick match across instances: a ticket in the cluster (singles, a client that follows
+    // redirects), withdrawn with the local wait.
+    void enqueue_in_cluster(proto::RuleSet rule_set);
+    void on_cluster_enqueued(std::uint64_t generation, proto::RuleSet rule_set,
+                             const store::Loaded<store::QuickEnqueued>& enqueued);
+    void withdraw_cluster_ticket();
     void send_now(room::Outgoing message);
     void send_error(std::string_view code, std::string message);
     void fail(std::string_view code, std::string message, int close_code);
@@ -143,6 +179,16 @@ private:
     std::string name_;
     std::string token_;
     std::shared_ptr<RoomActor> room_;
+    proto::Role role_ = proto::Role::Player; // in room_
+
+    // Cluster mode.
+    bool follows_redirects_ = false;             // the hello said so
+    bool hello_pending_ = false;                 // a resume's seat is being located: input waits
+    std::vector<proto::ClientMessage> deferred_; // input that came while hello_pending_
+    bool ticket_pending_ = false;                // a quick-match ticket is being enqueued
+    std::uint64_t ticket_generation_ = 0; // counts stop_quick_match: an older answer is stale
+    std::int64_t ticket_ = 0;             // this session's quick-match ticket in the cluster, or 0
+    asio::steady_timer partner_timer_;    // a paired room: a bot takes the partner's seat if due
 };
 
 } // namespace carrom::server

@@ -36,6 +36,7 @@ void WsSession::handle_hello(const proto::Hello& hello) {
     hello_done_ = true;
     hello_timer_.cancel();
     name_ = hello.name;
+    follows_redirects_ = hello.follows_redirects;
     std::optional<PlayerRecord> record;
     if (hello.resume_token) {
         record = core_.registry.find_player(*hello.resume_token);
@@ -44,10 +45,18 @@ void WsSession::handle_hello(const proto::Hello& hello) {
             // restart"): the store kept the token's hash.
             record = core_.claim_restored_seat(*hello.resume_token);
         }
-        if (!record) {
-            send_error(proto::code::kBadToken,
-                       "That resume token is unknown or expired; you join as a new player.");
+        if (!record && core_.cluster()) {
+            locate_seat(hello); // another instance may run the seat's match
+            return;
         }
+    }
+    finish_hello(hello, std::move(record));
+}
+
+void WsSession::finish_hello(const proto::Hello& hello, std::optional<PlayerRecord> record) {
+    if (hello.resume_token && !record) {
+        send_error(proto::code::kBadToken,
+                   "That resume token is unknown or expired; you join as a new player.");
     }
     if (!record) {
         record = core_.registry.new_player();
@@ -138,6 +147,10 @@ void WsSession::handle_join(const proto::JoinRoom& join) {
         return;
     }
     auto room = core_.registry.find_room(join.code);
+    if (!room && core_.cluster()) {
+        locate_room(join); // another instance may run it
+        return;
+    }
     if (!room) {
         send_error(proto::code::kRoomNotFound, "No room has the code " + join.code + ".");
         return;
@@ -154,6 +167,7 @@ void WsSession::enter_room(const std::shared_ptr<RoomActor>& room, proto::Role r
     }
     stop_quick_match();
     room_ = room;
+    role_ = role;
     if (role == proto::Role::Player) {
         core_.registry.set_player_room(token_, room->code());
     }
@@ -187,8 +201,12 @@ void WsSession::handle_quick_match(const proto::QuickMatch& quick) {
             core_.registry.quick_match(quick.rule_set, quick.seats, player_id_, weak_from_this());
         if (!group) {
             // Queued (or already queued): paired when the next player asks, or given a bot once
-            // the wait is over. A repeated quick_match keeps the first wait.
+            // the wait is over. A repeated quick_match keeps the first wait. In a cluster, a
+            // player waiting on another instance may be paired too.
             arm_quick_match_wait(quick.rule_set, quick.seats);
+            if (quick.seats == 2) {
+                enqueue_in_cluster(quick.rule_set);
+            }
             return;
         }
         std::vector<std::shared_ptr<WsSession>> partners;
@@ -242,6 +260,8 @@ void WsSession::arm_quick_match_wait(proto::RuleSet rule_set, int seats) {
 }
 
 void WsSession::stop_quick_match() {
+    ++ticket_generation_;
+    withdraw_cluster_ticket();
     if (player_id_ >= 0) {
         (void)core_.registry.cancel_quick_match(player_id_);
         (void)core_.rated_queue.remove(player_id_);

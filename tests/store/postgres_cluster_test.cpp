@@ -26,10 +26,12 @@ struct LostLog {
     std::mutex mutex;
     std::vector<std::string> lines;
     ClusterHandlers handlers() {
-        return ClusterHandlers{{}, [this](const MatchId& match, const std::string& room) {
+        return ClusterHandlers{{},
+                               [this](const MatchId& match, const std::string& room) {
                                    const std::lock_guard lock(mutex);
                                    lines.push_back(match + " " + room);
-                               }};
+                               },
+                               {}};
     }
     std::vector<std::string> seen() {
         const std::lock_guard lock(mutex);

@@ -45,11 +45,11 @@ TEST(PostgresStoreOpen, ANewDatabaseGetsTheSchemaWithTheClusterColumnsAndInstanc
     const std::string database = test::postgres_server().create_database();
     ASSERT_NO_FATAL_FAILURE(store_one_match(database));
     EXPECT_EQ(query(database, "SELECT application, version FROM carrom_schema"),
-              "carrom-match-store|3\n");
+              "carrom-match-store|4\n");
     EXPECT_EQ(query(database, "SELECT table_name FROM information_schema.tables WHERE "
                               "table_schema = 'public' ORDER BY table_name"),
-              "carrom_schema\nentries\nidentities\ninstances\nmatches\nplayers\nrated_seats\n"
-              "rating_changes\nratings\nseat_tokens\n");
+              "carrom_schema\nentries\nidentities\ninstances\nmatches\nplayers\nquick_tickets\n"
+              "rated_seats\nrating_changes\nratings\nrooms\nseat_tokens\n");
     EXPECT_EQ(query(database, "SELECT id, owner_instance IS NULL, owner_epoch FROM matches"),
               "m1|t|0\n");
 }
@@ -57,17 +57,20 @@ TEST(PostgresStoreOpen, ANewDatabaseGetsTheSchemaWithTheClusterColumnsAndInstanc
 TEST(PostgresStoreOpen, ASchemaOneDatabaseGetsTheRatingsAndClusterTablesAndKeepsItsMatches) {
     const std::string database = test::postgres_server().create_database();
     ASSERT_NO_FATAL_FAILURE(store_one_match(database));
-    // Back to schema 1: without migration 2's and 3's tables.
-    query(database, "DROP TABLE rating_changes, rated_seats, ratings, identities, instances; "
-                    "DROP INDEX matches_owner; UPDATE carrom_schema SET version = 1");
+    // Back to schema 1: without migration 2's, 3's and 4's tables.
+    query(database, "DROP TABLE rating_changes, rated_seats, ratings, identities, instances, "
+                    "rooms, quick_tickets; DROP INDEX matches_owner, matches_open_room, "
+                    "seat_tokens_hash; ALTER TABLE matches DROP COLUMN handed_over; "
+                    "UPDATE carrom_schema SET version = 1");
     auto opened =
         PostgresMatchStore::open(test::postgres_server().url(database), test::fast_options());
     ASSERT_NE(opened.store, nullptr) << opened.error->message;
-    EXPECT_EQ(query(database, "SELECT version FROM carrom_schema"), "3\n");
+    EXPECT_EQ(query(database, "SELECT version FROM carrom_schema"), "4\n");
     EXPECT_EQ(query(database, "SELECT count(*) FROM information_schema.tables WHERE "
                               "table_schema = 'public' AND table_name IN ('identities', "
-                              "'ratings', 'rated_seats', 'rating_changes', 'instances')"),
-              "5\n");
+                              "'ratings', 'rated_seats', 'rating_changes', 'instances', 'rooms', "
+                              "'quick_tickets')"),
+              "7\n");
     EXPECT_TRUE(opened.store->journal("m1").value.has_value());
     EXPECT_TRUE(opened.store->load_players().ok());
 }

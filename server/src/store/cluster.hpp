@@ -29,6 +29,41 @@ struct ClusterStatus {
     std::uint64_t matches_lost_total = 0; // matches another instance claimed from this one
 };
 
+// Where a room (by its code) or a seat's match (by its resume token) runs in the cluster.
+struct RoomLocation {
+    enum class Where {
+        Nowhere,   // no such room, or no unfinished match holds the seat
+        Elsewhere, // another live instance runs it: public_url
+        Moving,    // its instance stopped (or handed it here) and it is not running yet: retry
+    };
+    Where where = Where::Nowhere;
+    std::string instance_id;
+    std::string public_url;
+    std::string room_code;
+};
+
+// A quick-match ticket of this instance that an instance of the cluster paired: its player goes
+// to room_code at room_url.
+struct QuickPairing {
+    std::int64_t ticket = 0;
+    std::string room_code;
+    std::string room_url;
+};
+
+// What a draining instance did with a match it ran (hand_over).
+struct HandedMatch {
+    MatchId match;
+    std::string room_code;
+    std::string instance_id; // the instance that runs it now
+    std::string public_url;
+};
+
+struct QuickEnqueued {
+    bool paired = false;     // true: run room_code here; the other ticket's player comes to it
+    std::int64_t ticket = 0; // paired: the other instance's ticket; else this instance's new one
+    std::string room_code;   // paired: the room's code (reserved for this instance)
+};
+
 struct ClusterHandlers {
     // Matches this instance has just claimed (takeover), each with its journal and seat tokens,
     // to run from where the journal ends. Called on the cluster thread.
@@ -37,7 +72,13 @@ struct ClusterHandlers {
     // its room. Called once per match, on the cluster thread or the store's writer thread,
     // before the failed write's on_written(false) of a stroke that found it lost.
     std::function<void(const MatchId& match, const std::string& room_code)> on_lost;
+    // Tickets of this instance's waiting players that another instance paired (quick match
+    // across instances). Called on the directory's thread.
+    std::function<void(std::vector<QuickPairing>)> on_paired;
 };
+
+// The answer to a directory request, on the directory's thread (keep it short: post it on).
+template <class T> using Answer = std::function<void(Loaded<T>)>;
 
 class Cluster {
 public:
@@ -49,6 +90,36 @@ public:
     // once its writes are flushed, so that the other instances claim its matches at once.
     virtual void stop() = 0;
     virtual ClusterStatus status() const = 0;
+
+    // --- the cluster's rooms (docs/cluster.md, "Rooms across the cluster") ---------------------
+    // A room code reserved for this instance in the database (unique across the cluster), taken
+    // from a small pool the directory keeps filled; none when the pool is empty (the database
+    // does not answer). Never blocks.
+    virtual std::optional<std::string> take_room_code() = 0;
+    // The room closed: its code is free for the cluster again (queued).
+    virtual void release_room_code(const std::string& code) = 0;
+    // Where the room with this code runs; where the unfinished match of this resume token's
+    // seat runs (a room or match of this instance is never asked: the server knows its own).
+    virtual void locate_room(std::string code, Answer<RoomLocation> done) = 0;
+    virtual void locate_seat(TokenHash token, Answer<RoomLocation> done) = 0;
+
+    // --- quick match across instances -----------------------------------------------------------
+    // A player of this instance waits for a quick match (singles of rule_set) and no player of
+    // this instance does: pairs it with the oldest ticket of another instance (that ticket gets
+    // a room code reserved here and this instance's URL: its player comes here) or, when none
+    // waits, leaves a ticket of this instance.
+    virtual void quick_enqueue(std::string rule_set, Answer<QuickEnqueued> done) = 0;
+    // Withdraws this instance's ticket; the answer is true when it was withdrawn, false when an
+    // instance paired it meanwhile (its pairing comes through on_paired).
+    virtual void quick_withdraw(std::int64_t ticket, Answer<bool> done) = 0;
+
+    // --- draining
+    // --------------------------------------------------------------------------------- Gives every
+    // unfinished match of this instance to the live instances (fewest owned first), marks it handed
+    // over, and wakes them; call once the rooms stopped and the writes are flushed. Blocks (the
+    // shutdown's thread). Empty when no instance is alive to take them (they are then claimed as
+    // orphans once the lease ends).
+    virtual Loaded<std::vector<HandedMatch>> hand_over() = 0;
 };
 
 } // namespace carrom::store

@@ -8,6 +8,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cctype>
 #include <random>
 #include <stdexcept>
@@ -24,6 +25,20 @@ std::string lease_interval(int n) {
 std::string unix_ms(const std::string& timestamp) {
     return "(extract(epoch FROM " + timestamp + ") * 1000)::bigint";
 }
+
+// The channel a draining instance notifies once it handed matches over: every instance's
+// cluster thread listens and runs its next round at once.
+constexpr const char* kWakeChannel = "carrom_cluster_wake";
+
+class WakeReceiver final : public pqxx::notification_receiver {
+public:
+    WakeReceiver(pqxx::connection_base& c, bool& woken)
+        : pqxx::notification_receiver(c, kWakeChannel), woken_(woken) {}
+    void operator()(const std::string&, int) override { woken_ = true; }
+
+private:
+    bool& woken_;
+};
 
 bool take_instance_lock(pqxx::connection& c, const std::string& id) {
     pqxx::nontransaction t(c);
@@ -86,6 +101,7 @@ std::string generate_instance_id() {
 PostgresCluster::PostgresCluster(std::string url, std::string shown, ClusterOptions options,
                                  std::shared_ptr<MatchOwnership> ownership)
     : url_(std::move(url)), shown_(std::move(shown)), options_(std::move(options)),
+      directory_(url_, shown_, options_.instance_id, options_.public_url),
       ownership_(std::move(ownership)) {}
 
 PostgresCluster::~PostgresCluster() {
@@ -117,14 +133,20 @@ std::optional<StoreError> PostgresCluster::open() {
         connection_.reset();
         return error_from(e, shown_, "registering the instance on");
     }
+    directory_.open();
     return std::nullopt;
+}
+
+void PostgresCluster::drop_connection() {
+    wake_receiver_.reset();
+    connection_.reset();
 }
 
 pqxx::connection& PostgresCluster::connection() {
     if (connection_ && connection_->is_open()) {
         return *connection_;
     }
-    connection_.reset();
+    drop_connection();
     auto c = connect(url_);
     if (!take_instance_lock(*c, options_.instance_id)) {
         throw std::runtime_error("instance id " + options_.instance_id +
@@ -140,14 +162,17 @@ Loaded<std::vector<RecoveredMatch>> PostgresCluster::claim(bool mine_too) {
         pqxx::work t(connection());
         // Rows another claimer or a writer holds are skipped (the next scan sees them again);
         // the epoch condition makes a claim of a row that changed meanwhile update nothing.
+        // Also the matches a draining instance handed to this one (handed_over).
         const pqxx::result claimed = t.exec_params(
-            "UPDATE matches m SET owner_instance = $1, owner_epoch = m.owner_epoch + 1 FROM ("
-            "SELECT x.id, x.owner_epoch, x.owner_instance AS previous FROM matches x "
-            "LEFT JOIN instances i ON i.id = x.owner_instance WHERE x.finished_ms IS NULL AND "
-            "(x.owner_instance IS NULL OR i.id IS NULL OR i.lease_expires < now() OR "
-            "($2 AND x.owner_instance = $1)) ORDER BY x.created_ms, x.id LIMIT $3 "
-            "FOR UPDATE OF x SKIP LOCKED) c WHERE m.id = c.id AND m.owner_epoch = c.owner_epoch "
-            "RETURNING m.id, m.owner_epoch, m.room_code, c.previous",
+            "UPDATE matches m SET owner_instance = $1, owner_epoch = m.owner_epoch + 1, "
+            "handed_over = false FROM ("
+            "SELECT x.id, x.owner_epoch, x.owner_instance AS previous, x.handed_over FROM "
+            "matches x LEFT JOIN instances i ON i.id = x.owner_instance WHERE x.finished_ms IS "
+            "NULL AND (x.owner_instance IS NULL OR i.id IS NULL OR i.lease_expires < now() OR "
+            "($2 AND x.owner_instance = $1) OR (x.handed_over AND x.owner_instance = $1)) "
+            "ORDER BY x.created_ms, x.id LIMIT $3 FOR UPDATE OF x SKIP LOCKED) c WHERE m.id = "
+            "c.id AND m.owner_epoch = c.owner_epoch "
+            "RETURNING m.id, m.owner_epoch, m.room_code, c.previous, c.handed_over",
             options_.instance_id, mine_too, options_.claim_limit);
         std::vector<std::pair<MatchId, MatchOwnership::Owned>> owned;
         std::uint64_t takeovers = 0;
@@ -156,7 +181,10 @@ Loaded<std::vector<RecoveredMatch>> PostgresCluster::claim(bool mine_too) {
             owned.emplace_back(
                 id, MatchOwnership::Owned{row[1].as<std::int64_t>(), row[2].as<std::string>()});
             const std::string previous = row[3].is_null() ? "" : row[3].as<std::string>();
-            if (previous != options_.instance_id) {
+            if (row[4].as<bool>()) {
+                spdlog::info("cluster: match {} (room {}) handed over to this instance (epoch {})",
+                             id, owned.back().second.room_code, owned.back().second.epoch);
+            } else if (previous != options_.instance_id) {
                 ++takeovers;
                 spdlog::info("cluster: match {} (room {}) taken over from {} (epoch {})", id,
                              owned.back().second.room_code,
@@ -165,13 +193,25 @@ Loaded<std::vector<RecoveredMatch>> PostgresCluster::claim(bool mine_too) {
             }
             out.value.push_back(read_recovered(t, id));
         }
+        if (!owned.empty()) {
+            // The claimed rooms' codes are this instance's now (docs/cluster.md, "Rooms across
+            // the cluster").
+            std::string codes = "{";
+            for (const auto& [id, o] : owned) {
+                codes += (codes.size() > 1 ? "," : "") + o.room_code; // codes are [A-Z2-9]
+            }
+            codes += "}";
+            t.exec_params("INSERT INTO rooms (code, instance_id) SELECT unnest($1::text[]), $2 "
+                          "ON CONFLICT (code) DO UPDATE SET instance_id = excluded.instance_id",
+                          codes, options_.instance_id);
+        }
         t.commit();
         for (auto& [id, o] : owned) {
             ownership_->add(id, std::move(o));
         }
         takeovers_total_ += takeovers;
     } catch (const pqxx::broken_connection& e) {
-        connection_.reset();
+        drop_connection();
         out.error = error_from(e, shown_, "claiming matches on");
     } catch (const std::exception& e) {
         out.error = error_from(e, shown_, "claiming matches on");
@@ -267,7 +307,7 @@ void PostgresCluster::round() {
         }
     } catch (const std::exception& e) {
         if (dynamic_cast<const pqxx::broken_connection*>(&e) != nullptr) {
-            connection_.reset();
+            drop_connection();
         }
         lease_ok_ = false;
         if (!failing_) {
@@ -281,6 +321,7 @@ void PostgresCluster::round() {
 void PostgresCluster::start(ClusterHandlers handlers) {
     handlers_ = std::move(handlers);
     ownership_->set_on_lost(handlers_.on_lost);
+    directory_.start(handlers_.on_paired);
     thread_ = std::thread([this] { run(); });
 }
 
@@ -289,8 +330,39 @@ void PostgresCluster::run() {
     while (!stopping_) {
         lock.unlock();
         round();
+        wait_for_next_round();
         lock.lock();
-        wake_.wait_for(lock, renew_interval(), [this] { return stopping_; });
+    }
+}
+
+void PostgresCluster::wait_for_next_round() {
+    constexpr auto kSlice = std::chrono::milliseconds(100);
+    const auto until = std::chrono::steady_clock::now() + renew_interval();
+    for (;;) {
+        const auto now = std::chrono::steady_clock::now();
+        {
+            std::unique_lock lock(mutex_);
+            if (stopping_ || now >= until) {
+                return;
+            }
+        }
+        const auto slice = std::min<std::chrono::steady_clock::duration>(kSlice, until - now);
+        try {
+            pqxx::connection& c = connection();
+            if (!wake_receiver_) {
+                wake_receiver_ = std::make_unique<WakeReceiver>(c, woken_);
+            }
+            woken_ = false;
+            const auto us = std::chrono::duration_cast<std::chrono::microseconds>(slice).count();
+            c.await_notification(0, static_cast<long>(us));
+            if (woken_) {
+                return;
+            }
+        } catch (const std::exception&) {
+            drop_connection(); // the round says so; wait on the clock meanwhile
+            std::unique_lock lock(mutex_);
+            wake_.wait_for(lock, slice, [this] { return stopping_; });
+        }
     }
 }
 
@@ -303,6 +375,85 @@ void PostgresCluster::stop() {
     if (thread_.joinable()) {
         thread_.join();
     }
+    directory_.stop();
+}
+
+Loaded<std::vector<HandedMatch>> PostgresCluster::hand_over() {
+    Loaded<std::vector<HandedMatch>> out;
+    if (!registered_) {
+        return out;
+    }
+    try {
+        pqxx::work t(connection());
+        // This instance's lease ends in the same transaction: no other instance hands it
+        // matches, and what it does not hand over is an orphan for any instance to claim.
+        t.exec_params("UPDATE instances SET lease_expires = now() WHERE id = $1",
+                      options_.instance_id);
+        struct Target {
+            std::string id;
+            std::string url;
+            std::int64_t owned = 0;
+        };
+        std::vector<Target> targets;
+        for (const auto& row : t.exec_params(
+                 "SELECT i.id, i.public_url, (SELECT count(*) FROM matches m WHERE "
+                 "m.owner_instance = i.id AND m.finished_ms IS NULL) FROM instances i WHERE "
+                 "i.id <> $1 AND i.lease_expires > now() ORDER BY i.id",
+                 options_.instance_id)) {
+            targets.push_back(
+                {row[0].as<std::string>(), row[1].as<std::string>(), row[2].as<std::int64_t>()});
+        }
+        if (targets.empty()) {
+            t.commit();
+            lease_ok_ = false;
+            return out;
+        }
+        std::string ids = "{";
+        std::string to = "{";
+        std::string codes = "{";
+        for (const auto& row :
+             t.exec_params("SELECT id, room_code FROM matches WHERE owner_instance = $1 AND "
+                           "finished_ms IS NULL ORDER BY created_ms FOR UPDATE",
+                           options_.instance_id)) {
+            // The least loaded instance takes the next match.
+            Target& target = *std::min_element(
+                targets.begin(), targets.end(),
+                [](const Target& a, const Target& b) { return a.owned < b.owned; });
+            ++target.owned;
+            HandedMatch handed{row[0].as<std::string>(), row[1].as<std::string>(), target.id,
+                               target.url};
+            const char* comma = out.value.empty() ? "" : ",";
+            ids += comma + handed.match; // ids are [0-9a-z], codes [A-Z2-9]
+            codes += comma + handed.room_code;
+            to += comma + std::string("\"") + target.id + "\""; // ids are [A-Za-z0-9._-]
+            out.value.push_back(std::move(handed));
+        }
+        ids += "}";
+        to += "}";
+        codes += "}";
+        if (!out.value.empty()) {
+            t.exec_params("UPDATE matches m SET owner_instance = v.target, owner_epoch = "
+                          "m.owner_epoch + 1, handed_over = true FROM unnest($1::text[], "
+                          "$2::text[]) AS v(id, target) WHERE m.id = v.id",
+                          ids, to);
+            t.exec_params("UPDATE rooms r SET instance_id = v.target FROM unnest($1::text[], "
+                          "$2::text[]) AS v(code, target) WHERE r.code = v.code",
+                          codes, to);
+            t.exec(std::string("NOTIFY ") + kWakeChannel);
+        }
+        t.commit();
+        lease_ok_ = false;
+        for (const auto& handed : out.value) {
+            ownership_->finished(handed.match); // not lost: handed on, its room stopped
+            spdlog::info("cluster: match {} (room {}) handed over to instance {}", handed.match,
+                         handed.room_code, handed.instance_id);
+        }
+    } catch (const std::exception& e) {
+        drop_connection();
+        out.value.clear();
+        out.error = error_from(e, shown_, "handing matches over on");
+    }
+    return out;
 }
 
 void PostgresCluster::end_lease() {

@@ -13,10 +13,12 @@
 // kill -9) gets it.
 
 #include <pqxx/connection>
+#include <pqxx/notification>
 #include <pqxx/transaction_base>
 
 #include "store/cluster.hpp"
 #include "store/match_ownership.hpp"
+#include "store/postgres_directory.hpp"
 
 #include <atomic>
 #include <chrono>
@@ -71,6 +73,22 @@ public:
     void stop() override;
     ClusterStatus status() const override;
 
+    std::optional<std::string> take_room_code() override { return directory_.take_room_code(); }
+    void release_room_code(const std::string& code) override { directory_.release_room_code(code); }
+    void locate_room(std::string code, Answer<RoomLocation> done) override {
+        directory_.locate_room(std::move(code), std::move(done));
+    }
+    void locate_seat(TokenHash token, Answer<RoomLocation> done) override {
+        directory_.locate_seat(token, std::move(done));
+    }
+    void quick_enqueue(std::string rule_set, Answer<QuickEnqueued> done) override {
+        directory_.quick_enqueue(std::move(rule_set), std::move(done));
+    }
+    void quick_withdraw(std::int64_t ticket, Answer<bool> done) override {
+        directory_.quick_withdraw(ticket, std::move(done));
+    }
+    Loaded<std::vector<HandedMatch>> hand_over() override;
+
     std::chrono::milliseconds renew_interval() const { return options_.lease / 3; }
 
 private:
@@ -83,13 +101,21 @@ private:
     // start time too), in t; lease_expires_ms_ from it.
     void write_lease(pqxx::transaction_base& t, bool registering);
     void check_owned();
+    // Waits up to renew_interval for stop() or a NOTIFY on kWakeChannel (an instance handed
+    // matches over): the next round comes at once.
+    void wait_for_next_round();
     pqxx::connection& connection(); // made again (and the instance lock retaken) after it broke
+    void drop_connection();
 
     std::string url_;
     std::string shown_;
     ClusterOptions options_;
+    PostgresDirectory directory_;
     std::shared_ptr<MatchOwnership> ownership_;
     std::unique_ptr<pqxx::connection> connection_;
+    // LISTENs on kWakeChannel on connection_ (made with it, dropped before it).
+    std::unique_ptr<pqxx::notification_receiver> wake_receiver_;
+    bool woken_ = false; // cluster thread: a NOTIFY arrived
     ClusterHandlers handlers_;
 
     std::atomic<bool> lease_ok_{false};

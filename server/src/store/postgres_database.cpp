@@ -118,13 +118,37 @@ CREATE TABLE instances (
 );
 CREATE INDEX matches_owner ON matches (owner_instance) WHERE finished_ms IS NULL;
 )sql",
+    // 4 (cluster: one service): the room codes in use across the cluster and the instance that
+    // runs each room (codes are reserved here before a room gets one: unique across the
+    // cluster); the quick-match tickets of players waiting on one instance for a partner on
+    // another; matches an instance handed to another when it drained; the indexes by which an
+    // instance finds a seat's match and an open match's room.
+    R"sql(
+CREATE TABLE rooms (
+    code text PRIMARY KEY,
+    instance_id text NOT NULL,
+    reserved_at timestamptz NOT NULL DEFAULT now()
+);
+CREATE INDEX rooms_instance ON rooms (instance_id);
+CREATE TABLE quick_tickets (
+    ticket bigserial PRIMARY KEY,
+    instance_id text NOT NULL,
+    rule_set text NOT NULL,
+    since timestamptz NOT NULL DEFAULT now(),
+    room_code text,
+    room_url text
+);
+ALTER TABLE matches ADD COLUMN handed_over boolean NOT NULL DEFAULT false;
+CREATE INDEX matches_open_room ON matches (room_code) WHERE finished_ms IS NULL;
+CREATE INDEX seat_tokens_hash ON seat_tokens (token_sha256);
+)sql",
 };
 static_assert(std::size(kMigrations) == kSchemaVersion);
 
 // Every table a schema version has (what a database of ours may hold).
-const std::set<std::string> kOurTables = {"carrom_schema",  "matches",    "entries", "players",
-                                          "seat_tokens",    "identities", "ratings", "rated_seats",
-                                          "rating_changes", "instances"};
+const std::set<std::string> kOurTables = {
+    "carrom_schema", "matches",     "entries",        "players",   "seat_tokens", "identities",
+    "ratings",       "rated_seats", "rating_changes", "instances", "rooms",       "quick_tickets"};
 
 StoreError make_error(std::string_view code, std::string message) {
     std::replace(message.begin(), message.end(), '\n', ' '); // one line

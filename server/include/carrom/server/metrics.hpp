@@ -28,6 +28,7 @@ struct Metrics : room::RoomCounters {
     std::atomic<std::int64_t> http_rate_limited_total{0};      // 429 answers
     std::atomic<std::int64_t> tls_handshakes_total{0};         // completed (https, wss)
     std::atomic<std::int64_t> tls_handshake_failures_total{0}; // refused, broken or timed out
+    std::atomic<std::int64_t> redirects_total{0}; // redirect messages sent (cluster mode)
 
     std::string prometheus_text() const;
 };

@@ -111,17 +111,19 @@ public:
 
     // --- rooms ---
     using RoomFactory = std::function<std::shared_ptr<RoomT>(const std::string& code)>;
-    // A new room with a fresh code, or too_many_rooms.
-    std::variant<std::shared_ptr<RoomT>, proto::Error> create_room(const RoomFactory& make) {
+    // A new room with a fresh code (or `given`, a code reserved for it elsewhere, unless a room
+    // here has it), or too_many_rooms.
+    std::variant<std::shared_ptr<RoomT>, proto::Error> create_room(const RoomFactory& make,
+                                                                   const std::string& given = {}) {
         std::lock_guard lock(mutex_);
         if (rooms_.size() >= max_rooms_) {
             return proto::Error{std::string(proto::code::kTooManyRooms),
                                 "The server has no room for another room; try again later."};
         }
-        std::string code;
-        do {
+        std::string code = given;
+        while (code.empty() || rooms_.count(code) != 0) {
             code = make_room_code(random_);
-        } while (rooms_.count(code) != 0);
+        }
         auto room = make(code);
         rooms_[code] = room;
         return room;

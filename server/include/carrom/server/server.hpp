@@ -48,8 +48,9 @@ public:
     bool reload_tls(std::string& result);
     // Runs the I/O threads in the background (settings.threads of them).
     void start();
-    // Graceful stop: stop accepting, send "shutting_down" and close every connection (1012 "restarting");
-    // returns once all connections closed or shutdown_grace_s passed, and the threads ended.
+    // Graceful stop: stop accepting, send "shutting_down" and close every connection (1012
+    // "restarting"); returns once all connections closed or shutdown_grace_s passed, and the
+    // threads ended.
     void shutdown();
     // Blocks until SIGINT or SIGTERM, then shutdown(). SIGHUP meanwhile: reload_tls().
     void run_until_signal();

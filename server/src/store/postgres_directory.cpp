@@ -1,0 +1,397 @@
+#include "store/postgres_directory.hpp"
+
+#include "store/postgres_database.hpp"
+
+#include "carrom/proto/limits.hpp"
+
+#include <pqxx/pqxx>
+#include <spdlog/spdlog.h>
+
+#include <chrono>
+#include <stdexcept>
+
+namespace carrom::store::postgres {
+namespace {
+
+// Codes kept reserved for the next rooms; refilled below kPoolLow, kPoolSize at a time.
+constexpr std::size_t kPoolSize = 64;
+constexpr std::size_t kPoolLow = 48;
+// Requests waiting for the thread, at most; more are answered store_busy at once.
+constexpr std::size_t kMaxJobs = 4096;
+constexpr auto kTick = std::chrono::milliseconds(200);
+constexpr auto kCleanUpEvery = std::chrono::seconds(5);
+
+// A code's room is gone with its instance: the instance's lease expired over a minute ago and no
+// unfinished match has the code (those move with their takeover).
+constexpr const char* kDeadRoomCondition =
+    "NOT EXISTS (SELECT 1 FROM instances i WHERE i.id = r.instance_id AND "
+    "i.lease_expires > now() - interval '1 minute') AND NOT EXISTS (SELECT 1 FROM matches m "
+    "WHERE m.room_code = r.code AND m.finished_ms IS NULL)";
+
+StoreError busy() {
+    return StoreError{"store_busy", "the cluster directory has too many requests waiting"};
+}
+
+} // namespace
+
+PostgresDirectory::PostgresDirectory(std::string url, std::string shown, std::string instance_id,
+                                     std::string public_url)
+    : url_(std::move(url)), shown_(std::move(shown)), instance_id_(std::move(instance_id)),
+      public_url_(std::move(public_url)), random_(std::random_device{}()) {}
+
+PostgresDirectory::~PostgresDirectory() {
+    stop();
+}
+
+pqxx::connection& PostgresDirectory::connection() {
+    if (!connection_ || !connection_->is_open()) {
+        connection_.reset();
+        connection_ = connect(url_);
+    }
+    return *connection_;
+}
+
+std::string PostgresDirectory::random_code() {
+    std::string code;
+    constexpr std::size_t kLetters = sizeof proto::kRoomCodeAlphabet - 1;
+    for (std::size_t i = 0; i < proto::kRoomCodeLength; ++i) {
+        code.push_back(proto::kRoomCodeAlphabet[random_() % kLetters]);
+    }
+    return code;
+}
+
+void PostgresDirectory::open() {
+    try {
+        pqxx::work t(connection());
+        t.exec_params(std::string("DELETE FROM rooms r WHERE r.instance_id = $1 AND NOT EXISTS "
+                                  "(SELECT 1 FROM matches m WHERE m.room_code = r.code AND "
+                                  "m.finished_ms IS NULL)"),
+                      instance_id_);
+        t.exec_params("DELETE FROM quick_tickets WHERE instance_id = $1", instance_id_);
+        t.commit();
+        refill_pool(connection());
+    } catch (const std::exception& e) {
+        connection_.reset();
+        spdlog::warn("cluster: room codes not reserved at start (reserved when the database "
+                     "answers): {}",
+                     e.what());
+    }
+}
+
+void PostgresDirectory::start(std::function<void(std::vector<QuickPairing>)> on_paired) {
+    on_paired_ = std::move(on_paired);
+    thread_ = std::thread([this] { run(); });
+}
+
+void PostgresDirectory::stop() {
+    {
+        const std::lock_guard lock(mutex_);
+        if (stopping_ && !thread_.joinable()) {
+            return;
+        }
+        stopping_ = true;
+    }
+    wake_.notify_all();
+    if (thread_.joinable()) {
+        thread_.join();
+    }
+    std::deque<Job> left;
+    {
+        const std::lock_guard lock(mutex_);
+        left.swap(jobs_);
+    }
+    const StoreError stopped{"store_stopped", "the server is stopping"};
+    for (Job& job : left) {
+        job(nullptr, stopped);
+    }
+}
+
+void PostgresDirectory::post(Job job) {
+    {
+        std::unique_lock lock(mutex_);
+        if (!stopping_ && jobs_.size() < kMaxJobs) {
+            jobs_.push_back(std::move(job));
+            lock.unlock();
+            wake_.notify_one();
+            return;
+        }
+    }
+    job(nullptr, busy());
+}
+
+void PostgresDirectory::run() {
+    std::unique_lock lock(mutex_);
+    auto next_tick = std::chrono::steady_clock::now();
+    while (!stopping_) {
+        if (jobs_.empty()) {
+            wake_.wait_until(lock, next_tick,
+                             [this] { return stopping_ || !jobs_.empty() || refill_wanted_; });
+        }
+        if (refill_wanted_) {
+            refill_wanted_ = false;
+            next_tick = std::chrono::steady_clock::now(); // maintain now
+        }
+        if (stopping_) {
+            break;
+        }
+        if (!jobs_.empty() && std::chrono::steady_clock::now() < next_tick) {
+            Job job = std::move(jobs_.front());
+            jobs_.pop_front();
+            lock.unlock();
+            try {
+                job(&connection(), std::nullopt);
+            } catch (const std::exception& e) {
+                connection_.reset();
+                job(nullptr, error_from(e, shown_, "asking the cluster directory on"));
+            }
+            lock.lock();
+            continue;
+        }
+        lock.unlock();
+        maintain();
+        next_tick = std::chrono::steady_clock::now() + kTick;
+        lock.lock();
+    }
+}
+
+void PostgresDirectory::maintain() {
+    try {
+        refill_pool(connection());
+        fetch_pairings(connection());
+        const auto now = std::chrono::steady_clock::now();
+        if (now >= next_clean_up_) {
+            next_clean_up_ = now + kCleanUpEvery;
+            clean_up(connection());
+        }
+    } catch (const std::exception& e) {
+        connection_.reset(); // the next tick tries again; the cluster thread logs the outage
+        spdlog::debug("cluster directory: {}", e.what());
+    }
+}
+
+void PostgresDirectory::refill_pool(pqxx::connection& c) {
+    {
+        const std::lock_guard lock(mutex_);
+        if (pool_.size() >= kPoolLow) {
+            return;
+        }
+    }
+    std::string codes = "{";
+    for (std::size_t i = 0; i < kPoolSize; ++i) {
+        codes += (i > 0 ? "," : "") + random_code(); // codes are [A-Z2-9]
+    }
+    codes += "}";
+    pqxx::work t(c);
+    const pqxx::result reserved =
+        t.exec_params("INSERT INTO rooms (code, instance_id) SELECT unnest($1::text[]), $2 "
+                      "ON CONFLICT (code) DO NOTHING RETURNING code",
+                      codes, instance_id_);
+    t.commit();
+    const std::lock_guard lock(mutex_);
+    for (const auto& row : reserved) {
+        pool_.push_back(row[0].as<std::string>());
+    }
+}
+
+void PostgresDirectory::fetch_pairings(pqxx::connection& c) {
+    {
+        const std::lock_guard lock(mutex_);
+        if (tickets_waiting_ == 0) {
+            return;
+        }
+    }
+    pqxx::work t(c);
+    const pqxx::result paired =
+        t.exec_params("DELETE FROM quick_tickets WHERE instance_id = $1 AND room_code IS NOT NULL "
+                      "RETURNING ticket, room_code, room_url",
+                      instance_id_);
+    t.commit();
+    if (paired.empty()) {
+        return;
+    }
+    std::vector<QuickPairing> out;
+    for (const auto& row : paired) {
+        out.push_back(QuickPairing{row[0].as<std::int64_t>(), row[1].as<std::string>(),
+                                   row[2].as<std::string>()});
+    }
+    {
+        const std::lock_guard lock(mutex_);
+        tickets_waiting_ -= std::min(tickets_waiting_, out.size());
+    }
+    if (on_paired_) {
+        on_paired_(std::move(out));
+    }
+}
+
+void PostgresDirectory::clean_up(pqxx::connection& c) {
+    pqxx::work t(c);
+    t.exec(std::string("DELETE FROM rooms r WHERE ") + kDeadRoomCondition);
+    t.exec("DELETE FROM quick_tickets q WHERE NOT EXISTS (SELECT 1 FROM instances i WHERE "
+           "i.id = q.instance_id AND i.lease_expires > now())");
+    t.commit();
+}
+
+std::optional<std::string> PostgresDirectory::take_room_code() {
+    const std::lock_guard lock(mutex_);
+    if (pool_.empty()) {
+        return std::nullopt;
+    }
+    std::string code = std::move(pool_.back());
+    pool_.pop_back();
+    if (pool_.size() < kPoolLow && !refill_wanted_) {
+        refill_wanted_ = true;
+        wake_.notify_one(); // refill now rather than at the next tick
+    }
+    return code;
+}
+
+void PostgresDirectory::release_room_code(const std::string& code) {
+    post([this, code](pqxx::connection* c, const std::optional<StoreError>& error) {
+        if (c == nullptr) {
+            spdlog::debug("cluster: room code {} not freed ({}): freed when the instance's "
+                          "codes are next cleaned up",
+                          code, error ? error->message : "");
+            return;
+        }
+        pqxx::work t(*c);
+        t.exec_params("DELETE FROM rooms WHERE code = $1 AND instance_id = $2", code, instance_id_);
+        t.commit();
+    });
+}
+
+void PostgresDirectory::locate_room(std::string code, Answer<RoomLocation> done) {
+    post([this, code = std::move(code),
+          done = std::move(done)](pqxx::connection* c, const std::optional<StoreError>& error) {
+        Loaded<RoomLocation> out;
+        if (c == nullptr) {
+            out.error = error;
+            done(std::move(out));
+            return;
+        }
+        pqxx::read_transaction t(*c);
+        const pqxx::result r = t.exec_params(
+            "SELECT r.instance_id, coalesce(i.public_url, ''), coalesce(i.lease_expires > now(), "
+            "false), EXISTS (SELECT 1 FROM matches m WHERE m.room_code = r.code AND "
+            "m.finished_ms IS NULL) FROM rooms r LEFT JOIN instances i ON i.id = r.instance_id "
+            "WHERE r.code = $1",
+            code);
+        t.commit();
+        out.value.room_code = code;
+        if (!r.empty()) {
+            const std::string owner = r[0][0].as<std::string>();
+            const bool alive = r[0][2].as<bool>();
+            const bool running = r[0][3].as<bool>();
+            out.value.instance_id = owner;
+            if (owner != instance_id_ && alive) {
+                out.value.where = RoomLocation::Where::Elsewhere;
+                out.value.public_url = r[0][1].as<std::string>();
+            } else if (running) {
+                out.value.where = RoomLocation::Where::Moving;
+            }
+        }
+        done(std::move(out));
+    });
+}
+
+void PostgresDirectory::locate_seat(TokenHash token, Answer<RoomLocation> done) {
+    post([this, token, done = std::move(done)](pqxx::connection* c,
+                                               const std::optional<StoreError>& error) {
+        Loaded<RoomLocation> out;
+        if (c == nullptr) {
+            out.error = error;
+            done(std::move(out));
+            return;
+        }
+        pqxx::read_transaction t(*c);
+        const pqxx::result r = t.exec_params(
+            "SELECT m.room_code, coalesce(m.owner_instance, ''), coalesce(i.public_url, ''), "
+            "coalesce(i.lease_expires > now(), false), m.handed_over FROM seat_tokens s JOIN "
+            "matches m ON m.id = s.match_id LEFT JOIN instances i ON i.id = m.owner_instance "
+            "WHERE s.token_sha256 = decode($1, 'hex') AND m.finished_ms IS NULL ORDER BY "
+            "m.created_ms DESC LIMIT 1",
+            to_hex(token));
+        t.commit();
+        if (!r.empty()) {
+            out.value.room_code = r[0][0].as<std::string>();
+            out.value.instance_id = r[0][1].as<std::string>();
+            const bool alive = r[0][3].as<bool>();
+            if (out.value.instance_id != instance_id_ && alive && !r[0][4].as<bool>()) {
+                out.value.where = RoomLocation::Where::Elsewhere;
+                out.value.public_url = r[0][2].as<std::string>();
+            } else {
+                out.value.where = RoomLocation::Where::Moving;
+            }
+        }
+        done(std::move(out));
+    });
+}
+
+void PostgresDirectory::quick_enqueue(std::string rule_set, Answer<QuickEnqueued> done) {
+    post([this, rule_set = std::move(rule_set),
+          done = std::move(done)](pqxx::connection* c, const std::optional<StoreError>& error) {
+        Loaded<QuickEnqueued> out;
+        if (c == nullptr) {
+            out.error = error;
+            done(std::move(out));
+            return;
+        }
+        std::optional<std::string> code = take_room_code();
+        pqxx::work t(*c);
+        if (code) {
+            // The oldest ticket of a live instance for the same mode, held by nobody else.
+            const pqxx::result r = t.exec_params(
+                "UPDATE quick_tickets SET room_code = $3, room_url = $4 WHERE ticket = (SELECT "
+                "q.ticket FROM quick_tickets q JOIN instances i ON i.id = q.instance_id WHERE "
+                "q.rule_set = $1 AND q.instance_id <> $2 AND q.room_code IS NULL AND "
+                "i.lease_expires > now() ORDER BY q.since, q.ticket LIMIT 1 FOR UPDATE OF q SKIP "
+                "LOCKED) RETURNING ticket",
+                rule_set, instance_id_, *code, public_url_);
+            if (!r.empty()) {
+                t.commit();
+                out.value = QuickEnqueued{true, r[0][0].as<std::int64_t>(), *code};
+                done(std::move(out));
+                return;
+            }
+        }
+        const pqxx::result mine = t.exec_params(
+            "INSERT INTO quick_tickets (instance_id, rule_set) VALUES ($1, $2) RETURNING ticket",
+            instance_id_, rule_set);
+        t.commit();
+        if (code) {
+            const std::lock_guard lock(mutex_);
+            pool_.push_back(std::move(*code)); // not used: still reserved for this instance
+        }
+        {
+            const std::lock_guard lock(mutex_);
+            ++tickets_waiting_;
+        }
+        out.value = QuickEnqueued{false, mine[0][0].as<std::int64_t>(), {}};
+        done(std::move(out));
+    });
+}
+
+void PostgresDirectory::quick_withdraw(std::int64_t ticket, Answer<bool> done) {
+    post([this, ticket, done = std::move(done)](pqxx::connection* c,
+                                                const std::optional<StoreError>& error) {
+        Loaded<bool> out;
+        if (c == nullptr) {
+            out.error = error;
+            done(std::move(out));
+            return;
+        }
+        pqxx::work t(*c);
+        const pqxx::result r = t.exec_params(
+            "DELETE FROM quick_tickets WHERE ticket = $1 AND instance_id = $2 AND room_code IS "
+            "NULL RETURNING ticket",
+            ticket, instance_id_);
+        t.commit();
+        out.value = !r.empty();
+        if (out.value) {
+            const std::lock_guard lock(mutex_);
+            tickets_waiting_ -= std::min<std::size_t>(tickets_waiting_, 1);
+        }
+        done(std::move(out));
+    });
+}
+
+} // namespace carrom::store::postgres
