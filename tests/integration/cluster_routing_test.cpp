@@ -1,0 +1,257 @@
+// Rooms across the cluster (docs/cluster.md, "Rooms across the cluster"; docs/protocol.md,
+// "Redirects"): two carrom-server instances a and b on one PostgreSQL of the test's own, each with
+// its real address as --public-url, and raw clients of the test. Room codes are reserved in the
+// database; a join or a resume on the instance that does not run the room gets `redirect` (a
+// client that follows them) or an error naming the owner's URL; quick match pairs players of two
+// instances; SIGTERM on an instance hands its match to the other and sends its players there.
+#include "harness.hpp"
+
+#include "support/postgres_instance.hpp"
+#include "support/server_process.hpp"
+
+#include <gtest/gtest.h>
+
+#include <netinet/in.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+#include <thread>
+
+namespace carrom::integration {
+namespace {
+
+using namespace std::chrono_literals;
+
+// A TCP port of 127.0.0.1 free at the time of the call (for a --public-url given before the start).
+std::uint16_t free_loopback_port() {
+    const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
+    sockaddr_in address{};
+    address.sin_family = AF_INET;
+    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    socklen_t length = sizeof address;
+    if (fd < 0 || ::bind(fd, reinterpret_cast<sockaddr*>(&address), length) != 0 ||
+        ::getsockname(fd, reinterpret_cast<sockaddr*>(&address), &length) != 0) {
+        if (fd >= 0) {
+            ::close(fd);
+        }
+        return 0;
+    }
+    ::close(fd);
+    return ntohs(address.sin_port);
+}
+
+// Instance `id` of the cluster on data, at ws://127.0.0.1:PORT (its --public-url), 2 s lease.
+std::unique_ptr<test_support::ServerProcess> start_routed_instance(const std::string& data,
+                                                                   const std::string& id) {
+    test_support::ServerProcess::Options options;
+    options.program = CARROM_SERVER_PATH;
+    options.data = data;
+    options.port = free_loopback_port();
+    options.args = {"--instance-id", id,
+                    "--lease",       "2",
+                    "--public-url",  "ws://127.0.0.1:" + std::to_string(options.port),
+                    "--log-level",   "info"};
+    return std::make_unique<test_support::ServerProcess>(options);
+}
+
+// hello with follows_redirects (or without), and its welcome.
+proto::Welcome say_hello(ManualClient& client, bool follows_redirects,
+                         std::optional<std::string> token = std::nullopt) {
+    proto::Hello hello{proto::kProtocolVersion, "tester", std::move(token)};
+    hello.follows_redirects = follows_redirects;
+    client.send(hello);
+    return client.next<proto::Welcome>().value_or(proto::Welcome{});
+}
+
+class ClusterRouting : public ::testing::Test {
+protected:
+    void SetUp() override {
+        a = start_routed_instance(url, "a");
+        b = start_routed_instance(url, "b");
+        ASSERT_NE(a->port(), 0) << a->log();
+        ASSERT_NE(b->port(), 0) << b->log();
+    }
+    std::string query(const std::string& sql) const { return postgres.sql(database, sql).out; }
+
+    test_support::PostgresInstance postgres;
+    std::string database = postgres.create_database();
+    std::string url = postgres.url(database);
+    std::unique_ptr<test_support::ServerProcess> a;
+    std::unique_ptr<test_support::ServerProcess> b;
+};
+
+// A started singles match on instance `server`: the creator and the joiner, both seated.
+struct StartedMatch {
+    std::unique_ptr<ManualClient> creator;
+    std::unique_ptr<ManualClient> joiner;
+    std::string code;
+    std::string creator_token;
+};
+
+StartedMatch start_match(const std::string& server_url) {
+    StartedMatch m;
+    m.creator = std::make_unique<ManualClient>(server_url, "creator");
+    m.creator_token = say_hello(*m.creator, true).resume_token;
+    m.creator->send(proto::CreateRoom{});
+    m.code = m.creator->next<proto::RoomState>().value_or(proto::RoomState{}).code;
+    m.joiner = std::make_unique<ManualClient>(server_url, "joiner");
+    say_hello(*m.joiner, true);
+    m.joiner->send(proto::JoinRoom{m.code, proto::Role::Player});
+    (void)m.creator->next_event<proto::TurnEvent>();
+    return m;
+}
+
+TEST_F(ClusterRouting, RoomCodesAreReservedInTheDatabaseForTheInstanceThatRunsTheRoom) {
+    ManualClient client(a->url());
+    say_hello(client, true);
+    client.send(proto::CreateRoom{});
+    const auto state = client.next<proto::RoomState>();
+    ASSERT_TRUE(state.has_value());
+    EXPECT_EQ(query("SELECT instance_id FROM rooms WHERE code = '" + state->code + "'"), "a\n");
+    // Each instance keeps codes reserved for its next rooms, none of them shared.
+    EXPECT_EQ(query("SELECT count(*) FROM (SELECT code FROM rooms GROUP BY code HAVING "
+                    "count(*) > 1) d"),
+              "0\n");
+    EXPECT_GE(std::stoi(query("SELECT count(*) FROM rooms WHERE instance_id = 'b'")), 16);
+    // The room closes: its code is free again.
+    client.send(proto::Leave{});
+    for (int i = 0;
+         i < 50 && query("SELECT count(*) FROM rooms WHERE code = '" + state->code + "'") != "0\n";
+         ++i) {
+        std::this_thread::sleep_for(100ms);
+    }
+    EXPECT_EQ(query("SELECT count(*) FROM rooms WHERE code = '" + state->code + "'"), "0\n");
+}
+
+TEST_F(ClusterRouting, AJoinOnAnotherInstanceIsRedirectedOrNamesTheOwnersUrl) {
+    ManualClient owner(a->url(), "owner");
+    say_hello(owner, true);
+    owner.send(proto::CreateRoom{});
+    const std::string code = owner.next<proto::RoomState>().value_or(proto::RoomState{}).code;
+    ASSERT_FALSE(code.empty());
+
+    for (const proto::Role role : {proto::Role::Player, proto::Role::Spectator}) {
+        ManualClient follower(b->url(), "follower");
+        say_hello(follower, true);
+        follower.send(proto::JoinRoom{code, role});
+        const auto redirect = follower.next<proto::Redirect>();
+        ASSERT_TRUE(redirect.has_value());
+        EXPECT_EQ(*redirect, (proto::Redirect{a->url(), "room", code, role}));
+        EXPECT_NE(follower.wait_closed(3s).find("4005"), std::string::npos);
+    }
+
+    ManualClient old(b->url(), "old");
+    say_hello(old, false);
+    old.send(proto::JoinRoom{code, proto::Role::Player});
+    const auto error = old.next<proto::Error>();
+    ASSERT_TRUE(error.has_value());
+    EXPECT_EQ(*error, (proto::Error{"room_elsewhere",
+                                    "Room " + code + " is on another server of this cluster: " +
+                                        a->url() + " (connect there)."}));
+    // The connection stays open: a code no instance has is room_not_found.
+    old.send(proto::JoinRoom{"ZZZZZZ", proto::Role::Player});
+    EXPECT_EQ(old.next_error(), "room_not_found");
+    EXPECT_NE(a->get("/metrics").body.find("carrom_redirects_total 0"), std::string::npos);
+    EXPECT_NE(b->get("/metrics").body.find("carrom_redirects_total 2"), std::string::npos);
+}
+
+TEST_F(ClusterRouting, AResumeOnAnotherInstanceIsRedirectedToTheSeatsMatch) {
+    StartedMatch match = start_match(a->url());
+    ASSERT_FALSE(match.code.empty());
+    // The seat tokens reach the database with the match's first writes.
+    for (int i = 0; i < 50 && query("SELECT count(*) FROM seat_tokens") != "2\n"; ++i) {
+        std::this_thread::sleep_for(100ms);
+    }
+    ManualClient follower(b->url(), "creator");
+    proto::Hello hello{proto::kProtocolVersion, "creator", match.creator_token};
+    hello.follows_redirects = true;
+    follower.send(hello);
+    const auto redirect = follower.next<proto::Redirect>();
+    ASSERT_TRUE(redirect.has_value());
+    EXPECT_EQ(*redirect, (proto::Redirect{a->url(), "seat", "", proto::Role::Player}));
+    EXPECT_NE(follower.wait_closed(3s).find("4005"), std::string::npos);
+
+    ManualClient old(b->url(), "creator");
+    old.send(proto::Hello{proto::kProtocolVersion, "creator", match.creator_token});
+    const auto error = old.next<proto::Error>();
+    ASSERT_TRUE(error.has_value());
+    EXPECT_EQ(error->code, "seat_elsewhere");
+    EXPECT_EQ(error->message, "Your seat's match (room " + match.code +
+                                  ") is on another server of this cluster: " + a->url() +
+                                  " (resume there).");
+    EXPECT_NE(old.wait_closed(3s).find("4004"), std::string::npos);
+
+    // A token no seat holds is bad_token, as on a server alone.
+    ManualClient stranger(b->url(), "stranger");
+    stranger.send(proto::Hello{proto::kProtocolVersion, "stranger",
+                               std::string("0123456789abcdef0123456789abcdef")});
+    EXPECT_EQ(stranger.next_error(), "bad_token");
+    EXPECT_TRUE(stranger.next<proto::Welcome>().has_value());
+}
+
+TEST_F(ClusterRouting, QuickMatchPairsPlayersWaitingOnTwoInstances) {
+    ManualClient first(a->url(), "first");
+    say_hello(first, true);
+    first.send(proto::QuickMatch{});
+    for (int i = 0; i < 50 && query("SELECT count(*) FROM quick_tickets") != "1\n"; ++i) {
+        std::this_thread::sleep_for(50ms);
+    }
+    ASSERT_EQ(query("SELECT instance_id, rule_set FROM quick_tickets"), "a|icf\n");
+
+    ManualClient second(b->url(), "second");
+    say_hello(second, true);
+    second.send(proto::QuickMatch{});
+    const auto hosted = second.next<proto::RoomState>();
+    ASSERT_TRUE(hosted.has_value());
+    EXPECT_EQ(hosted->you, 0);
+    const auto redirect = first.next<proto::Redirect>(5s);
+    ASSERT_TRUE(redirect.has_value());
+    EXPECT_EQ(*redirect,
+              (proto::Redirect{b->url(), "quick_match", hosted->code, proto::Role::Player}));
+    ManualClient moved(redirect->url, "first");
+    say_hello(moved, true);
+    moved.send(proto::JoinRoom{redirect->code, redirect->as});
+    const auto seated = moved.next<proto::RoomState>();
+    ASSERT_TRUE(seated.has_value());
+    EXPECT_EQ(seated->you, 1);
+    EXPECT_TRUE(moved.next_event<proto::TurnEvent>().has_value());
+    EXPECT_EQ(query("SELECT count(*) FROM quick_tickets"), "0\n");
+}
+
+TEST_F(ClusterRouting, SigtermHandsTheMatchToTheOtherInstanceAndSendsItsPlayersThere) {
+    StartedMatch match = start_match(a->url());
+    ASSERT_FALSE(match.code.empty());
+    ManualClient spectator(a->url(), "watcher");
+    say_hello(spectator, true);
+    spectator.send(proto::JoinRoom{match.code, proto::Role::Spectator});
+    ASSERT_TRUE(spectator.next<proto::RoomState>().has_value());
+
+    a->terminate();
+    const auto redirect = match.creator->next<proto::Redirect>(5s);
+    ASSERT_TRUE(redirect.has_value()) << a->log();
+    EXPECT_EQ(*redirect, (proto::Redirect{b->url(), "moved", match.code, proto::Role::Player}));
+    const auto watched = spectator.next<proto::Redirect>(5s);
+    ASSERT_TRUE(watched.has_value());
+    EXPECT_EQ(watched->as, proto::Role::Spectator);
+    EXPECT_EQ(query("SELECT owner_instance FROM matches"), "b\n");
+    EXPECT_EQ(query("SELECT instance_id FROM rooms WHERE code = '" + match.code + "'"), "b\n");
+
+    // The seat resumes on b (at once, or after match_moving while b restores it).
+    std::optional<proto::RoomState> state;
+    for (int attempt = 0; attempt < 20 && !state; ++attempt) {
+        ManualClient resumed(b->url(), "creator");
+        const proto::Welcome welcome = say_hello(resumed, true, match.creator_token);
+        if (welcome.resume_token == match.creator_token) {
+            state = resumed.next<proto::RoomState>();
+        } else {
+            std::this_thread::sleep_for(200ms);
+        }
+    }
+    ASSERT_TRUE(state.has_value()) << b->log();
+    EXPECT_EQ(state->code, match.code);
+    EXPECT_EQ(state->you, 0);
+    EXPECT_TRUE(b->wait_log("handed over to this instance", std::chrono::steady_clock::now() + 1s));
+}
+
+} // namespace
+} // namespace carrom::integration
