@@ -56,8 +56,9 @@ std::unique_ptr<test_support::ServerProcess> start_routed_instance(const std::st
 
 // hello with follows_redirects (or without), and its welcome.
 proto::Welcome say_hello(ManualClient& client, bool follows_redirects,
-                         std::optional<std::string> token = std::nullopt) {
-    proto::Hello hello{proto::kProtocolVersion, "tester", std::move(token)};
+                         std::optional<std::string> token = std::nullopt,
+                         const std::string& name = "tester") {
+    proto::Hello hello{proto::kProtocolVersion, name, std::move(token)};
     hello.follows_redirects = follows_redirects;
     client.send(hello);
     return client.next<proto::Welcome>().value_or(proto::Welcome{});
@@ -91,7 +92,7 @@ struct StartedMatch {
 StartedMatch start_match(const std::string& server_url) {
     StartedMatch m;
     m.creator = std::make_unique<ManualClient>(server_url, "creator");
-    m.creator_token = say_hello(*m.creator, true).resume_token;
+    m.creator_token = say_hello(*m.creator, true, std::nullopt, "creator").resume_token;
     m.creator->send(proto::CreateRoom{});
     m.code = m.creator->next<proto::RoomState>().value_or(proto::RoomState{}).code;
     m.joiner = std::make_unique<ManualClient>(server_url, "joiner");
@@ -121,6 +122,13 @@ TEST_F(ClusterRouting, RoomCodesAreReservedInTheDatabaseForTheInstanceThatRunsTh
         std::this_thread::sleep_for(100ms);
     }
     EXPECT_EQ(query("SELECT count(*) FROM rooms WHERE code = '" + state->code + "'"), "0\n");
+    // A stale code (its room closed) is no room on any instance.
+    for (const auto* server : {a.get(), b.get()}) {
+        ManualClient late(server->url(), "late");
+        say_hello(late, true);
+        late.send(proto::JoinRoom{state->code, proto::Role::Player});
+        EXPECT_EQ(late.next_error(), "room_not_found");
+    }
 }
 
 TEST_F(ClusterRouting, AJoinOnAnotherInstanceIsRedirectedOrNamesTheOwnersUrl) {
@@ -180,6 +188,11 @@ TEST_F(ClusterRouting, AResumeOnAnotherInstanceIsRedirectedToTheSeatsMatch) {
                                   ") is on another server of this cluster: " + a->url() +
                                   " (resume there).");
     EXPECT_NE(old.wait_closed(3s).find("4004"), std::string::npos);
+
+    // The match API answers the same on every instance.
+    const std::string listed = a->get("/matches?player=creator").body;
+    EXPECT_NE(listed.find(match.code), std::string::npos) << listed;
+    EXPECT_EQ(b->get("/matches?player=creator").body, listed);
 
     // A token no seat holds is bad_token, as on a server alone.
     ManualClient stranger(b->url(), "stranger");
