@@ -6,23 +6,18 @@
 # with docker/haproxy.cfg (its addresses given through the environment). It prints the address
 # to open and runs until Ctrl-C, which stops everything and removes the directory.
 #
-# Two modes, chosen from `carrom-server --help`:
-#   cluster  the server has --instance-id: the three instances share one database, each started
-#            with --instance-id carrom-N --public-url ws://HOST:FRONT/i/carrom-N/ (its route
-#            through the front, docker/haproxy.cfg), the cluster mode of issue 35.
-#   islands  it does not: each instance gets a database of its own (a PostgreSQL store takes
-#            its database's lock, docs/store.md), so the three are separate servers behind one
-#            front; a room lives on the instance that made it.
-# The mode is printed at start ("cluster.sh: mode ...").
+# The three instances share one database (cluster mode, docs/cluster.md), each started with
+# --instance-id carrom-N --public-url ws://HOST:FRONT/i/carrom-N/ (its route through the front,
+# docker/haproxy.cfg).
 #
 # --check: starts it all, checks /healthz of each instance through the front (/i/carrom-N/healthz
 # answered by carrom-N), round robin (three requests to /healthz answered by three instances) and
-# the page (GET /); plays one short bot match through the front (both bots at
-# ws://HOST:FRONT/i/carrom-2/, the servers at --time-scale 8) and checks it is stored finished in
-# PostgreSQL; stops carrom-1 (SIGTERM, exit 0) and checks its route then reaches another
-# instance; stops everything and exits 0, or 1 with the reason (77: haproxy or PostgreSQL is not
-# installed). Bounded: every wait has a deadline, the bots run under timeout;
-# tests/deploy/deploy.cmake runs it with ctest.
+# the page (GET /); plays one short bot match through the front (the creator at ws://HOST:FRONT/,
+# the joiner at the route of an instance that does not run the room, which redirects it; the
+# servers at --time-scale 8) and checks it is stored finished in PostgreSQL; stops carrom-1
+# (SIGTERM, exit 0) and checks its route then reaches another instance; stops everything and
+# exits 0, or 1 with the reason (77: haproxy or PostgreSQL is not installed). Bounded: every wait
+# has a deadline, the bots run under timeout; tests/deploy/deploy.cmake runs it with ctest.
 #
 # usage: scripts/cluster.sh [--check] [--server PATH] [--bot PATH] [--port N] [--host ADDR]
 #                           [--public-host NAME]
@@ -90,12 +85,6 @@ if [[ -z "$front_port" ]]; then
 fi
 [[ $front_port == 0 ]] && front_port=$(free_port)
 
-if "$server" --help | grep -q -- '--instance-id'; then
-    mode=cluster
-else
-    mode=islands
-fi
-
 work=$(mktemp -d "${TMPDIR:-/tmp}/carrom-cluster.XXXXXX")
 chmod 711 "$work" # the database's user (nobody) reaches its own directory below
 pg_dir=$work/pg
@@ -149,25 +138,16 @@ pg_running=1
 sql() { # sql DATABASE STATEMENT: unaligned, tuples only
     "$pg_bin/psql" -X -q -A -t -v ON_ERROR_STOP=1 -h "$pg_dir" -U carrom -d "$1" -c "$2"
 }
-database_of() { # database_of N: the database instance N uses
-    if [[ $mode == cluster ]]; then echo carrom; else echo "carrom_$1"; fi
-}
-for n in 1 2 3; do
-    db=$(database_of "$n")
-    [[ $(sql postgres "SELECT count(*) FROM pg_database WHERE datname = '$db'") == 1 ]] ||
-        sql postgres "CREATE DATABASE $db" > /dev/null
-done
-echo "cluster.sh: mode $mode; PostgreSQL $("$pg_bin/postgres" --version | awk '{print $3}') in $pg_dir"
+sql postgres "CREATE DATABASE carrom" > /dev/null
+echo "cluster.sh: PostgreSQL $("$pg_bin/postgres" --version | awk '{print $3}') in $pg_dir"
 
 # The instances. Behind the front every connection comes from HAProxy's address, so the
 # per-address limits move to HAProxy (docker/haproxy.cfg) and are raised here.
 ports=()
 for n in 1 2 3; do
-    args=(--host 127.0.0.1 --port 0 --data "postgresql://carrom@/$(database_of "$n")?host=$pg_dir"
-          --max-connections-per-address 100000 --http-rate 10000 --http-burst 10000)
-    if [[ $mode == cluster ]]; then
-        args+=(--instance-id "carrom-$n" --public-url "ws://$public_host:$front_port/i/carrom-$n/")
-    fi
+    args=(--host 127.0.0.1 --port 0 --data "postgresql://carrom@/carrom?host=$pg_dir"
+          --max-connections-per-address 100000 --http-rate 10000 --http-burst 10000
+          --instance-id "carrom-$n" --public-url "ws://$public_host:$front_port/i/carrom-$n/")
     if [[ $check -eq 1 ]]; then
         args+=(--time-scale 8 --shot-clock 0)
     fi
@@ -234,49 +214,54 @@ done
 [[ $(tr ' ' '\n' <<< "$seen" | sort -u | grep -c .) -eq 3 ]] ||
     fail "round robin: three requests to the front reached '$seen'"
 echo "cluster.sh: /healthz through the front: carrom-1, carrom-2, carrom-3 by name; round robin $seen"
-if [[ $mode == cluster ]]; then
-    # Each instance names itself in /healthz, and is registered with its route through the front.
-    for n in 1 2 3; do
-        python3 - "http://127.0.0.1:$front_port/i/carrom-$n/healthz" "carrom-$n" << 'EOF' ||
+# Each instance names itself in /healthz, and is registered with its route through the front.
+for n in 1 2 3; do
+    python3 - "http://127.0.0.1:$front_port/i/carrom-$n/healthz" "carrom-$n" << 'EOF' ||
 import json, sys, urllib.request
 opener = urllib.request.build_opener(urllib.request.ProxyHandler({}))  # never an http_proxy
 body = opener.open(sys.argv[1], timeout=3).read().decode()
 line = [l for l in body.splitlines() if l.startswith("cluster: ")]
 sys.exit(0 if line and json.loads(line[0][len("cluster: "):]).get("instance") == sys.argv[2] else 1)
 EOF
-            fail "/i/carrom-$n/healthz has no 'cluster:' line naming carrom-$n"
-    done
-    registered=$(sql carrom "SELECT string_agg(id || ' ' || public_url, ',' ORDER BY id) FROM instances")
-    expected=""
-    for n in 1 2 3; do
-        expected+="${expected:+,}carrom-$n ws://$public_host:$front_port/i/carrom-$n/"
-    done
-    [[ $registered == "$expected" ]] || fail "the instances table holds '$registered', not '$expected'"
-    echo "cluster.sh: the three instances are registered with their routes through the front"
-fi
+        fail "/i/carrom-$n/healthz has no 'cluster:' line naming carrom-$n"
+done
+registered=$(sql carrom "SELECT string_agg(id || ' ' || public_url, ',' ORDER BY id) FROM instances")
+expected=""
+for n in 1 2 3; do
+    expected+="${expected:+,}carrom-$n ws://$public_host:$front_port/i/carrom-$n/"
+done
+[[ $registered == "$expected" ]] || fail "the instances table holds '$registered', not '$expected'"
+echo "cluster.sh: the three instances are registered with their routes through the front"
 
 # The browser client's page through the front.
 answer=$(get /)
 [[ $answer == 200\ carrom-* ]] || fail "GET / through the front answered '$answer'"
 
-# One short match, both bots through the front's route to carrom-2.
-url="ws://127.0.0.1:$front_port/i/carrom-2/"
+# One short match: the creator through the front, the joiner through the route of an instance
+# that does not run the room (it redirects the joiner to the one that does).
+url="ws://127.0.0.1:$front_port/"
 timeout 60 "$bot" --url "$url" --name creator --create --rule-set freestyle --target-points 10 \
     --boards 1 --shot-clock 0 --strategy random --seed 1 --think-ms 10 --timeout 50 \
     > "$work/creator.json" 2> "$work/creator.err" &
 creator=$!
 code=$(bot_pair_room_code "$work" "$creator")
 [[ -n "$code" ]] || fail "the first bot got no room through $url: $(cat "$work/creator.json" "$work/creator.err")"
-timeout 60 "$bot" --url "$url" --name joiner --join "$code" --strategy random --seed 2 \
+owner=$(sql carrom "SELECT instance_id FROM rooms WHERE code = '$code'")
+[[ $owner == carrom-[123] ]] || fail "room $code is not in the rooms table (owner '$owner')"
+other=carrom-$(( ${owner#carrom-} % 3 + 1 ))
+joiner_url="ws://127.0.0.1:$front_port/i/$other/"
+timeout 60 "$bot" --url "$joiner_url" --name joiner --join "$code" --strategy random --seed 2 \
     --think-ms 10 --timeout 50 > "$work/joiner.json" 2> "$work/joiner.err" ||
     fail "the second bot failed: $(cat "$work/joiner.json" "$work/joiner.err")"
 wait "$creator" || fail "the first bot failed: $(cat "$work/creator.json" "$work/creator.err")"
 bot_pair_check "$work"
-stored=$(sql "$(database_of 2)" "SELECT count(*) FROM matches WHERE finished_ms IS NOT NULL")
-[[ $stored -ge 1 ]] || fail "no finished match in PostgreSQL database $(database_of 2)"
-strokes=$(sql "$(database_of 2)" "SELECT count(*) FROM entries WHERE type = 'stroke'")
-echo "cluster.sh: match $code through $url: scores $(bot_pair_field "$work/creator.json" scores)," \
-    "$strokes strokes stored finished in PostgreSQL ($(database_of 2))"
+[[ $(bot_pair_field "$work/joiner.json" redirects) == 1 ]] ||
+    fail "the joiner at $joiner_url was not redirected once to $owner: $(cat "$work/joiner.json")"
+stored=$(sql carrom "SELECT count(*) FROM matches WHERE finished_ms IS NOT NULL")
+[[ $stored -ge 1 ]] || fail "no finished match in PostgreSQL"
+strokes=$(sql carrom "SELECT count(*) FROM entries WHERE type = 'stroke'")
+echo "cluster.sh: match $code on $owner, the joiner redirected there from $other: scores" \
+    "$(bot_pair_field "$work/creator.json" scores), $strokes strokes stored finished in PostgreSQL"
 
 # The instances stop cleanly on SIGTERM; carrom-1's route, once it is gone, reaches another one.
 kill -TERM "${pids[0]}"
@@ -294,4 +279,4 @@ for i in 1 2; do
     kill -TERM "${pids[$i]}"
     wait "${pids[$i]}" || fail "carrom-$((i + 1)) did not exit 0 on SIGTERM: $(tail -n 5 "$work/carrom-$((i + 1)).log")"
 done
-echo "cluster.sh: OK ($mode mode)"
+echo "cluster.sh: OK"
