@@ -73,6 +73,11 @@ int main(int argc, char** argv) {
                    "Open WebSocket connections from one client address")
         ->envname("CARROM_MAX_CONNECTIONS_PER_ADDRESS")
         ->check(CLI::Range(1, 1000000));
+    std::string trusted_proxies;
+    app.add_option("--trusted-proxy", trusted_proxies,
+                   "Proxies (IP addresses or networks, comma-separated) whose X-Forwarded-For "
+                   "names the client address the per-address limits count")
+        ->envname("CARROM_TRUSTED_PROXY");
     app.add_option("--max-rooms", s.max_rooms, "Open rooms")
         ->envname("CARROM_MAX_ROOMS")
         ->check(CLI::Range(1, 1000000));
@@ -160,6 +165,15 @@ int main(int argc, char** argv) {
     (void)carrom::proto::parse(quick_bot_level, s.quick_match_bot_level);
     if (const std::string problem = carrom::server::tls_files_problem(s); !problem.empty()) {
         std::fprintf(stderr, "carrom-server: bad_tls_files: %s\n", problem.c_str());
+        return 2;
+    }
+    for (std::size_t at = 0; at < trusted_proxies.size();) {
+        const std::size_t comma = std::min(trusted_proxies.find(',', at), trusted_proxies.size());
+        s.trusted_proxies.push_back(trusted_proxies.substr(at, comma - at));
+        at = comma + 1;
+    }
+    if (const std::string problem = carrom::server::trusted_proxies_problem(s); !problem.empty()) {
+        std::fprintf(stderr, "carrom-server: bad_trusted_proxy: %s\n", problem.c_str());
         return 2;
     }
 

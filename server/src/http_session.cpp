@@ -1,5 +1,7 @@
 #include "http_session.hpp"
 
+#include "client_address.hpp"
+
 #include "match_api.hpp"
 #include "server_core.hpp"
 #include "tls_context.hpp"
@@ -99,7 +101,8 @@ void HttpSession::respond(const Request& request) {
         return;
     }
     const bool head = request.method() == http::verb::head;
-    if ((api || target == "/metrics") && refuse_over_rate(request.version(), head)) {
+    if ((api || target == "/metrics") &&
+        refuse_over_rate(request.version(), head, std::string(request["X-Forwarded-For"]))) {
         return;
     }
     auto response = std::make_shared<Response>();
@@ -167,10 +170,11 @@ void HttpSession::respond(const Request& request) {
     send(std::move(response), head);
 }
 
-bool HttpSession::refuse_over_rate(unsigned version, bool head) {
+bool HttpSession::refuse_over_rate(unsigned version, bool head, std::string_view forwarded_for) {
     beast::error_code ec;
     const auto remote = stream_.next_layer().remote_endpoint(ec);
-    const std::string address = ec ? std::string() : remote.address().to_string();
+    const std::string address = client_address(ec ? std::string() : remote.address().to_string(),
+                                               forwarded_for, core_.settings.trusted_proxies);
     const int retry_s = core_.http_limiter.take(address, core_.clock.now_ms());
     if (retry_s == 0) {
         return false;

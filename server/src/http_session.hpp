@@ -41,7 +41,7 @@ private:
     void respond_web(const Request& request);
     // The match API and /metrics: 429 rate_limited (true) when the client's address is over
     // settings.http_rate; false when the request may go on.
-    bool refuse_over_rate(unsigned version, bool head);
+    bool refuse_over_rate(unsigned version, bool head, std::string_view forwarded_for);
     // A GET of the match API: read on core_.match_reader's thread, answered back on this
     // session's executor (503 store_busy when too many reads wait).
     void answer_api(unsigned version, std::string_view target);

@@ -1,6 +1,7 @@
 // Server: the listener, the I/O threads, signals and shutdown around the shared ServerCore.
 #include "carrom/server/server.hpp"
 
+#include "client_address.hpp"
 #include "listener.hpp"
 #include "room_actor.hpp"
 #include "server_core.hpp"
@@ -219,6 +220,10 @@ std::string tls_files_problem(const ServerSettings& settings) {
     auto loaded = TlsContext::load(settings.tls_cert, settings.tls_key);
     auto* error = std::get_if<std::string>(&loaded);
     return error != nullptr ? *error : std::string();
+}
+
+std::string trusted_proxies_problem(const ServerSettings& settings) {
+    return trusted_proxies_problem(settings.trusted_proxies);
 }
 
 bool Server::reload_tls(std::string& result) {

@@ -1,5 +1,7 @@
 #include "ws_session.hpp"
 
+#include "client_address.hpp"
+
 #include "room_actor.hpp"
 #include "server_core.hpp"
 
@@ -44,6 +46,7 @@ WsSession::WsSession(ServerCore& core, ServerStream stream)
 WsSession::~WsSession() = default;
 
 void WsSession::run(http::request<http::string_body> request) {
+    forwarded_for_ = std::string(request["X-Forwarded-For"]);
     websocket::stream_base::timeout timeout{};
     timeout.handshake_timeout = to_duration(core_.settings.handshake_timeout_s);
     timeout.idle_timeout = websocket::stream_base::none();
@@ -85,7 +88,8 @@ void WsSession::on_accept(beast::error_code ec) {
     }
     beast::error_code endpoint_ec;
     const auto remote = ws_.next_layer().next_layer().remote_endpoint(endpoint_ec);
-    address_ = endpoint_ec ? std::string() : remote.address().to_string();
+    address_ = client_address(endpoint_ec ? std::string() : remote.address().to_string(),
+                              forwarded_for_, core_.settings.trusted_proxies);
     if (!core_.add_address(address_)) {
         core_.metrics.rejected_connections_total.fetch_add(1, std::memory_order_relaxed);
         fail(proto::code::kTooManyConnections,

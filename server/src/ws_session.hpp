@@ -169,7 +169,8 @@ private:
     std::optional<int> close_code_; // a close was requested
     std::string close_reason_;
     bool close_started_ = false;
-    std::string address_;          // the client's IP address
+    std::string address_;          // the client's IP address (client_address.hpp)
+    std::string forwarded_for_;    // the upgrade request's X-Forwarded-For
     bool address_counted_ = false; // counted in ServerCore::connections_by_address
     bool too_slow_ = false;        // the write queue overflowed: nothing more is queued
     std::int64_t last_activity_ms_ = 0;

@@ -25,6 +25,8 @@ struct TlsFileError : std::runtime_error {
 // it); empty when they can, or when no TLS is asked for. For a check at start, before anything
 // else is logged.
 std::string tls_files_problem(const ServerSettings& settings);
+// The first --trusted-proxy that is neither an IP address nor a network, as a sentence; "".
+std::string trusted_proxies_problem(const ServerSettings& settings);
 
 class Server {
 public:

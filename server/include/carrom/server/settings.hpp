@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <string>
+#include <vector>
 
 namespace carrom::server {
 
@@ -23,6 +24,9 @@ struct ServerSettings {
     double idle_timeout_s = 60.0;         // nothing received (keep-alive pings at half of it)
     int max_connections = 10000;
     int max_connections_per_address = 32; // open WebSocket connections from one client address
+    // Proxies (addresses or networks) whose X-Forwarded-For names the client address that the
+    // per-address limits count (docs/server.md, "Behind a proxy"); empty: none.
+    std::vector<std::string> trusted_proxies;
     int max_rooms = 5000;
     double grace_s = 60.0;          // dropped seat kept this long
     double shot_clock_s = 20.0;     // default per stroke; 0 = off
