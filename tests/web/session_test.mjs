@@ -25,6 +25,7 @@ function feed(core, step) {
     case 'welcome': return core.welcome(step.token);
     case 'room_state': return core.roomState();
     case 'error': return core.error(step.code);
+    case 'redirect': return core.redirect({ url: step.url, reason: step.reason, code: step.code, as: step.as });
     default: throw new Error(`unknown event ${step.event}`);
   }
 }
@@ -36,6 +37,10 @@ function answer(core, actions) {
       const out = { kind: a.kind };
       if (a.kind === 'wait') out.wait_s = a.waitS;
       if (a.kind === 'give_up') out.reason = a.reason;
+      if (a.kind === 'send_join') {
+        out.code = core.joinCode;
+        out.as = core.joinAs;
+      }
       return out;
     }),
     state: {
@@ -45,6 +50,8 @@ function answer(core, actions) {
       wants_room: core.wantsRoom,
       link_up: core.linkUp,
       token: core.token,
+      url: core.url,
+      redirects: core.redirects,
     },
   };
 }
@@ -70,7 +77,8 @@ for (const file of files) {
   const golden = JSON.parse(readFileSync(join(goldenDir, file), 'utf8'));
   test(`${golden.name}: ${golden.about}`, () => {
     const b = golden.backoff;
-    const core = new SessionCore({ firstS: b.first_s, capS: b.cap_s, giveUpAfterS: b.give_up_after_s }, golden.policy);
+    const core = new SessionCore({ firstS: b.first_s, capS: b.cap_s, giveUpAfterS: b.give_up_after_s }, golden.policy,
+      golden.address);
     golden.steps.forEach((step, i) => {
       const got = answer(core, feed(core, step));
       const expected = { actions: step.actions, state: step.state };
