@@ -21,6 +21,12 @@ const CLOSE_REDIRECTED = 4005;
 // Redirects in a row a session follows; the next one is refused.
 export const MAX_REDIRECTS = 3;
 
+// A URL from the network in a sentence: at most 80 characters, control characters as '?'.
+function shownUrl(url) {
+  const shown = [...url.slice(0, 80)].map((c) => (c.charCodeAt(0) < 0x20 || c.charCodeAt(0) === 0x7f ? '?' : c)).join('');
+  return url.length > 80 ? `${shown}...` : shown;
+}
+
 // The host of a ws:// or wss:// URL, lowercased ("[::1]" keeps its brackets); '' when the URL is
 // not ws:// or wss://, has user information, a space or a control character, or no host
 // (net::ws_url_host).
@@ -67,6 +73,7 @@ export class SessionCore {
     this.retryNextLoss = false; // match_moving: the next loss is tried again
     this.joinCode = ''; // a redirect's room, joined when no seat comes back
     this.joinAs = 'player';
+    this.refusedRedirect = ''; // after give_up (redirect_refused): the sentence saying why
     this.phase = 'connecting';
     this.token = '';
     this.resuming = false; // hello carries the token; cleared by the room's state
@@ -236,7 +243,12 @@ export class SessionCore {
   redirect(message) {
     const greeted = ['greeting', 'lobby', 'joining', 'in_room'].includes(this.phase);
     if (!this.linkUp || !greeted) return [];
-    if (this.redirects >= MAX_REDIRECTS || !redirectAllowed(this.url, this.address, message.url)) {
+    if (!redirectAllowed(this.url, this.address, message.url)) {
+      this.refusedRedirect = `redirect refused: ${shownUrl(message.url)} is not an address of this cluster (${shownUrl(this.address)}).`;
+      return this.giveUp('redirect_refused');
+    }
+    if (this.redirects >= MAX_REDIRECTS) {
+      this.refusedRedirect = `redirect refused: more than ${MAX_REDIRECTS} redirects in a row, the last to ${shownUrl(message.url)}.`;
       return this.giveUp('redirect_refused');
     }
     this.redirects += 1;

@@ -19,6 +19,15 @@ bool refuses_request(std::string_view code) {
            code == c::kTooManyRooms || code == c::kBadField || code == c::kAlreadyInRoom;
 }
 
+// A URL from the network in a sentence: at most 80 bytes, control characters as '?'.
+std::string shown_url(std::string_view url) {
+    std::string out(url.substr(0, 80));
+    std::replace_if(
+        out.begin(), out.end(),
+        [](char c) { return static_cast<unsigned char>(c) < 0x20 || c == 0x7f; }, '?');
+    return out + (url.size() > 80 ? "..." : "");
+}
+
 SessionAction act(SessionActionKind kind) {
     return SessionAction{kind, 0.0, GiveUpReason::NoRetry};
 }
@@ -210,7 +219,14 @@ SessionActions SessionCore::redirect(const proto::Redirect& message) {
     if (!link_up_ || !greeted) {
         return {};
     }
-    if (redirects_ >= kMaxRedirects || !redirect_allowed(url_, address_, message.url)) {
+    if (!redirect_allowed(url_, address_, message.url)) {
+        refused_redirect_ = "redirect refused: " + shown_url(message.url) +
+                            " is not an address of this cluster (" + shown_url(address_) + ").";
+        return give_up(GiveUpReason::RedirectRefused);
+    }
+    if (redirects_ >= kMaxRedirects) {
+        refused_redirect_ = "redirect refused: more than " + std::to_string(kMaxRedirects) +
+                            " redirects in a row, the last to " + shown_url(message.url) + ".";
         return give_up(GiveUpReason::RedirectRefused);
     }
     ++redirects_;

@@ -162,6 +162,9 @@ public:
     int redirects() const { return redirects_; }                // followed in a row
     const std::string& join_code() const { return join_code_; } // SendJoin's room, or empty
     proto::Role join_as() const { return join_as_; }
+    // After GiveUp (RedirectRefused): one sentence saying which redirect and why, starting
+    // "redirect refused: ".
+    const std::string& refused_redirect() const { return refused_redirect_; }
 
 private:
     SessionActions give_up(GiveUpReason reason);
@@ -184,7 +187,8 @@ private:
     int redirects_ = 0;               // followed since the session was last in a room or the lobby
     bool redirect_close_due_ = false; // the redirected link's close (4005) is still to come
     bool retry_next_loss_ = false;    // match_moving: the next loss is tried again
-    std::string join_code_;           // a redirect's room, joined when no seat comes back
+    std::string refused_redirect_;
+    std::string join_code_; // a redirect's room, joined when no seat comes back
     proto::Role join_as_ = proto::Role::Player;
     double lost_since_s_ = 0.0;
     double retry_at_s_ = 0.0;
