@@ -30,18 +30,21 @@ struct LoadCounts {
     // Received messages whose head (message_head.hpp) or, for those a player acts on, whole
     // text did not decode.
     std::int64_t malformed = 0;
-    std::int64_t shots = 0;            // shot_result received by the shooter
-    std::int64_t errors = 0;           // error messages received
-    std::int64_t failures = 0;         // connections that broke or never opened
-    std::int64_t matches_started = 0;  // pairs whose creator began to connect
-    std::int64_t matches_finished = 0; // games that ended (game_end), counted once per match
+    std::int64_t shots = 0;             // shot_result received by the shooter
+    std::int64_t errors = 0;            // error messages received
+    std::int64_t failures = 0;          // connections that broke or never opened
+    std::int64_t redirects = 0;         // a cluster's redirects followed (a new connection each)
+    std::int64_t redirects_refused = 0; // redirects not followed (counted in failures too)
+    std::int64_t matches_started = 0;   // pairs whose creator began to connect
+    std::int64_t matches_finished = 0;  // games that ended (game_end), counted once per match
     LoadCounts& operator+=(const LoadCounts& other);
 };
 
 // What clients measure, summed over them (one thread: no locking).
 struct LoadStats : LoadCounts {
     std::map<std::string, std::int64_t> errors_by_code; // error messages received, by code
-    std::string tls_refusal; // the first refused TLS handshake's sentence (client_tls.hpp)
+    std::string tls_refusal;      // the first refused TLS handshake's sentence (client_tls.hpp)
+    std::string redirect_refusal; // the first refused redirect's sentence
     // Per delta snapshot: receive time - the time the room's schedule had it due (due_ms), ms.
     std::vector<double> lag_ms;
     std::vector<std::int64_t> lag_due_ms; // due_ms of each lag_ms sample, for the timeline
@@ -74,6 +77,18 @@ struct LoadOptions {
     bool keep_samples = true;
 };
 
+// Where a redirected player goes (docs/protocol.md, "Redirects"): the URL's port and path on the
+// given server's address, hello with the seat's token when it held one, else join `code`.
+struct RedirectPlan {
+    std::uint16_t port = 0;
+    std::string target = "/"; // path and query
+    std::string url;          // as the redirect gave it
+    std::string code;         // the room to join when no seat comes back; empty: none
+    proto::Role as = proto::Role::Player;
+    std::string token; // the seat's resume token; empty: none
+    int redirects = 0; // followed in a row, this one included
+};
+
 // Two players of one room. The creator makes the room; the joiner starts once it has a code.
 // With LoadOptions::replace the pair is a slot: when its game ends both players leave and two
 // new players start a new match in a new room (a new generation).
@@ -94,6 +109,8 @@ public:
     void on_room_code(int generation, const std::string& code); // from the creator
     void on_game_end(int generation);                           // from either player
     class Player;
+    // A player got a redirect it follows: a new player of the same role takes its place there.
+    void on_redirect(const Player* from, const RedirectPlan& plan);
 
 private:
     boost::asio::io_context& ioc_;
