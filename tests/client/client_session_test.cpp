@@ -53,6 +53,8 @@ struct Harness {
     FakeWire& wire() { return *wires.back(); }
     // Asks to create a room, connects and is in the room (welcomed with kToken) by 0.2 s.
     void into_room();
+    // Asks for a quick match, connects and is welcomed (kToken) and waiting by 0.2 s.
+    void into_quick_match_queue();
 };
 
 const std::string kToken = "0123456789abcdef0123456789abcdef";
@@ -64,6 +66,15 @@ void Harness::into_room() {
     session.update(0.1);
     wire().inbox.push_back(proto::Welcome{1, 7, kToken, 1000});
     wire().inbox.push_back(proto::RoomState{});
+    session.update(0.2);
+}
+
+void Harness::into_quick_match_queue() {
+    session.request({RoomRequest::Kind::Quick, "", proto::RuleSet::Icf, std::nullopt});
+    session.start(0.0);
+    wire().state = LinkState::Open;
+    session.update(0.1);
+    wire().inbox.push_back(proto::Welcome{1, 7, kToken, 1000});
     session.update(0.2);
 }
 
@@ -209,12 +220,7 @@ TEST(ClientSession, ASeatOpenedOnAnotherLinkIsNotTakenBack) {
 
 TEST(ClientSession, ARequestLostBeforeItsAnswerIsAskedAgainByANewPlayer) {
     Harness h;
-    h.session.request({RoomRequest::Kind::Quick, "", proto::RuleSet::Icf, std::nullopt});
-    h.session.start(0.0);
-    h.wire().state = LinkState::Open;
-    h.session.update(0.1);
-    h.wire().inbox.push_back(proto::Welcome{1, 7, kToken, 1000});
-    h.session.update(0.2);
+    h.into_quick_match_queue();
     ASSERT_TRUE(has_sent<proto::QuickMatch>(h.wire()));
     h.wire().state = LinkState::Closed; // still in the queue: no seat to resume
     h.session.update(20.0);
@@ -381,12 +387,7 @@ TEST(ClientSession, EveryHelloFollowsRedirects) {
 
 TEST(ClientSession, ARedirectConnectsThereAndJoinsTheNamedRoom) {
     Harness h;
-    h.session.request({RoomRequest::Kind::Quick, "", proto::RuleSet::Icf, std::nullopt});
-    h.session.start(0.0);
-    h.wire().state = LinkState::Open;
-    h.session.update(0.1);
-    h.wire().inbox.push_back(proto::Welcome{1, 7, kToken, 1000});
-    h.session.update(0.2);
+    h.into_quick_match_queue();
     ASSERT_TRUE(has_sent<proto::QuickMatch>(h.wire()));
     h.wire().inbox.push_back(
         proto::Redirect{"ws://127.0.0.1:7801/i/b/", "quick_match", "K7M2QX", proto::Role::Player});

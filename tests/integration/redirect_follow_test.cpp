@@ -5,6 +5,7 @@
 // to another host (127.0.0.2, where a listener counts connections) is never connected to.
 #include "harness.hpp"
 #include "support/server_process.hpp"
+#include "support/tcp_listener.hpp"
 
 #include "carrom/proto/codec.hpp"
 #include "carrom/proto/error.hpp"
@@ -16,10 +17,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include <atomic>
 #include <mutex>
-#include <sys/socket.h>
-#include <sys/time.h>
 #include <thread>
 
 namespace carrom::integration {
@@ -31,44 +29,7 @@ namespace websocket = beast::websocket;
 using tcp = asio::ip::tcp;
 using namespace std::chrono_literals;
 
-// Accepts TCP connections on `host` one at a time until destroyed, handing each to `serve`.
-class Listener {
-public:
-    Listener(const std::string& host, std::function<void(tcp::socket&)> serve)
-        : acceptor_(ioc_, tcp::endpoint(asio::ip::make_address(host), 0)) {
-        port_ = acceptor_.local_endpoint().port();
-        thread_ = std::thread([this, serve = std::move(serve)] {
-            while (!stopping_) {
-                tcp::socket socket(ioc_);
-                beast::error_code ec;
-                acceptor_.accept(socket, ec);
-                if (ec || stopping_) {
-                    return;
-                }
-                ++accepted_;
-                const timeval limit{5, 0}; // every blocking read ends within 5 s
-                ::setsockopt(socket.native_handle(), SOL_SOCKET, SO_RCVTIMEO, &limit,
-                             sizeof(limit));
-                serve(socket);
-            }
-        });
-    }
-    ~Listener() {
-        stopping_ = true;
-        ::shutdown(acceptor_.native_handle(), SHUT_RDWR); // wakes a pending accept
-        thread_.join();
-    }
-    std::uint16_t port() const { return port_; }
-    int accepted() const { return accepted_; }
-
-private:
-    asio::io_context ioc_;
-    tcp::acceptor acceptor_;
-    std::uint16_t port_ = 0;
-    std::atomic<bool> stopping_{false};
-    std::atomic<int> accepted_{0};
-    std::thread thread_;
-};
+using test_support::TcpListener;
 
 // An instance that runs no room: a hello with a resume token gets `redirect` (seat); one without
 // gets welcome, and its room request gets `redirect` (room, the code it asked for, else
@@ -126,7 +87,7 @@ private:
     std::string code_;
     mutable std::mutex mutex_;
     std::vector<proto::Hello> hellos_;
-    Listener listener_; // last: its thread stops before the rest goes
+    TcpListener listener_; // last: its thread stops before the rest goes
 };
 
 test_support::ServerProcess::Options real_server() {
@@ -196,7 +157,7 @@ TEST(RedirectFollow, BotJoinsTheNamedRoomAndResumesItsSeatThroughRedirects) {
 }
 
 TEST(RedirectFollow, BotNeverConnectsToAnotherHost) {
-    Listener elsewhere("127.0.0.2", [](tcp::socket&) {});
+    TcpListener elsewhere("127.0.0.2");
     RedirectingInstance front("ws://127.0.0.2:" + std::to_string(elsewhere.port()) + "/", "K7M2QX");
     const auto strategy = test_strategy("random", 2);
     bots::BotRunner bot(bot_config(front.url(), bots::JoinMode::Quick, ""), *strategy);
@@ -211,6 +172,17 @@ TEST(RedirectFollow, BotNeverConnectsToAnotherHost) {
     EXPECT_EQ(front.hellos().size(), 1u);
 }
 
+// carrom-load --port (the front's) for one match over `seconds` s of measuring: its exit code
+// and JSON result (null when it printed none).
+std::pair<int, nlohmann::json> load_through(const RedirectingInstance& front, int seconds) {
+    const std::string port = front.url().substr(front.url().rfind(':') + 1);
+    const CommandRun ran =
+        run_command(std::string(CARROM_LOAD_PATH) + " --port " + port +
+                    " --matches 1 --ramp 0 --warmup 1 --think-ms 200 --seed 3 --duration " +
+                    std::to_string(seconds) + " 2>/dev/null");
+    return {ran.exit, nlohmann::json::parse(ran.out, nullptr, false)};
+}
+
 // carrom-load --port FRONT: both players of its match are redirected once (the creator's
 // create_room without a room code, the joiner's join_room with its code) and play on the real
 // server. About 4 s.
@@ -218,12 +190,8 @@ TEST(RedirectFollow, LoadFollowsAndCountsRedirects) {
     test_support::ServerProcess server(real_server());
     ASSERT_TRUE(server.start()) << server.log();
     RedirectingInstance front(server.url() + "/");
-    const std::string port = front.url().substr(front.url().rfind(':') + 1);
-    const CommandRun ran = run_command(std::string(CARROM_LOAD_PATH) + " --port " + port +
-                                       " --matches 1 --ramp 0 --warmup 1 --duration 2 "
-                                       "--think-ms 200 --seed 3 2>/dev/null");
-    ASSERT_EQ(ran.exit, 0) << ran.out;
-    const auto out = nlohmann::json::parse(ran.out);
+    const auto [exit, out] = load_through(front, 2);
+    ASSERT_EQ(exit, 0) << out.dump();
     EXPECT_EQ(out["redirects"], 2);
     EXPECT_EQ(out["redirects_refused"], 0);
     EXPECT_EQ(out["client_failures"], 0);
@@ -232,20 +200,16 @@ TEST(RedirectFollow, LoadFollowsAndCountsRedirects) {
 }
 
 TEST(RedirectFollow, LoadNeverConnectsToAnotherHost) {
-    Listener elsewhere("127.0.0.2", [](tcp::socket&) {});
+    TcpListener elsewhere("127.0.0.2");
     const std::string target = "ws://127.0.0.2:" + std::to_string(elsewhere.port()) + "/";
     RedirectingInstance front(target);
-    const std::string port = front.url().substr(front.url().rfind(':') + 1);
-    const CommandRun ran = run_command(std::string(CARROM_LOAD_PATH) + " --port " + port +
-                                       " --matches 1 --ramp 0 --warmup 0 --duration 1 "
-                                       "--seed 3 2>/dev/null");
-    EXPECT_EQ(ran.exit, 1) << ran.out;
-    const auto out = nlohmann::json::parse(ran.out);
+    const auto [exit, out] = load_through(front, 1);
+    EXPECT_EQ(exit, 1) << out.dump();
     EXPECT_EQ(out["redirects"], 0);
     EXPECT_EQ(out["redirects_refused"], 1);
-    EXPECT_EQ(out["redirect_refusal"],
-              "redirect refused: " + target +
-                  " is not an address of this cluster (ws://127.0.0.1:" + port + ").");
+    EXPECT_EQ(out["redirect_refusal"], "redirect refused: " + target +
+                                           " is not an address of this cluster (" + front.url() +
+                                           ").");
     EXPECT_EQ(elsewhere.accepted(), 0);
 }
 
