@@ -3,9 +3,6 @@
 #include "message_head.hpp"
 
 #include "carrom/bots/match_view.hpp"
-#include "carrom/net/redirect_rule.hpp"
-#include "carrom/net/session_core.hpp"
-#include "carrom/net/ws_url.hpp"
 #include "carrom/proto/codec.hpp"
 #include "carrom/tls/client_tls.hpp"
 
@@ -27,13 +24,6 @@ namespace websocket = beast::websocket;
 using tcp = asio::ip::tcp;
 
 namespace {
-
-// ws://ADDRESS:PORT (wss:// with TLS), IPv6 in brackets.
-std::string load_url(const tcp::endpoint& server, std::uint16_t port, bool tls) {
-    const std::string address = server.address().is_v6() ? "[" + server.address().to_string() + "]"
-                                                         : server.address().to_string();
-    return (tls ? "wss://" : "ws://") + address + ":" + std::to_string(port);
-}
 
 // The messages a player acts on, decoded whole; the others (pong, the events of a shot's
 // physics and the rules' cues) are only counted.
@@ -317,37 +307,22 @@ private:
 
     void on_message(const proto::Snapshot&, Clock::time_point) {}
     void on_message(const proto::Pong&, Clock::time_point) {}
-    // Followed as net::SessionCore would (the given address's host, no change of scheme, at most
-    // kMaxRedirects in a row): a new player of this role takes this one's place there.
+    // Followed as plan_redirect() decides: a new player of this role takes this one's place.
     void on_message(const proto::Redirect& redirect, Clock::time_point) {
-        const bool tls = options_.tls != nullptr;
-        const std::string given = load_url(options_.server, options_.server.port(), tls);
-        const auto parsed = net::parse_ws_url(redirect.url);
-        const auto* to = std::get_if<net::WsUrl>(&parsed);
-        std::string refusal;
-        if (!net::redirect_allowed(load_url(options_.server, port_, tls) + target_, given,
-                                   redirect.url)) {
-            refusal = " is not an address of this cluster (" + given + ").";
-        } else if (plan_.redirects >= net::SessionCore::kMaxRedirects) {
-            refusal = ": more than " + std::to_string(net::SessionCore::kMaxRedirects) +
-                      " redirects in a row.";
-        } else if (to == nullptr || to->tls != tls) {
-            refusal = ": carrom-load follows only to its own scheme, with a port.";
-        }
+        const LoadLink link{options_.server, port_, target_, options_.tls != nullptr,
+                            plan_.redirects};
+        const auto plan =
+            plan_redirect(link, redirect, room_ && room_->you >= 0 ? token_ : std::string());
         stop_reading_here();
-        if (!refusal.empty()) {
+        if (const auto* refusal = std::get_if<std::string>(&plan)) {
             ++stats_.redirects_refused;
             if (stats_.redirect_refusal.empty()) {
-                stats_.redirect_refusal = "redirect refused: " + redirect.url + refusal;
+                stats_.redirect_refusal = *refusal;
             }
             return fail();
         }
         ++stats_.redirects;
-        RedirectPlan plan{to->port,           to->target,
-                          redirect.url,       redirect.code,
-                          redirect.as,        room_ && room_->you >= 0 ? token_ : std::string(),
-                          plan_.redirects + 1};
-        pair_.on_redirect(this, plan);
+        pair_.on_redirect(this, std::get<RedirectPlan>(plan));
     }
 
     // This connection ends without a leave (the server closes it, 4005); its end is no failure.

@@ -4,6 +4,8 @@
 // head is read first (message_head.hpp): of a snapshot only the fields the lag figures need;
 // the messages a player acts on are then decoded whole with proto::decode_server.
 
+#include "load_redirect.hpp"
+
 #include "carrom/bots/random_strategy.hpp"
 #include "carrom/proto/client_messages.hpp"
 
@@ -75,18 +77,6 @@ struct LoadOptions {
     // Keep the per-snapshot lag samples (about 24 bytes per snapshot); false for long runs,
     // whose lag figures are then 0.
     bool keep_samples = true;
-};
-
-// Where a redirected player goes (docs/protocol.md, "Redirects"): the URL's port and path on the
-// given server's address, hello with the seat's token when it held one, else join `code`.
-struct RedirectPlan {
-    std::uint16_t port = 0;
-    std::string target = "/"; // path and query
-    std::string url;          // as the redirect gave it
-    std::string code;         // the room to join when no seat comes back; empty: none
-    proto::Role as = proto::Role::Player;
-    std::string token; // the seat's resume token; empty: none
-    int redirects = 0; // followed in a row, this one included
 };
 
 // Two players of one room. The creator makes the room; the joiner starts once it has a code.
