@@ -23,7 +23,8 @@ export const MAX_REDIRECTS = 3;
 
 // A URL from the network in a sentence: at most 80 characters, control characters as '?'.
 function shownUrl(url) {
-  const shown = [...url.slice(0, 80)].map((c) => (c.charCodeAt(0) < 0x20 || c.charCodeAt(0) === 0x7f ? '?' : c)).join('');
+  const control = (c) => c.charCodeAt(0) < 0x20 || c.charCodeAt(0) === 0x7f;
+  const shown = [...url.slice(0, 80)].map((c) => (control(c) ? '?' : c)).join('');
   return url.length > 80 ? `${shown}...` : shown;
 }
 
@@ -244,11 +245,13 @@ export class SessionCore {
     const greeted = ['greeting', 'lobby', 'joining', 'in_room'].includes(this.phase);
     if (!this.linkUp || !greeted) return [];
     if (!redirectAllowed(this.url, this.address, message.url)) {
-      this.refusedRedirect = `redirect refused: ${shownUrl(message.url)} is not an address of this cluster (${shownUrl(this.address)}).`;
+      this.refusedRedirect = `redirect refused: ${shownUrl(message.url)} is not an address of this cluster `
+        + `(${shownUrl(this.address)}).`;
       return this.giveUp('redirect_refused');
     }
     if (this.redirects >= MAX_REDIRECTS) {
-      this.refusedRedirect = `redirect refused: more than ${MAX_REDIRECTS} redirects in a row, the last to ${shownUrl(message.url)}.`;
+      this.refusedRedirect = `redirect refused: more than ${MAX_REDIRECTS} redirects in a row, `
+        + `the last to ${shownUrl(message.url)}.`;
       return this.giveUp('redirect_refused');
     }
     this.redirects += 1;
