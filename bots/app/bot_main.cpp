@@ -53,6 +53,7 @@ nlohmann::json summary_json(const bots::BotSummary& s, const bots::Strategy& str
             {"seq_gaps", s.seq_gaps},
             {"unrepaired_gaps", s.unrepaired_gaps},
             {"resumes", s.resumes},
+            {"redirects", s.redirects},
             {"decode_errors", s.decode_errors},
             {"errors", errors},
             {"failure", s.failure},

@@ -41,15 +41,26 @@ public:
     Player(asio::io_context& ioc, MatchPair& pair, const LoadOptions& options, LoadStats& stats,
            bool creator, int generation, std::uint64_t seed)
         : pair_(pair), options_(options), stats_(stats), creator_(creator), generation_(generation),
-          ws_(ioc), think_(ioc), think_rng_(seed ^ 0x9e3779b97f4a7c15ULL), strategy_(seed) {}
+          port_(options.server.port()), ws_(ioc), think_(ioc),
+          think_rng_(seed ^ 0x9e3779b97f4a7c15ULL), strategy_(seed) {}
 
     void start(std::string code) {
         code_ = std::move(code);
         beast::get_lowest_layer(ws_).expires_after(std::chrono::seconds(30));
         beast::get_lowest_layer(ws_).async_connect(
-            options_.server,
+            tcp::endpoint(options_.server.address(), port_),
             [self = shared_from_this()](beast::error_code ec) { self->on_connect(ec); });
     }
+
+    // Starts where a redirect sent the player it replaces (the room it was in: `code`).
+    void start_redirected(std::string code, const RedirectPlan& plan) {
+        plan_ = plan;
+        port_ = plan.port;
+        target_ = plan.target;
+        start(std::move(code));
+    }
+
+    const std::string& room_code() const { return code_; }
 
     bool held() const { return open_ && seated_ && !broken_; }
 
@@ -105,7 +116,7 @@ private:
         beast::get_lowest_layer(ws_).expires_never();
         ws_.set_option(websocket::stream_base::timeout::suggested(beast::role_type::client));
         ws_.read_message_max(proto::kMaxServerMessageBytes);
-        ws_.async_handshake("127.0.0.1", "/", [self = shared_from_this()](beast::error_code e) {
+        ws_.async_handshake("127.0.0.1", target_, [self = shared_from_this()](beast::error_code e) {
             self->on_handshake(e);
         });
     }
@@ -123,8 +134,9 @@ private:
                             [self = shared_from_this()](beast::error_code) {});
             return;
         }
-        send(proto::encode(
-            proto::Hello{proto::kProtocolVersion, creator_ ? "load-a" : "load-b", std::nullopt}));
+        send(proto::encode(proto::Hello{
+            proto::kProtocolVersion, creator_ ? "load-a" : "load-b",
+            plan_.token.empty() ? std::nullopt : std::optional(plan_.token), std::nullopt, true}));
     }
 
     void read() {
@@ -223,8 +235,14 @@ private:
         }
     }
 
-    void on_message(const proto::Welcome&, Clock::time_point) {
-        if (creator_) {
+    void on_message(const proto::Welcome& welcome, Clock::time_point) {
+        token_ = welcome.resume_token;
+        if (!plan_.token.empty() && welcome.resume_token == plan_.token) {
+            return; // the seat is back: the room's state follows
+        }
+        if (!plan_.code.empty()) {
+            send(proto::encode(proto::JoinRoom{plan_.code, plan_.as}));
+        } else if (creator_) {
             proto::CreateRoom create;
             create.rule_set = options_.rule_set;
             create.options.shot_clock_s = 0.0;
@@ -241,6 +259,7 @@ private:
             code_ = room.code;
             pair_.on_room_code(generation_, room.code);
         }
+        plan_.redirects = 0; // in a room: the redirects in a row start again
         seated_ = room.you >= 0 && room.seats.size() == 2 && room.seats[0].occupied &&
                   room.seats[1].occupied;
         room_ = room;
@@ -288,7 +307,35 @@ private:
 
     void on_message(const proto::Snapshot&, Clock::time_point) {}
     void on_message(const proto::Pong&, Clock::time_point) {}
-    void on_message(const proto::Redirect&, Clock::time_point) {}
+    // Followed as plan_redirect() decides: a new player of this role takes this one's place.
+    void on_message(const proto::Redirect& redirect, Clock::time_point) {
+        const LoadLink link{options_.server, port_, target_, options_.tls != nullptr,
+                            plan_.redirects};
+        const auto plan =
+            plan_redirect(link, redirect, room_ && room_->you >= 0 ? token_ : std::string());
+        stop_reading_here();
+        if (const auto* refusal = std::get_if<std::string>(&plan)) {
+            ++stats_.redirects_refused;
+            if (stats_.redirect_refusal.empty()) {
+                stats_.redirect_refusal = *refusal;
+            }
+            return fail();
+        }
+        ++stats_.redirects;
+        pair_.on_redirect(this, std::get<RedirectPlan>(plan));
+    }
+
+    // This connection ends without a leave (the server closes it, 4005); its end is no failure.
+    void stop_reading_here() {
+        closing_ = true;
+        think_.cancel();
+        while (outbox_.size() > (writing_ ? 1U : 0U)) {
+            outbox_.pop_back();
+        }
+        if (!writing_) {
+            write_next(); // sends the close
+        }
+    }
 
     void maybe_shoot() {
         if (!room_ || closing_ || room_->you < 0 || room_->phase != proto::Phase::Aiming ||
@@ -370,7 +417,11 @@ private:
     LoadOptions options_;
     LoadStats& stats_;
     bool creator_;
-    int generation_; // of the pair's slot
+    int generation_;     // of the pair's slot
+    std::uint16_t port_; // the server's, or a redirect's
+    std::string target_ = "/";
+    RedirectPlan plan_; // where a redirect sent this player (empty: nowhere)
+    std::string token_; // the welcome's resume token
     websocket::stream<tls::FlexStream<beast::tcp_stream>> ws_;
     tls::VerifyFailure verify_failure_; // the certificate refused in the TLS handshake
     asio::steady_timer think_;
@@ -401,6 +452,8 @@ LoadCounts& LoadCounts::operator+=(const LoadCounts& other) {
     shots += other.shots;
     errors += other.errors;
     failures += other.failures;
+    redirects += other.redirects;
+    redirects_refused += other.redirects_refused;
     matches_started += other.matches_started;
     matches_finished += other.matches_finished;
     return *this;
@@ -410,6 +463,9 @@ LoadStats& LoadStats::operator+=(const LoadStats& other) {
     LoadCounts::operator+=(other);
     if (tls_refusal.empty()) {
         tls_refusal = other.tls_refusal;
+    }
+    if (redirect_refusal.empty()) {
+        redirect_refusal = other.redirect_refusal;
     }
     for (const auto& [code, count] : other.errors_by_code) {
         errors_by_code[code] += count;
@@ -467,6 +523,17 @@ void MatchPair::on_game_end(int generation) {
     ++stats_.matches_finished;
     close();
     start();
+}
+
+void MatchPair::on_redirect(const Player* from, const RedirectPlan& plan) {
+    const bool creator = from == creator_.get();
+    if (!creator && from != joiner_.get()) {
+        return; // a player of a match already replaced
+    }
+    auto next = std::make_shared<Player>(ioc_, *this, options_, stats_, creator, generation_,
+                                         player_seed(seed_, generation_, creator));
+    next->start_redirected(from->room_code(), plan);
+    (creator ? creator_ : joiner_) = std::move(next);
 }
 
 bool MatchPair::held() const {

@@ -4,6 +4,8 @@
 // head is read first (message_head.hpp): of a snapshot only the fields the lag figures need;
 // the messages a player acts on are then decoded whole with proto::decode_server.
 
+#include "load_redirect.hpp"
+
 #include "carrom/bots/random_strategy.hpp"
 #include "carrom/proto/client_messages.hpp"
 
@@ -30,18 +32,21 @@ struct LoadCounts {
     // Received messages whose head (message_head.hpp) or, for those a player acts on, whole
     // text did not decode.
     std::int64_t malformed = 0;
-    std::int64_t shots = 0;            // shot_result received by the shooter
-    std::int64_t errors = 0;           // error messages received
-    std::int64_t failures = 0;         // connections that broke or never opened
-    std::int64_t matches_started = 0;  // pairs whose creator began to connect
-    std::int64_t matches_finished = 0; // games that ended (game_end), counted once per match
+    std::int64_t shots = 0;             // shot_result received by the shooter
+    std::int64_t errors = 0;            // error messages received
+    std::int64_t failures = 0;          // connections that broke or never opened
+    std::int64_t redirects = 0;         // a cluster's redirects followed (a new connection each)
+    std::int64_t redirects_refused = 0; // redirects not followed (counted in failures too)
+    std::int64_t matches_started = 0;   // pairs whose creator began to connect
+    std::int64_t matches_finished = 0;  // games that ended (game_end), counted once per match
     LoadCounts& operator+=(const LoadCounts& other);
 };
 
 // What clients measure, summed over them (one thread: no locking).
 struct LoadStats : LoadCounts {
     std::map<std::string, std::int64_t> errors_by_code; // error messages received, by code
-    std::string tls_refusal; // the first refused TLS handshake's sentence (client_tls.hpp)
+    std::string tls_refusal;      // the first refused TLS handshake's sentence (client_tls.hpp)
+    std::string redirect_refusal; // the first refused redirect's sentence
     // Per delta snapshot: receive time - the time the room's schedule had it due (due_ms), ms.
     std::vector<double> lag_ms;
     std::vector<std::int64_t> lag_due_ms; // due_ms of each lag_ms sample, for the timeline
@@ -94,6 +99,8 @@ public:
     void on_room_code(int generation, const std::string& code); // from the creator
     void on_game_end(int generation);                           // from either player
     class Player;
+    // A player got a redirect it follows: a new player of the same role takes its place there.
+    void on_redirect(const Player* from, const RedirectPlan& plan);
 
 private:
     boost::asio::io_context& ioc_;

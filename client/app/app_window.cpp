@@ -41,17 +41,18 @@ AppWindow::AppWindow(const AppOptions& options, const sf::Font& font)
       menus_(settings_file(options), load_settings(settings_file(options))),
       records_(options.demo ? std::string() : options.url, options.ca_file),
       sound_(!options.mute && options.bench_frames == 0 && options.screenshot_path.empty()),
-      session_(make_factory(), options.name, network_session_config(options.identity)) {}
+      session_(make_factory(), options.name,
+               network_session_config(options.identity, options.demo ? "" : options.url)) {}
 
 LinkFactory AppWindow::make_factory() {
     if (!options_.demo) {
-        return make_network_link_factory(options_.url, options_.ca_file);
+        return make_network_link_factory(options_.ca_file);
     }
     DemoConfig demo;
     demo.first_shot_at_s = options_.demo_break_at_s;
     demo.autoplay_after_s = options_.demo_autoplay_s;
     const PhysicsConfig physics = physics_;
-    return [this, demo, physics]() -> std::unique_ptr<MessageLink> {
+    return [this, demo, physics](const std::string&) -> std::unique_ptr<MessageLink> {
         return std::make_unique<DemoLink>(
             physics, [this] { return clock_.now(); }, demo);
     };

@@ -39,8 +39,9 @@ void AppWindow::handle_lobby_event(const sf::Event& e) {
         if (lobby_.name() != options_.name) {
             // Another name: a new player on a new connection.
             options_.name = lobby_.name();
-            session_ = ClientSession(make_factory(), options_.name,
-                                     network_session_config(options_.identity));
+            session_ = ClientSession(
+                make_factory(), options_.name,
+                network_session_config(options_.identity, options_.demo ? "" : options_.url));
             session_.start(clock_.now());
         }
         session_.request(*request);

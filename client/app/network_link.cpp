@@ -65,17 +65,20 @@ std::string check_url(const std::string& url) {
     return {};
 }
 
-SessionConfig network_session_config(const std::optional<std::string>& identity) {
+SessionConfig network_session_config(const std::optional<std::string>& identity,
+                                     const std::string& address) {
     SessionConfig config;
+    config.address = address;
     config.jitter_seed = std::random_device{}();
     config.identity = identity;
     return config;
 }
 
-LinkFactory make_network_link_factory(const std::string& url, const std::string& ca_file) {
+LinkFactory make_network_link_factory(const std::string& ca_file) {
     net::ConnectionOptions options;
     options.ca_file = ca_file;
-    return [url, options] { return std::make_unique<NetworkLink>(url, options); };
+    return
+        [options](const std::string& url) { return std::make_unique<NetworkLink>(url, options); };
 }
 
 } // namespace carrom::client::app

@@ -12,10 +12,13 @@ namespace carrom::client::app {
 // url: ws:// or wss://HOST:PORT[/path]. Returns an empty string if it looks right, else a
 // sentence.
 std::string check_url(const std::string& url);
-// ca_file: for wss://, certificate authorities trusted besides the system's ("" = none).
-LinkFactory make_network_link_factory(const std::string& url, const std::string& ca_file);
+// Links to the URL the session asks for. ca_file: for wss://, certificate authorities trusted
+// besides the system's ("" = none).
+LinkFactory make_network_link_factory(const std::string& ca_file);
 // The session's settings for the window: the defaults, with jitter on the reconnect back-off,
-// and the player key to say hello with (none: a guest).
-SessionConfig network_session_config(const std::optional<std::string>& identity);
+// the player key to say hello with (none: a guest) and the server address the player gave
+// (empty in the demo).
+SessionConfig network_session_config(const std::optional<std::string>& identity,
+                                     const std::string& address);
 
 } // namespace carrom::client::app

@@ -33,8 +33,8 @@ bool is_room_message(const proto::ServerMessage& m) {
 
 ClientSession::ClientSession(LinkFactory factory, std::string name, const SessionConfig& config)
     : factory_(std::move(factory)), name_(std::move(name)), config_(config),
-      core_(config.backoff, net::ReconnectPolicy::Always), jitter_(config.jitter_seed.value_or(0)) {
-}
+      core_(config.backoff, net::ReconnectPolicy::Always, config.address),
+      jitter_(config.jitter_seed.value_or(0)) {}
 
 ReconnectInfo ClientSession::reconnect_info(double local_s) const {
     ReconnectInfo info;
@@ -63,6 +63,7 @@ void ClientSession::apply(const net::SessionActions& actions) {
             proto::Hello hello;
             hello.name = name_;
             hello.identity = config_.identity;
+            hello.follows_redirects = true;
             if (action.kind == Kind::SendResume) {
                 hello.resume_token = core_.token();
             }
@@ -72,6 +73,10 @@ void ClientSession::apply(const net::SessionActions& actions) {
         }
         case Kind::SendRoomRequest:
             send_request();
+            break;
+        case Kind::SendJoin:
+            link_->send(proto::JoinRoom{core_.join_code(), core_.join_as()});
+            status_ = "Joining...";
             break;
         case Kind::SendLeave:
             if (link_ && link_->status().state == LinkState::Open) {
@@ -112,6 +117,10 @@ void ClientSession::apply(const net::SessionActions& actions) {
             case net::GiveUpReason::NoRetry:
                 status_ = lost_reason_;
                 break;
+            case net::GiveUpReason::RedirectRefused:
+                status_ = core_.refused_redirect();
+                lost_reason_ = status_;
+                break;
             }
             break;
         }
@@ -119,13 +128,18 @@ void ClientSession::apply(const net::SessionActions& actions) {
 }
 
 void ClientSession::open_link(double local_s) {
-    link_ = factory_ ? factory_() : nullptr;
+    if (link_) { // a redirect's: the server closes it (4005) once we go
+        link_->close();
+    }
+    link_ = factory_ ? factory_(core_.url()) : nullptr;
     if (!link_) {
         on_link_lost(local_s, "Could not start a connection", 0);
         return;
     }
     hello_due_ = true;
-    if (core_.phase() == SessionPhase::Reconnecting) {
+    if (core_.redirects() > 0 && core_.tries() == 0) {
+        status_ = "Moving to another server of the cluster...";
+    } else if (core_.phase() == SessionPhase::Reconnecting) {
         status_ = "Reconnecting (attempt " + std::to_string(core_.tries()) + ")...";
     } else {
         status_ = "Connecting...";
@@ -237,9 +251,13 @@ std::vector<proto::ServerMessage> ClientSession::update(double local_s) {
         hello_due_ = false;
         apply(core_.link_opened());
     }
+    const MessageLink* polled = link_.get();
     for (proto::ServerMessage& m : link_->poll()) {
         if (handle(m)) {
             out.push_back(std::move(m));
+        }
+        if (link_.get() != polled) { // a redirect: the rest is the old link's
+            return out;
         }
     }
     if (st.state == LinkState::Closed && link_) {
@@ -287,6 +305,10 @@ bool ClientSession::handle(const proto::ServerMessage& m) {
     if (const auto* error = std::get_if<proto::Error>(&m)) {
         apply(core_.error(error->code));
         return true;
+    }
+    if (const auto* redirect = std::get_if<proto::Redirect>(&m)) {
+        apply(core_.redirect(*redirect));
+        return false;
     }
     return true;
 }

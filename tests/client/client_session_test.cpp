@@ -10,6 +10,7 @@ namespace {
 
 // A link the test drives: it records what the client sends and delivers what the test queues.
 struct FakeWire {
+    std::string url; // where the session opened it
     LinkState state = LinkState::Connecting;
     std::string detail;
     int close_code = 0;
@@ -33,16 +34,27 @@ private:
     FakeWire& wire_;
 };
 
+const std::string kAddress = "ws://127.0.0.1:7777";
+
+SessionConfig harness_config() {
+    SessionConfig config;
+    config.address = kAddress;
+    return config;
+}
+
 struct Harness {
     std::vector<std::unique_ptr<FakeWire>> wires;
-    ClientSession session{[this] {
+    ClientSession session{[this](const std::string& url) {
                               wires.push_back(std::make_unique<FakeWire>());
+                              wires.back()->url = url;
                               return std::make_unique<FakeLink>(*wires.back());
                           },
-                          "Ana"};
+                          "Ana", harness_config()};
     FakeWire& wire() { return *wires.back(); }
     // Asks to create a room, connects and is in the room (welcomed with kToken) by 0.2 s.
     void into_room();
+    // Asks for a quick match, connects and is welcomed (kToken) and waiting by 0.2 s.
+    void into_quick_match_queue();
 };
 
 const std::string kToken = "0123456789abcdef0123456789abcdef";
@@ -54,6 +66,15 @@ void Harness::into_room() {
     session.update(0.1);
     wire().inbox.push_back(proto::Welcome{1, 7, kToken, 1000});
     wire().inbox.push_back(proto::RoomState{});
+    session.update(0.2);
+}
+
+void Harness::into_quick_match_queue() {
+    session.request({RoomRequest::Kind::Quick, "", proto::RuleSet::Icf, std::nullopt});
+    session.start(0.0);
+    wire().state = LinkState::Open;
+    session.update(0.1);
+    wire().inbox.push_back(proto::Welcome{1, 7, kToken, 1000});
     session.update(0.2);
 }
 
@@ -199,12 +220,7 @@ TEST(ClientSession, ASeatOpenedOnAnotherLinkIsNotTakenBack) {
 
 TEST(ClientSession, ARequestLostBeforeItsAnswerIsAskedAgainByANewPlayer) {
     Harness h;
-    h.session.request({RoomRequest::Kind::Quick, "", proto::RuleSet::Icf, std::nullopt});
-    h.session.start(0.0);
-    h.wire().state = LinkState::Open;
-    h.session.update(0.1);
-    h.wire().inbox.push_back(proto::Welcome{1, 7, kToken, 1000});
-    h.session.update(0.2);
+    h.into_quick_match_queue();
     ASSERT_TRUE(has_sent<proto::QuickMatch>(h.wire()));
     h.wire().state = LinkState::Closed; // still in the queue: no seat to resume
     h.session.update(20.0);
@@ -268,7 +284,7 @@ TEST(ClientSession, JitterDrawsEachDelayInItsUpperHalfAndReportsTheTries) {
     SessionConfig config;
     config.jitter_seed = 5;
     ClientSession session(
-        [&wires] {
+        [&wires](const std::string&) {
             wires.push_back(std::make_unique<FakeWire>());
             return std::make_unique<FakeLink>(*wires.back());
         },
@@ -353,6 +369,58 @@ TEST(ClientSession, VersionMismatchFails) {
     h.wire().inbox.push_back(proto::Error{"version_mismatch", "Protocol 2 required."});
     h.session.update(0.2);
     EXPECT_EQ(h.session.phase(), SessionPhase::Failed);
+}
+
+TEST(ClientSession, EveryHelloFollowsRedirects) {
+    Harness h;
+    h.into_room();
+    EXPECT_EQ(h.wire().url, kAddress);
+    EXPECT_TRUE(sent<proto::Hello>(h.wire()).follows_redirects);
+    h.wire().state = LinkState::Closed;
+    h.session.update(1.0);
+    h.session.update(1.5);
+    h.wire().state = LinkState::Open;
+    h.session.update(1.6);
+    EXPECT_EQ(sent<proto::Hello>(h.wire()).resume_token, kToken);
+    EXPECT_TRUE(sent<proto::Hello>(h.wire()).follows_redirects);
+}
+
+TEST(ClientSession, ARedirectConnectsThereAndJoinsTheNamedRoom) {
+    Harness h;
+    h.into_quick_match_queue();
+    ASSERT_TRUE(has_sent<proto::QuickMatch>(h.wire()));
+    h.wire().inbox.push_back(
+        proto::Redirect{"ws://127.0.0.1:7801/i/b/", "quick_match", "K7M2QX", proto::Role::Player});
+    h.wire().inbox.push_back(proto::Pong{1, 1}); // the old link's: not read
+    EXPECT_TRUE(h.session.update(3.0).empty());
+    ASSERT_EQ(h.wires.size(), 2u);
+    EXPECT_EQ(h.wire().url, "ws://127.0.0.1:7801/i/b/");
+    h.wire().state = LinkState::Open;
+    h.session.update(3.1);
+    EXPECT_FALSE(sent<proto::Hello>(h.wire()).resume_token.has_value());
+    EXPECT_TRUE(sent<proto::Hello>(h.wire()).follows_redirects);
+    h.wire().inbox.push_back(proto::Welcome{1, 8, kToken, 1000});
+    h.session.update(3.2);
+    EXPECT_EQ(sent<proto::JoinRoom>(h.wire()), (proto::JoinRoom{"K7M2QX", proto::Role::Player}));
+    EXPECT_FALSE(has_sent<proto::QuickMatch>(h.wire()));
+    h.wire().inbox.push_back(proto::RoomState{});
+    h.session.update(3.3);
+    EXPECT_EQ(h.session.phase(), SessionPhase::InRoom);
+    EXPECT_EQ(h.wires.size(), 2u);
+}
+
+TEST(ClientSession, ARedirectToAnotherHostIsRefusedAndNeverConnected) {
+    Harness h;
+    h.into_room();
+    h.wire().inbox.push_back(
+        proto::Redirect{"ws://127.0.0.2:7777/", "moved", "K7M2QX", proto::Role::Player});
+    h.session.update(1.0);
+    EXPECT_EQ(h.wires.size(), 1u);
+    EXPECT_EQ(h.session.phase(), SessionPhase::Failed);
+    EXPECT_EQ(h.session.status_text(), "redirect refused: ws://127.0.0.2:7777/ is not an address "
+                                       "of this cluster (ws://127.0.0.1:7777).");
+    h.session.update(10.0);
+    EXPECT_EQ(h.wires.size(), 1u);
 }
 
 TEST(ClientSession, PingsMeasureTheRoundTrip) {

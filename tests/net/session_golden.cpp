@@ -1,5 +1,7 @@
 #include "session_golden.hpp"
 
+#include "carrom/proto/types.hpp"
+
 #include <array>
 #include <stdexcept>
 
@@ -8,8 +10,12 @@ namespace {
 
 using nlohmann::json;
 
-json action_json(const SessionAction& action) {
+json action_json(const SessionCore& core, const SessionAction& action) {
     json out{{"kind", std::string(session_action_name(action.kind))}};
+    if (action.kind == SessionActionKind::SendJoin) {
+        out["code"] = core.join_code();
+        out["as"] = std::string(proto::to_string(core.join_as()));
+    }
     if (action.kind == SessionActionKind::Wait) {
         out["wait_s"] = action.wait_s;
     }
@@ -49,6 +55,16 @@ SessionActions feed(SessionCore& core, const json& step) {
     if (event == "error") {
         return core.error(step.at("code").get<std::string>());
     }
+    if (event == "redirect") {
+        proto::Redirect redirect;
+        redirect.url = step.at("url");
+        redirect.reason = step.at("reason");
+        redirect.code = step.value("code", std::string());
+        redirect.as = step.value("as", std::string("player")) == "spectator"
+                          ? proto::Role::Spectator
+                          : proto::Role::Player;
+        return core.redirect(redirect);
+    }
     throw std::invalid_argument("unknown event " + event);
 }
 
@@ -72,20 +88,23 @@ std::string policy_name(ReconnectPolicy policy) {
 SessionCore core_for(const json& golden_case) {
     const json& b = golden_case.at("backoff");
     return SessionCore(BackoffSettings{b.at("first_s"), b.at("cap_s"), b.at("give_up_after_s")},
-                       policy_from_name(golden_case.at("policy")));
+                       policy_from_name(golden_case.at("policy")),
+                       golden_case.at("address").get<std::string>());
 }
 
 json play(SessionCore& core, const json& step) {
     json actions = json::array();
     for (const SessionAction& action : feed(core, step)) {
-        actions.push_back(action_json(action));
+        actions.push_back(action_json(core, action));
     }
     const json state{{"phase", std::string(session_phase_name(core.phase()))},
                      {"tries", core.tries()},
                      {"resuming", core.resuming()},
                      {"wants_room", core.wants_room()},
                      {"link_up", core.link_up()},
-                     {"token", core.token()}};
+                     {"token", core.token()},
+                     {"url", core.url()},
+                     {"redirects", core.redirects()}};
     return json{{"actions", std::move(actions)}, {"state", state}};
 }
 

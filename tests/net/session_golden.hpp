@@ -4,11 +4,12 @@
 // generator (golden/session_golden_main.cpp, carrom-session-golden) and the replay test
 // (session_golden_test.cpp); web/js's port replays the same files (tests/web/session_test.mjs).
 //
-// A case file: {"name", "about", "backoff": {"first_s", "cap_s", "give_up_after_s"},
-// "policy": "always" | "seat_only" | "never", "steps": [step...]}; a step: {"t" (seconds),
-// "event", its arguments ("resume_token", "close_code" and "jitter", "token", "code"),
-// "actions": [{"kind", "wait_s"?, "reason"?}...], "state": {"phase", "tries", "resuming",
-// "wants_room", "link_up", "token"}}.
+// A case file: {"name", "about", "address" (the server address the player gave), "backoff":
+// {"first_s", "cap_s", "give_up_after_s"}, "policy": "always" | "seat_only" | "never", "steps":
+// [step...]}; a step: {"t" (seconds), "event", its arguments ("resume_token", "close_code" and
+// "jitter", "token", "code"; redirect: "url", "reason", "code"?, "as"?), "actions": [{"kind",
+// "wait_s"?, "reason"?, "code"? and "as"? (send_join)}...], "state": {"phase", "tries",
+// "resuming", "wants_room", "link_up", "token", "url", "redirects"}}.
 
 #include "carrom/net/session_core.hpp"
 

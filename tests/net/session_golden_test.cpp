@@ -104,5 +104,30 @@ TEST(SessionCore, RoomMessagesInTheLobbyAreDropped) {
     EXPECT_TRUE(core.drops_room_messages());
 }
 
+TEST(SessionCore, RefusedRedirectsSaySoInOneSentence) {
+    SessionCore core({}, ReconnectPolicy::Always, "ws://127.0.0.1:7777");
+    core.start("");
+    core.link_opened();
+    core.welcome("t");
+    const proto::Redirect away{"ws://10.0.0.9:7777/\x01", "room", "", proto::Role::Player};
+    EXPECT_EQ(core.redirect(away),
+              (SessionActions{{SessionActionKind::GiveUp, 0.0, GiveUpReason::RedirectRefused}}));
+    EXPECT_EQ(core.refused_redirect(), "redirect refused: ws://10.0.0.9:7777/? is not an address "
+                                       "of this cluster (ws://127.0.0.1:7777).");
+    core.start("");
+    const proto::Redirect near{"ws://127.0.0.1:7801/", "room", "K7M2QX", proto::Role::Player};
+    for (int i = 0; i < SessionCore::kMaxRedirects; ++i) {
+        core.link_opened();
+        core.welcome("t");
+        EXPECT_EQ(core.redirect(near), (SessionActions{{SessionActionKind::Connect}}));
+    }
+    core.link_opened();
+    core.welcome("t");
+    EXPECT_EQ(core.redirect(near).front().reason, GiveUpReason::RedirectRefused);
+    EXPECT_EQ(
+        core.refused_redirect(),
+        "redirect refused: more than 3 redirects in a row, the last to ws://127.0.0.1:7801/.");
+}
+
 } // namespace
 } // namespace carrom::net

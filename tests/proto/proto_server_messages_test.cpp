@@ -221,11 +221,14 @@ TEST(ProtoServer, EveryEventKindRoundTrips) {
         PlayerReturnedEvent{1},
         AimEvent{0, 4, 250.75},
         EmoteEvent{1, Emote::WellPlayed},
+        PausedEvent{"store", "The match waits for the database."},
+        ResumedEvent{},
     };
     const char* kinds[] = {"collision",       "cushion",  "pocket",   "foul",
                            "queen",           "due",      "turn",     "turn",
                            "board_end",       "game_end", "game_end", "player_dropped",
-                           "player_returned", "aim",      "emote"};
+                           "player_returned", "aim",      "emote",    "paused",
+                           "resumed"};
     for (std::size_t i = 0; i < std::size(events); ++i) {
         EXPECT_EQ(event_kind(events[i]), kinds[i]);
         EXPECT_EQ(to_json(ServerMessage{events[i]})["kind"], kinds[i]);
@@ -306,6 +309,7 @@ TEST(ProtoServer, ServerTypeNames) {
     EXPECT_EQ(type_name(ServerMessage{ShotResult{}}), "shot_result");
     EXPECT_EQ(type_name(ServerMessage{Error{}}), "error");
     EXPECT_EQ(type_name(ServerMessage{Pong{}}), "pong");
+    EXPECT_EQ(type_name(ServerMessage{Redirect{}}), "redirect");
 }
 
 } // namespace

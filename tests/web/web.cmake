@@ -45,6 +45,7 @@ endif()
 # The page's engine (wasm/CMakeLists.txt): without it the page runs without prediction and
 # replays; CARROM_WEB_ENGINE tells the tests which page they get, and the replay test needs it.
 set(web_tests two_pages_match page_vs_bot touch_phone reload_resume lobby_paths doubles_pages https_page
+              redirect_page
               identity_page first_game_ui texts_pages emotes_pages)
 if(CARROM_WEB_WASM)
     list(APPEND web_tests replay_page aim_assist_page)

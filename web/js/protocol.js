@@ -11,6 +11,7 @@ export const PROTOCOL_VERSION = PROTOCOL.version;
 export const MAX_NAME_BYTES = PROTOCOL.maxNameBytes;
 export const ROOM_CODE_LENGTH = PROTOCOL.roomCodeLength;
 export const ROOM_CODE_ALPHABET = PROTOCOL.roomCodeAlphabet;
+export const MAX_REDIRECT_URL_BYTES = 2000; // proto::kMaxUrlBytes
 export const RULE_SETS = ['icf', 'seed', 'freestyle', 'discpool'];
 export const BOT_LEVELS = ['random', 'easy', 'medium', 'hard'];
 export const SEAT_COUNTS = [2, 4]; // singles, doubles
@@ -64,10 +65,12 @@ export function isResumeToken(token) {
 // ---- client -> server ----
 
 // identity: the player's key (identity.js); absent: a guest.
-export function hello(name, resumeToken, identity) {
+// followsRedirects: the client follows a cluster's `redirect` (sent only when true).
+export function hello(name, resumeToken, identity, followsRedirects = false) {
   const m = { type: 'hello', version: PROTOCOL_VERSION, name };
   if (resumeToken) m.resume_token = resumeToken;
   if (identity) m.identity = identity;
+  if (followsRedirects) m.follows_redirects = true;
   return m;
 }
 
@@ -277,6 +280,19 @@ const SERVER_FIELDS = {
   },
   error: (m) => { str(m, 'code'); str(m, 'message'); },
   pong: (m) => { int(m, 'nonce'); int(m, 'server_time_ms'); },
+  // Another instance of the cluster runs the room or seat (docs/protocol.md, "Redirects").
+  redirect: (m) => {
+    str(m, 'url');
+    need(m.url.length >= 6 && new TextEncoder().encode(m.url).length <= MAX_REDIRECT_URL_BYTES
+      && (m.url.startsWith('ws://') || m.url.startsWith('wss://')), 'url',
+    `a ws:// or wss:// URL of at most ${MAX_REDIRECT_URL_BYTES} bytes`);
+    str(m, 'reason');
+    need(m.reason.length > 0, 'reason', 'a reason');
+    if (m.code === undefined) return;
+    need(isRoomCode(m.code), 'code', 'a room code');
+    m.as ??= 'player';
+    need(m.as === 'player' || m.as === 'spectator', 'as', 'player or spectator');
+  },
 };
 
 // Returns {message} or {error: sentence}. Never throws.

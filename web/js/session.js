@@ -5,7 +5,10 @@
 // port of net::SessionCore, checked against the same golden cases): back-off 0.5 s doubling to
 // 5 s, each delay drawn from [d/2, d], giving up after 130 s (the server's default idle timeout,
 // after which it notices a silent link, plus its grace, plus a margin); close 4001 and 4002 are
-// final. This class carries the decisions out on a Connection, with timers, and words them. A
+// final. Every hello says follows_redirects: a cluster's `redirect` is followed as SessionCore
+// decides (to the host of the page's own address only; docs/protocol.md, "Redirects"), and a
+// refused one ends the session with its sentence. This class carries the decisions out on a
+// Connection, with timers, and words them. A
 // link on which nothing (not even a pong to the pings every 2 s) arrived for 10 s is taken for
 // lost: a browser's WebSocket may wait minutes before it notices a dead path by itself. The
 // token and whether we hold a seat are kept in sessionStorage, so a reload of the page resumes
@@ -35,7 +38,7 @@ function seconds(s) {
 }
 
 export class Session {
-  // url: the WebSocket URL. storage: a Storage (sessionStorage) or null. hooks:
+  // url: the WebSocket URL (the address the player gave: the page's own). storage: a Storage (sessionStorage) or null. hooks:
   // onMessage(message, localS) for every message of the match, onChange() when phase or status
   // change, onRefused(error, request) when a room request was refused.
   constructor(url, storage, hooks, config = SESSION_DEFAULTS, ConnectionClass) {
@@ -44,7 +47,8 @@ export class Session {
     this.hooks = hooks;
     this.config = config;
     this.ConnectionClass = ConnectionClass;
-    this.core = new SessionCore({ firstS: config.firstRetry, capS: config.maxRetry, giveUpAfterS: config.giveUpAfter });
+    this.core = new SessionCore({ firstS: config.firstRetry, capS: config.maxRetry, giveUpAfterS: config.giveUpAfter },
+      'always', url);
     this.core.token = storage?.getItem('carrom.token') ?? '';
     this.started = false;
     this.status = '';
@@ -111,13 +115,17 @@ export class Session {
         case 'send_hello':
         case 'send_resume':
           this.link.send(proto.hello(this.name, a.kind === 'send_resume' ? this.core.token : undefined,
-            this.identity ?? undefined));
+            this.identity ?? undefined, true));
           this.setStatus('Saying hello...');
           clearInterval(this.pingTimer);
           this.pingTimer = setInterval(() => this.ping(), this.config.pingInterval * 1000);
           break;
         case 'send_room_request':
           this.sendRequest();
+          break;
+        case 'send_join':
+          this.link.send(proto.joinRoom(this.core.joinCode, this.core.joinAs === 'spectator'));
+          this.setStatus('Joining...');
           break;
         case 'send_leave':
           this.link?.send(proto.leave());
@@ -140,7 +148,10 @@ export class Session {
           break;
         case 'give_up':
           this.stopLink();
-          if (a.reason === 'time_up') {
+          if (a.reason === 'redirect_refused') {
+            this.lostReason = this.core.refusedRedirect;
+            this.setStatus(this.core.refusedRedirect);
+          } else if (a.reason === 'time_up') {
             this.setStatus(`${this.lostReason} Gave up after ${seconds(now() - this.core.lostSinceS)}.`);
           } else if (error?.code === 'version_mismatch') {
             this.setStatus('The server speaks another protocol version');
@@ -159,13 +170,16 @@ export class Session {
   openLink() {
     clearTimeout(this.retryTimer);
     this.retryTimer = null;
-    const link = new this.ConnectionClass(this.url, {
+    this.link?.close(); // a redirect's: the server closes it (4005) once we go; its end is not ours
+    const link = new this.ConnectionClass(this.core.url, {
       onOpen: () => this.onOpen(link),
       onMessage: (m, localS) => this.onMessage(link, m, localS),
       onClose: (sentence, code) => this.onLinkLost(link, sentence, code),
     });
     this.link = link;
-    if (this.core.phase === 'reconnecting') {
+    if (this.core.redirects > 0 && this.core.tries === 0) {
+      this.setStatus('Moving to another server of the cluster...');
+    } else if (this.core.phase === 'reconnecting') {
       this.setStatus(`Reconnecting (attempt ${this.core.tries})...`);
     } else {
       this.setStatus('Connecting...');
@@ -282,6 +296,9 @@ export class Session {
       case 'error':
         this.apply(this.core.error(m.code), m);
         break;
+      case 'redirect':
+        this.apply(this.core.redirect(m));
+        return; // the session's business
       default:
         break;
     }

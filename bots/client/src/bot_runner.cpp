@@ -33,7 +33,8 @@ std::string said(const proto::Error& error) {
 BotRunner::BotRunner(BotConfig config, Strategy& strategy)
     : config_(std::move(config)), strategy_(strategy),
       core_(config_.reconnect,
-            config_.auto_resume ? net::ReconnectPolicy::SeatOnly : net::ReconnectPolicy::Never) {}
+            config_.auto_resume ? net::ReconnectPolicy::SeatOnly : net::ReconnectPolicy::Never,
+            config_.url) {}
 
 BotRunner::~BotRunner() = default;
 
@@ -47,8 +48,12 @@ void BotRunner::start() {
 }
 
 void BotRunner::open_connection() {
-    connection_ =
-        connect ? connect(config_) : net::Connection::open(config_.url, config_.connection);
+    if (connection_) { // a redirect's: the server closes it (4005) once we go
+        connection_->close();
+    }
+    BotConfig target = config_;
+    target.url = core_.url(); // the given address, or where a redirect sends the bot
+    connection_ = connect ? connect(target) : net::Connection::open(target.url, config_.connection);
     // The connection queues what is sent before it opens: hello goes out at once.
     apply(core_.link_opened());
 }
@@ -61,12 +66,14 @@ void BotRunner::apply(const net::SessionActions& actions, const proto::Error* er
             open_connection();
             break;
         case Kind::SendHello:
-            connection_->send(proto::Hello{proto::kProtocolVersion, config_.name, std::nullopt,
-                                           config_.identity});
-            break;
         case Kind::SendResume:
-            connection_->send(proto::Hello{proto::kProtocolVersion, config_.name, core_.token(),
-                                           config_.identity});
+            connection_->send(proto::Hello{
+                proto::kProtocolVersion, config_.name,
+                action.kind == Kind::SendResume ? std::optional(core_.token()) : std::nullopt,
+                config_.identity, true});
+            break;
+        case Kind::SendJoin:
+            connection_->send(proto::JoinRoom{core_.join_code(), core_.join_as()});
             break;
         case Kind::SendRoomRequest:
             send_room_request();
@@ -93,7 +100,9 @@ void BotRunner::apply(const net::SessionActions& actions, const proto::Error* er
             fail(error ? said(*error) : lost_reason_);
             break;
         case Kind::GiveUp:
-            if (action.reason == net::GiveUpReason::TimeUp) {
+            if (action.reason == net::GiveUpReason::RedirectRefused) {
+                fail(core_.refused_redirect());
+            } else if (action.reason == net::GiveUpReason::TimeUp) {
                 fail("Gave up resuming " + seat_words() + " after " +
                      seconds_text(now_s() - core_.lost_since_s()) + " and " +
                      std::to_string(core_.tries()) + " tries; the last: " + lost_reason_);
@@ -120,12 +129,13 @@ bool BotRunner::step(std::chrono::milliseconds wait) {
         return done();
     }
     connection_->wait(wait);
+    const net::Connection* polled = connection_.get();
     for (const auto& message : connection_->poll()) {
         if (on_message) {
             on_message(message);
         }
         handle(message);
-        if (done()) {
+        if (done() || connection_.get() != polled) { // a redirect: the rest is the old link's
             break;
         }
     }
@@ -197,8 +207,9 @@ void BotRunner::handle(const proto::ServerMessage& message) {
                    [&](const proto::Snapshot& m) { on_snapshot(m); },
                    [&](const proto::Event& m) { on_event(m); },
                    [&](const proto::ShotResult& m) { on_shot_result(m); },
-                   [&](const proto::Error& m) { on_error(m); }, [&](const proto::Pong&) {},
-                   [&](const proto::Redirect&) {}, // the session follows it
+                   [&](const proto::Error& m) { on_error(m); },
+                   [&](const proto::Pong&) {},
+                   [&](const proto::Redirect& m) { on_redirect(m); },
                },
                message);
 }
@@ -206,6 +217,15 @@ void BotRunner::handle(const proto::ServerMessage& message) {
 void BotRunner::on_welcome(const proto::Welcome& welcome) {
     // Resuming: the seat comes back with the room's state, or is gone with a bad_token error.
     apply(core_.welcome(welcome.resume_token));
+}
+
+void BotRunner::on_redirect(const proto::Redirect& redirect) {
+    const net::SessionActions actions = core_.redirect(redirect);
+    if (!actions.empty() && actions.front().kind == net::SessionActionKind::Connect) {
+        ++summary_.redirects;
+        notice("Redirected (" + redirect.reason + ") to " + redirect.url + ".");
+    }
+    apply(actions);
 }
 
 void BotRunner::send_room_request() {

@@ -2,10 +2,12 @@
 
 #include "carrom/enum_names.hpp"
 
+#include "carrom/net/redirect_rule.hpp"
 #include "carrom/proto/error.hpp"
 
 #include <algorithm>
 #include <array>
+#include <utility>
 
 namespace carrom::net {
 namespace {
@@ -17,14 +19,23 @@ bool refuses_request(std::string_view code) {
            code == c::kTooManyRooms || code == c::kBadField || code == c::kAlreadyInRoom;
 }
 
+// A URL from the network in a sentence: at most 80 bytes, control characters as '?'.
+std::string shown_url(std::string_view url) {
+    std::string out(url.substr(0, 80));
+    std::replace_if(
+        out.begin(), out.end(),
+        [](char c) { return static_cast<unsigned char>(c) < 0x20 || c == 0x7f; }, '?');
+    return out + (url.size() > 80 ? "..." : "");
+}
+
 SessionAction act(SessionActionKind kind) {
     return SessionAction{kind, 0.0, GiveUpReason::NoRetry};
 }
 
 } // namespace
 
-SessionCore::SessionCore(BackoffSettings backoff, ReconnectPolicy policy)
-    : backoff_(backoff), policy_(policy) {}
+SessionCore::SessionCore(BackoffSettings backoff, ReconnectPolicy policy, std::string address)
+    : backoff_(backoff), policy_(policy), address_(std::move(address)), url_(address_) {}
 
 SessionActions SessionCore::start(const std::string& resume_token) {
     if (!resume_token.empty()) {
@@ -34,6 +45,10 @@ SessionActions SessionCore::start(const std::string& resume_token) {
     ever_welcomed_ = false;
     waiting_ = false;
     end_loss();
+    back_in_room_or_lobby();
+    url_ = address_;
+    redirect_close_due_ = false;
+    retry_next_loss_ = false;
     phase_ = SessionPhase::Connecting;
     link_up_ = true;
     return {act(SessionActionKind::Connect)};
@@ -50,6 +65,7 @@ SessionActions SessionCore::request() {
 
 SessionActions SessionCore::leave() {
     wants_room_ = false;
+    back_in_room_or_lobby();
     resuming_ = false; // a reconnect says hello as a new player, without the old seat
     if (phase_ != SessionPhase::InRoom && phase_ != SessionPhase::Joining) {
         return {};
@@ -70,7 +86,15 @@ SessionActions SessionCore::link_closed(double now_s, int close_code, double jit
     if (!link_up_ || phase_ == SessionPhase::Failed) {
         return {};
     }
+    if (close_code == proto::kCloseRedirected && redirect_close_due_) {
+        redirect_close_due_ = false; // the link the redirect left; the new one is up
+        return {};
+    }
     link_up_ = false;
+    redirect_close_due_ = false;
+    url_ = address_;
+    redirects_ = 0;
+    const bool retry_anyway = std::exchange(retry_next_loss_, false);
     if (close_code == proto::kCloseVersionMismatch) {
         return give_up(GiveUpReason::VersionMismatch);
     }
@@ -79,7 +103,7 @@ SessionActions SessionCore::link_closed(double now_s, int close_code, double jit
     }
     const bool holds_seat = phase_ == SessionPhase::InRoom || resuming_;
     if (policy_ == ReconnectPolicy::Never ||
-        (policy_ == ReconnectPolicy::SeatOnly && !holds_seat)) {
+        (policy_ == ReconnectPolicy::SeatOnly && !holds_seat && !retry_anyway)) {
         return give_up(GiveUpReason::NoRetry);
     }
     if (tries_ == 0) {
@@ -117,9 +141,15 @@ SessionActions SessionCore::welcome(const std::string& token) {
         return {};
     }
     ever_welcomed_ = true;
+    redirect_close_due_ = false;
     if (resuming_) {
         if (token != token_) { // a new player: the seat is not ours any more
             token_ = token;
+            if (!join_code_.empty()) { // a redirect named the room: join it instead
+                resuming_ = false;
+                phase_ = SessionPhase::Joining;
+                return {act(SessionActionKind::SendJoin)};
+            }
             return give_up_seat();
         }
         phase_ = SessionPhase::Joining; // the server sends the room back
@@ -129,10 +159,12 @@ SessionActions SessionCore::welcome(const std::string& token) {
     end_loss();
     phase_ = SessionPhase::Lobby;
     if (!wants_room_) {
+        back_in_room_or_lobby();
         return {};
     }
     phase_ = SessionPhase::Joining;
-    return {act(SessionActionKind::SendRoomRequest)};
+    return {
+        act(join_code_.empty() ? SessionActionKind::SendRoomRequest : SessionActionKind::SendJoin)};
 }
 
 SessionActions SessionCore::room_state() {
@@ -142,6 +174,7 @@ SessionActions SessionCore::room_state() {
     phase_ = SessionPhase::InRoom;
     wants_room_ = false;
     end_loss();
+    back_in_room_or_lobby();
     if (!resuming_) {
         return {};
     }
@@ -161,19 +194,58 @@ SessionActions SessionCore::error(std::string_view code) {
     }
     if (code == proto::code::kBadToken && resuming_) {
         token_.clear();
+        if (!join_code_.empty()) { // a redirect named the room: the welcome that follows joins it
+            resuming_ = false;
+            return {};
+        }
         return give_up_seat();
+    }
+    if (code == proto::code::kMatchMoving) {
+        retry_next_loss_ = true; // the close 1013 that follows is tried again
+        return {};
     }
     if (phase_ == SessionPhase::Joining && !resuming_ && refuses_request(code)) {
         wants_room_ = false;
+        back_in_room_or_lobby();
         phase_ = SessionPhase::Lobby;
         return {act(SessionActionKind::Refused)};
     }
     return {};
 }
 
+SessionActions SessionCore::redirect(const proto::Redirect& message) {
+    const bool greeted = phase_ == SessionPhase::Greeting || phase_ == SessionPhase::Lobby ||
+                         phase_ == SessionPhase::Joining || phase_ == SessionPhase::InRoom;
+    if (!link_up_ || !greeted) {
+        return {};
+    }
+    if (!redirect_allowed(url_, address_, message.url)) {
+        refused_redirect_ = "redirect refused: " + shown_url(message.url) +
+                            " is not an address of this cluster (" + shown_url(address_) + ").";
+        return give_up(GiveUpReason::RedirectRefused);
+    }
+    if (redirects_ >= kMaxRedirects) {
+        refused_redirect_ = "redirect refused: more than " + std::to_string(kMaxRedirects) +
+                            " redirects in a row, the last to " + shown_url(message.url) + ".";
+        return give_up(GiveUpReason::RedirectRefused);
+    }
+    ++redirects_;
+    resuming_ = (phase_ == SessionPhase::InRoom || resuming_) && !token_.empty();
+    if (!message.code.empty()) {
+        join_code_ = message.code;
+        join_as_ = message.as;
+        wants_room_ = true;
+    }
+    url_ = message.url;
+    redirect_close_due_ = true;
+    phase_ = ever_welcomed_ ? SessionPhase::Reconnecting : SessionPhase::Connecting;
+    return {act(SessionActionKind::Connect)};
+}
+
 SessionActions SessionCore::give_up_seat() {
     resuming_ = false;
     wants_room_ = false;
+    back_in_room_or_lobby();
     end_loss();
     phase_ = SessionPhase::Lobby;
     return {act(SessionActionKind::SeatLost)};
@@ -191,6 +263,12 @@ void SessionCore::end_loss() {
     tries_ = 0;
 }
 
+void SessionCore::back_in_room_or_lobby() {
+    redirects_ = 0;
+    join_code_.clear();
+    join_as_ = proto::Role::Player;
+}
+
 namespace {
 constexpr enum_names::Table<SessionPhase, 7> kSessionPhaseNames{{
     {SessionPhase::Connecting, "connecting"},
@@ -202,11 +280,12 @@ constexpr enum_names::Table<SessionPhase, 7> kSessionPhaseNames{{
     {SessionPhase::Failed, "failed"},
 }};
 
-constexpr enum_names::Table<SessionActionKind, 10> kSessionActionNames{{
+constexpr enum_names::Table<SessionActionKind, 11> kSessionActionNames{{
     {SessionActionKind::Connect, "connect"},
     {SessionActionKind::SendHello, "send_hello"},
     {SessionActionKind::SendResume, "send_resume"},
     {SessionActionKind::SendRoomRequest, "send_room_request"},
+    {SessionActionKind::SendJoin, "send_join"},
     {SessionActionKind::SendLeave, "send_leave"},
     {SessionActionKind::Wait, "wait"},
     {SessionActionKind::Resumed, "resumed"},
@@ -215,11 +294,12 @@ constexpr enum_names::Table<SessionActionKind, 10> kSessionActionNames{{
     {SessionActionKind::GiveUp, "give_up"},
 }};
 
-constexpr enum_names::Table<GiveUpReason, 4> kGiveUpReasonNames{{
+constexpr enum_names::Table<GiveUpReason, 5> kGiveUpReasonNames{{
     {GiveUpReason::NoRetry, "no_retry"},
     {GiveUpReason::TimeUp, "time_up"},
     {GiveUpReason::VersionMismatch, "version_mismatch"},
     {GiveUpReason::Replaced, "replaced"},
+    {GiveUpReason::RedirectRefused, "redirect_refused"},
 }};
 } // namespace
 

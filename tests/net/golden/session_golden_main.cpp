@@ -3,7 +3,7 @@
 // tests/net/session_golden_test.cpp and tests/web/session_test.mjs replay them against the C++
 // core and the web client's port. Regenerate after a deliberate change of the rules
 // (tests/golden/README.md); the web port must then follow.
-#include "session_golden.hpp"
+#include "session_cases.hpp"
 
 #include <algorithm>
 #include <fstream>
@@ -13,63 +13,9 @@
 
 namespace {
 
+using namespace carrom::net::golden;
 using carrom::net::BackoffSettings;
 using carrom::net::ReconnectPolicy;
-using nlohmann::json;
-
-json at(double t, const std::string& event, json args = json::object()) {
-    args["t"] = t;
-    args["event"] = event;
-    return args;
-}
-
-json closed(double t, int code = 1006, double jitter = 1.0) {
-    return at(t, "link_closed", {{"close_code", code}, {"jitter", jitter}});
-}
-
-json welcome(double t, const std::string& token) {
-    return at(t, "welcome", {{"token", token}});
-}
-
-json error(double t, const std::string& code) {
-    return at(t, "error", {{"code", code}});
-}
-
-const std::string kToken = "5f0c1e0e8a7b4c2d9e3f1a2b3c4d5e6f";
-const std::string kOther = "0123456789abcdef0123456789abcdef";
-
-// Asks for a room, connects, is welcomed with kToken and gets the room's state by t + 0.4.
-std::vector<json> into_room(double t) {
-    return {at(t, "request"), at(t, "start"), at(t + 0.1, "link_opened"), welcome(t + 0.2, kToken),
-            at(t + 0.3, "room_state")};
-}
-
-// The next try, due at `t`: the link opens and says hello.
-std::vector<json> retry(double t) {
-    return {at(t, "tick"), at(t, "link_opened")};
-}
-
-// In a room by 0.4 s, the link lost at 1 s and tried again at 1.5 s (the first wait, 0.5 s).
-std::vector<json> in_room_lost_and_retried() {
-    std::vector<json> out = into_room(0.0);
-    out.push_back(closed(1.0));
-    for (json& step : retry(1.5)) {
-        out.push_back(std::move(step));
-    }
-    return out;
-}
-
-struct Case {
-    std::string name;
-    std::string about;
-    std::vector<json> events;
-    ReconnectPolicy policy = ReconnectPolicy::Always;
-    BackoffSettings backoff{};
-};
-
-void add(std::vector<json>& to, const std::vector<json>& events) {
-    to.insert(to.end(), events.begin(), events.end());
-}
 
 std::vector<Case> cases() {
     std::vector<Case> out;
@@ -271,6 +217,9 @@ std::vector<Case> cases() {
                        at(21.0, "start"), at(21.1, "link_opened")});
         out.push_back(c);
     }
+    for (Case& c : redirect_cases()) {
+        out.push_back(std::move(c));
+    }
     return out;
 }
 
@@ -294,12 +243,12 @@ std::string case_text(const Case& c) {
                        {"cap_s", c.backoff.cap_s},
                        {"give_up_after_s", c.backoff.give_up_after_s}};
     const std::string policy = carrom::net::golden::policy_name(c.policy);
-    json head{{"backoff", backoff}, {"policy", policy}};
+    json head{{"address", c.address}, {"backoff", backoff}, {"policy", policy}};
     carrom::net::SessionCore core = carrom::net::golden::core_for(head);
-    std::string text = "{\n \"name\": " + json(c.name).dump() +
-                       ",\n \"about\": " + json(c.about).dump() +
-                       ",\n \"policy\": " + json(policy).dump() +
-                       ",\n \"backoff\": " + backoff.dump() + ",\n \"steps\": [\n";
+    std::string text =
+        "{\n \"name\": " + json(c.name).dump() + ",\n \"about\": " + json(c.about).dump() +
+        ",\n \"address\": " + json(c.address).dump() + ",\n \"policy\": " + json(policy).dump() +
+        ",\n \"backoff\": " + backoff.dump() + ",\n \"steps\": [\n";
     for (std::size_t i = 0; i < c.events.size(); ++i) {
         const json answer = carrom::net::golden::play(core, c.events[i]);
         text += "  " + step_line(c.events[i], answer) + (i + 1 < c.events.size() ? ",\n" : "\n");

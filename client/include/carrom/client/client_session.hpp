@@ -4,7 +4,9 @@
 // new one and resume the seat with the token, backing off between attempts. The decisions (when
 // to connect, hello or resume, request, wait, give up) are net::SessionCore's, with
 // ReconnectPolicy::Always (a person waits at the window); this class carries them out on a
-// MessageLink and words them. Game input goes out only while in a room. Messages for the match
+// MessageLink and words them. Every hello says follows_redirects; a cluster's `redirect` is
+// followed as the core decides (a refused one ends the session with the core's sentence).
+// Game input goes out only while in a room. Messages for the match
 // are handed to the caller from update().
 
 #include "carrom/client/connection.hpp"
@@ -48,6 +50,9 @@ struct SessionConfig {
     std::optional<std::uint64_t> jitter_seed;
     // The player key sent in every hello (docs/ratings.md); none: a guest.
     std::optional<std::string> identity;
+    // The server address the player gave: links go there, or where a cluster's redirect sends
+    // them, only to this host (docs/protocol.md, "Redirects").
+    std::string address;
 };
 
 // While reconnecting: what the window says ("Reconnecting... (attempt N, next try in S s)").

@@ -39,7 +39,8 @@ public:
     virtual void close() = 0;
 };
 
-// Opens a new link to the configured server (called again to reconnect after a drop).
-using LinkFactory = std::function<std::unique_ptr<MessageLink>()>;
+// Opens a new link to `url` (the server address the player gave, or where a redirect sends the
+// session; called again to reconnect after a drop).
+using LinkFactory = std::function<std::unique_ptr<MessageLink>(const std::string& url)>;
 
 } // namespace carrom::client

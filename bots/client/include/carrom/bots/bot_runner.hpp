@@ -10,7 +10,9 @@
 // resumed by itself: it reconnects with back-off and sends hello{resume_token} until the seat is
 // back or config.reconnect.give_up_after_s has passed (then it fails, naming the seat). A
 // bad_token answer ends it at once: the server no longer holds the seat. A connection lost
-// before a room, a refused room request, version_mismatch and replaced end it too.
+// before a room, a refused room request, version_mismatch and replaced end it too. Every hello
+// says follows_redirects: a cluster's `redirect` is followed as the core decides (to the host of
+// config.url only; docs/protocol.md, "Redirects"), and a refused one ends the run.
 //
 // Single-threaded: call step() (or run_until_done()) from one thread; the connection does the
 // I/O on its own thread.
@@ -73,6 +75,7 @@ struct BotSummary {
                              // dropped snapshots for this slow reader)
     int unrepaired_gaps = 0; // shots that ended with no keyframe after a gap (a server bug)
     int resumes = 0;         // seats given back on a new connection (resume() or automatic)
+    int redirects = 0;       // redirects followed to another instance of a cluster
     int decode_errors = 0;
     std::map<std::string, int> errors; // error codes received, with counts
     std::string failure;               // set when the bot stopped before finishing: why
@@ -108,7 +111,8 @@ public:
     std::function<void(const std::string&)> on_notice;
     // Called right after each shoot is handed to the connection (carrom-bot --trace).
     std::function<void(const proto::Shoot&)> on_shoot;
-    // Makes the connection for start() and resume(); default: net::Connection::open(url).
+    // Makes the connection for start(), resume() and redirects (the config's url is where this
+    // connection goes); default: net::Connection::open(url).
     std::function<std::unique_ptr<net::Connection>(const BotConfig&)> connect;
 
     const BotSummary& summary() const { return summary_; }
@@ -124,6 +128,7 @@ private:
     void on_event(const proto::Event& event);
     void on_shot_result(const proto::ShotResult& result);
     void on_error(const proto::Error& error);
+    void on_redirect(const proto::Redirect& redirect);
     void on_game_end(const proto::GameEndEvent& end);
     void send_room_request();
     // Carries out the session core's actions; `error`: the error they answer, if any.

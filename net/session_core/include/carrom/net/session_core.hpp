@@ -7,9 +7,11 @@
 //
 // The caller reports events (with the time, in seconds on any monotonic clock, where it
 // matters: link_closed() and tick()) and carries out the actions each call returns, in order:
-// - Connect: open a new link (the previous one is gone); report link_opened() or link_closed().
+// - Connect: open a new link to url() (the previous one is gone, or the caller closes it and
+//   reports nothing more of it); report link_opened() or link_closed().
 // - SendHello / SendResume: hello without / with token() (the seat is asked back).
 // - SendRoomRequest: the caller's room request (create, join, spectate, quick match).
+// - SendJoin: join_room{join_code(), join_as()}, the room a redirect named.
 // - SendLeave: leave the room (the session is in the lobby).
 // - Wait: the link is gone; tick() returns Connect once wait_s has passed.
 // - Resumed: the seat is back (the room's state after a resume).
@@ -35,7 +37,18 @@
 // - Final: version_mismatch (error, or close 4001) and replaced (error, or close 4002: the seat
 //   was resumed on another link; trying again would take it back and forth). Anything else
 //   (idle_timeout and close 1008, shutting_down and close 1012, close 1006, 1013, 4003, a silent
-//   link) is a loss and is tried again.
+//   link) is a loss and is tried again. match_moving (then close 1013) is tried again under
+//   SeatOnly too: the address is right, the match is between instances.
+// - Redirects (docs/protocol.md, "Redirects"): a `redirect` is followed when redirect_allowed()
+//   (same host as the address the player gave, ws:// or wss://, no downgrade from wss://) and it
+//   is at most the kMaxRedirects-th in a row (since the session was last in a room or the lobby,
+//   or lost a link): Connect to its URL at once, no back-off, hello with the token when the
+//   session holds a seat, then SendJoin when the redirect names a room and no seat came back.
+//   The server's close 4005 that follows is no loss. Otherwise GiveUp (RedirectRefused): the
+//   session never connects there. A loss always tries the address the player gave again, which
+//   sends the client on to wherever the match runs.
+
+#include "carrom/proto/server_messages.hpp"
 
 #include <string>
 #include <string_view>
@@ -73,6 +86,7 @@ enum class SessionActionKind {
     SendHello,
     SendResume,
     SendRoomRequest,
+    SendJoin,
     SendLeave,
     Wait,
     Resumed,
@@ -86,6 +100,7 @@ enum class GiveUpReason {
     TimeUp,          // give_up_after_s passed since the loss
     VersionMismatch, // the server speaks another protocol version
     Replaced,        // the seat was resumed on another link
+    RedirectRefused, // a redirect to an address that is not the cluster's (or one too many)
 };
 
 struct SessionAction {
@@ -99,8 +114,14 @@ using SessionActions = std::vector<SessionAction>;
 
 class SessionCore {
 public:
+    // Redirects in a row a session follows; the next one is refused.
+    static constexpr int kMaxRedirects = 3;
+
+    // address: the server address the player gave (ws://HOST:PORT[/path]); links go there, or
+    // where a redirect sends them (url()).
     explicit SessionCore(BackoffSettings backoff = {},
-                         ReconnectPolicy policy = ReconnectPolicy::Always);
+                         ReconnectPolicy policy = ReconnectPolicy::Always,
+                         std::string address = {});
 
     // Begins (or begins again, after GiveUp or a drop of the caller's own): Connect. With a
     // token, hello asks for that token's seat back (a reload of the web page, BotRunner::resume()).
@@ -120,6 +141,8 @@ public:
     SessionActions welcome(const std::string& token);
     SessionActions room_state();
     SessionActions error(std::string_view code);
+    // A `redirect` on the current link: Connect (to its URL) or GiveUp (RedirectRefused).
+    SessionActions redirect(const proto::Redirect& message);
 
     SessionPhase phase() const { return phase_; }
     // A room's messages in the lobby come from a room we left (or lost): the caller drops them.
@@ -134,14 +157,24 @@ public:
     double retry_at_s() const { return retry_at_s_; }
     double gives_up_at_s() const { return lost_since_s_ + backoff_.give_up_after_s; }
     const BackoffSettings& backoff() const { return backoff_; }
+    const std::string& address() const { return address_; }
+    const std::string& url() const { return url_; }             // where Connect goes
+    int redirects() const { return redirects_; }                // followed in a row
+    const std::string& join_code() const { return join_code_; } // SendJoin's room, or empty
+    proto::Role join_as() const { return join_as_; }
+    // After GiveUp (RedirectRefused): one sentence saying which redirect and why, starting
+    // "redirect refused: ".
+    const std::string& refused_redirect() const { return refused_redirect_; }
 
 private:
     SessionActions give_up(GiveUpReason reason);
     SessionActions give_up_seat();
     void end_loss();
+    void back_in_room_or_lobby(); // the redirects in a row start again
 
     BackoffSettings backoff_;
     ReconnectPolicy policy_;
+    std::string address_;
     SessionPhase phase_ = SessionPhase::Connecting;
     std::string token_;
     bool resuming_ = false;      // hello carries the token; cleared by the room's state
@@ -150,6 +183,13 @@ private:
     bool link_up_ = false;
     bool waiting_ = false; // for retry_at_s_
     int tries_ = 0;
+    std::string url_;                 // the current (or next) link's URL: address_ or a redirect's
+    int redirects_ = 0;               // followed since the session was last in a room or the lobby
+    bool redirect_close_due_ = false; // the redirected link's close (4005) is still to come
+    bool retry_next_loss_ = false;    // match_moving: the next loss is tried again
+    std::string refused_redirect_;
+    std::string join_code_; // a redirect's room, joined when no seat comes back
+    proto::Role join_as_ = proto::Role::Player;
     double lost_since_s_ = 0.0;
     double retry_at_s_ = 0.0;
 };
