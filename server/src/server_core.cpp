@@ -53,9 +53,23 @@ void ServerCore::remove_address(const std::string& address) {
     }
 }
 
+std::optional<proto::Error> ServerCore::store_refusal() const {
+    const bool lease_ok =
+        !store || store->cluster() == nullptr || store->cluster()->status().lease_ok;
+    if (!store || (!store->health().degraded && lease_ok)) {
+        return std::nullopt;
+    }
+    return proto::Error{std::string(proto::code::kStoreUnavailable),
+                        "The server cannot start a match now because its database does not "
+                        "answer; try again in a moment."};
+}
+
 std::variant<std::shared_ptr<RoomActor>, proto::Error>
 ServerCore::create_room(proto::RuleSet rule_set, const proto::RoomOptions& options, int seats,
                         bool server_bots, bool rated) {
+    if (auto refusal = store_refusal()) {
+        return *std::move(refusal);
+    }
     room::RoomConfig config;
     config.rule_set = rule_set;
     // A game against the server's bots gives its players the longer of the two default clocks;

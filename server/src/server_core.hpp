@@ -88,6 +88,10 @@ struct ServerCore {
     create_room(proto::RuleSet rule_set, const proto::RoomOptions& options, int seats = 2,
                 bool server_bots = false, bool rated = false);
     void remove_room(const std::string& code);
+    // store_unavailable while the match store does not answer (its writes failing; cluster
+    // mode: the lease not renewed either): no new room, quick match or rematch then
+    // (docs/cluster.md, "The database down"). None without a store.
+    std::optional<proto::Error> store_refusal() const;
 
     // At start, before the I/O threads run: every unfinished match in the store whose journal
     // replays with this build is restored in a room under its old code (docs/store.md,
