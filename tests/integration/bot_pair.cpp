@@ -103,8 +103,10 @@ void PauseWatch::see(const proto::ServerMessage& m) {
             ++paused;
             reason = p->reason;
             message = p->message;
+            paused_at = std::chrono::steady_clock::now();
         } else if (std::holds_alternative<proto::ResumedEvent>(*event)) {
             ++resumed;
+            resumed_at = std::chrono::steady_clock::now();
         }
     } else if (paused > resumed && (std::holds_alternative<proto::Snapshot>(m) ||
                                     std::holds_alternative<proto::ShotResult>(m))) {

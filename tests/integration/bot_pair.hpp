@@ -55,6 +55,8 @@ struct PauseWatch {
     int streamed_while_paused = 0; // snapshots and shot results between `paused` and `resumed`
     std::string reason;            // of the last `paused`
     std::string message;           // of the last `paused`
+    std::chrono::steady_clock::time_point paused_at;  // of the last `paused`
+    std::chrono::steady_clock::time_point resumed_at; // of the last `resumed`
 };
 
 // A new client's create_room (also against bots) and quick_match: each answered

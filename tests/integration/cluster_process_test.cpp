@@ -261,8 +261,10 @@ TEST_F(ClusterProcess, ADatabaseOutageLongerThanTheLeaseMovesNoMatch) {
     EXPECT_TRUE(
         health.starts_with("degraded: cluster lease not renewed; match store not writing ("))
         << health;
+    std::fprintf(stderr, "/healthz of a during the outage: %s", health.c_str());
     expect_new_matches_refused(a->url());
     ASSERT_TRUE(postgres.start());
+    const auto started_at = Clock::now();
     EXPECT_TRUE(a->wait_log("cluster: lease renewed again", Clock::now() + 10s)) << a->log();
     EXPECT_TRUE(b->wait_log("cluster: lease renewed again", Clock::now() + 10s)) << b->log();
     pair.run([] { return false; }, 30s);
@@ -282,6 +284,9 @@ TEST_F(ClusterProcess, ADatabaseOutageLongerThanTheLeaseMovesNoMatch) {
     EXPECT_EQ(watch.paused, 1);
     EXPECT_EQ(watch.resumed, 1);
     EXPECT_EQ(watch.streamed_while_paused, 0);
+    std::fprintf(stderr, "paused %.2f s; resumed %.2f s after PostgreSQL started\n",
+                 std::chrono::duration<double>(watch.resumed_at - watch.paused_at).count(),
+                 std::chrono::duration<double>(watch.resumed_at - started_at).count());
     EXPECT_GT(expect_finished_journals_clean(*a, 1), 3);
     if (::testing::Test::HasFailure()) {
         std::fprintf(stderr, "a:\n%s\nb:\n%s", a->log().c_str(), b->log().c_str());
