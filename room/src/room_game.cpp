@@ -402,9 +402,7 @@ void Room::check_store_wait(std::int64_t now_ms) {
         return;
     }
     streaming_->paused = true;
-    broadcast(proto::Event{proto::PausedEvent{
-        "store", "The server cannot save the last stroke because its database does not answer; "
-                 "the match goes on when it is back."}});
+    broadcast(store_paused_event());
 }
 
 void Room::tick() {

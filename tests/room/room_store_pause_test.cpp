@@ -94,6 +94,23 @@ TEST_F(RoomStorePauseTest, AWaitPastTheThresholdPausesOnceAndResumesBeforeTheStr
     }
 }
 
+TEST_F(RoomStorePauseTest, AMemberWhoEntersDuringThePauseHearsOfIt) {
+    clock_.advance_ms(kStorePauseAfterMs);
+    paused_room_.tick();
+    auto late = std::make_shared<testing::FakePeer>(4, "Dee");
+    ASSERT_FALSE(paused_room_.join(late, proto::Role::Spectator));
+    ASSERT_EQ(late->events<proto::PausedEvent>().size(), 1U);
+    EXPECT_EQ(late->events<proto::PausedEvent>()[0], b_->events<proto::PausedEvent>()[0]);
+    EXPECT_TRUE(std::holds_alternative<proto::Snapshot>(late->received.at(1))); // the keyframe
+    paused_room_.disconnected(*b_);
+    auto back = std::make_shared<testing::FakePeer>(2, "Bo");
+    ASSERT_FALSE(paused_room_.resume(back));
+    EXPECT_EQ(back->events<proto::PausedEvent>().size(), 1U);
+    sink_.confirm_all(paused_room_);
+    EXPECT_EQ(late->events<proto::ResumedEvent>().size(), 1U);
+    EXPECT_EQ(back->events<proto::ResumedEvent>().size(), 1U);
+}
+
 TEST_F(RoomStorePauseTest, AWriteWithinTheThresholdPausesNothing) {
     clock_.advance_ms(kStorePauseAfterMs - 1);
     paused_room_.tick();

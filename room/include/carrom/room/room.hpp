@@ -166,6 +166,9 @@ private:
     // The turn event for the current turn, to everyone.
     void broadcast_turn();
     void send_to(Peer& peer, const proto::ServerMessage& message);
+    // A member who enters (joins, takes a seat, resumes one): the board now, and `paused` while
+    // the match is paused.
+    void send_keyframe(Peer& peer);
     void send_error(Peer& peer, std::string_view code, std::string message);
     std::vector<Peer*> members();
 
