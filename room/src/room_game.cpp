@@ -233,6 +233,9 @@ bool Room::send_stream_step(double t_s, std::int64_t due_ms) {
 
 void Room::finish_shot() {
     std::unique_ptr<Streaming> done = std::move(streaming_);
+    if (done->paused && done->awaiting_seq) { // a leave ends the stroke: the wait is over too
+        broadcast(proto::Event{proto::ResumedEvent{}});
+    }
     const double end_s = done->stream.end_time_s();
     match_ = std::move(done->result.state);
     ++seq_;

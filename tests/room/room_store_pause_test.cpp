@@ -111,6 +111,17 @@ TEST_F(RoomStorePauseTest, AMemberWhoEntersDuringThePauseHearsOfIt) {
     EXPECT_EQ(back->events<proto::ResumedEvent>().size(), 1U);
 }
 
+TEST_F(RoomStorePauseTest, APlayerWhoLeavesDuringThePauseEndsItAndTheGame) {
+    clock_.advance_ms(kStorePauseAfterMs);
+    paused_room_.tick();
+    paused_room_.leave(*b_);
+    EXPECT_EQ(a_->events<proto::ResumedEvent>().size(), 1U);
+    ASSERT_EQ(a_->events<proto::GameEndEvent>().size(), 1U);
+    EXPECT_EQ(a_->events<proto::GameEndEvent>()[0].reason, "left");
+    sink_.confirm_all(paused_room_); // the late answer changes nothing
+    EXPECT_EQ(a_->events<proto::ResumedEvent>().size(), 1U);
+}
+
 TEST_F(RoomStorePauseTest, AWriteWithinTheThresholdPausesNothing) {
     clock_.advance_ms(kStorePauseAfterMs - 1);
     paused_room_.tick();
