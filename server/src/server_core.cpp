@@ -3,6 +3,7 @@
 #include "bot_seat_name.hpp"
 
 #include "room_actor.hpp"
+#include "store/cluster.hpp"
 
 #include "carrom/proto/journal_replay.hpp"
 
@@ -54,9 +55,11 @@ void ServerCore::remove_address(const std::string& address) {
 }
 
 std::optional<proto::Error> ServerCore::store_refusal() const {
-    const bool lease_ok =
-        !store || store->cluster() == nullptr || store->cluster()->status().lease_ok;
-    if (!store || (!store->health().degraded && lease_ok)) {
+    if (!store) {
+        return std::nullopt;
+    }
+    const store::Cluster* cluster = store->cluster();
+    if (!store->health().degraded && (cluster == nullptr || cluster->status().lease_ok)) {
         return std::nullopt;
     }
     return proto::Error{std::string(proto::code::kStoreUnavailable),
