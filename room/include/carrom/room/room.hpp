@@ -6,8 +6,8 @@
 // broadcasts are encoded once and shared.
 //
 // Time-driven work happens in tick(): snapshots while a shot streams, the shot clock, grace
-// periods. next_wake_ms() says when tick() is next needed (nothing while the board is at rest
-// and no deadline is pending).
+// periods, the pause of a stroke whose journal entry waits. next_wake_ms() says when tick() is
+// next needed (nothing while the board is at rest and no deadline is pending).
 
 #include "carrom/proto/client_messages.hpp"
 #include "carrom/proto/server_messages.hpp"
