@@ -92,7 +92,7 @@ std::optional<proto::Error> Room::join(std::shared_ptr<Peer> peer, proto::Role r
     // flood the players' connections.
     spectators_.push_back(peer);
     send_to(*peer, room_state(-1));
-    send_to(*peer, current_keyframe());
+    send_keyframe(*peer);
     notify(MembershipChange::Joined, -1, peer->name());
     return std::nullopt;
 }
@@ -118,7 +118,7 @@ std::optional<proto::Error> Room::resume(std::shared_ptr<Peer> peer) {
     }
     journal_seat(seat);
     broadcast_room_state(peer.get());
-    send_to(*peer, current_keyframe());
+    send_keyframe(*peer);
     notify(MembershipChange::Returned, seat);
     return std::nullopt;
 }
@@ -162,7 +162,7 @@ std::optional<proto::Error> Room::fill_seat(SeatSlot slot, int seat_index) {
     }
     broadcast_room_state(free->peer.get());
     if (free->peer) {
-        send_to(*free->peer, current_keyframe());
+        send_keyframe(*free->peer);
     }
     if (started_now) {
         broadcast_turn();
@@ -305,6 +305,13 @@ void Room::broadcast_room_state(const Peer* joiner) {
 void Room::broadcast_turn() {
     broadcast(proto::Event{proto::TurnEvent{match_.turn_number, match_.turn_seat,
                                             shot_clock_deadline_ms(), clock_.now_ms()}});
+}
+
+void Room::send_keyframe(Peer& peer) {
+    send_to(peer, current_keyframe());
+    if (streaming_ && streaming_->paused) { // the newcomer hears of the pause too
+        send_to(peer, store_paused_event());
+    }
 }
 
 void Room::send_to(Peer& peer, const proto::ServerMessage& message) {

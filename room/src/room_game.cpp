@@ -135,8 +135,8 @@ std::optional<proto::Error> Room::play(int seat, const Shot& shot) {
                       physics.end_time_s, match_.turn_number);
     physics.trajectory = {};
     physics.events.clear();
-    streaming_ = std::make_unique<Streaming>(
-        Streaming{std::move(stream), std::move(result), match_, now, now, now, 0, std::nullopt});
+    streaming_ = std::make_unique<Streaming>(Streaming{std::move(stream), std::move(result), match_,
+                                                       now, now, now, 0, std::nullopt, false});
     if (seq >= 0) {
         streaming_->awaiting_seq = seq;
     } else {
@@ -150,6 +150,9 @@ void Room::journal_written(const std::string& match_id, std::int64_t seq) {
         return;
     }
     streaming_->awaiting_seq.reset();
+    if (streaming_->paused) {
+        broadcast(proto::Event{proto::ResumedEvent{}});
+    }
     const std::int64_t now = clock_.now_ms();
     streaming_->start_ms = now;
     streaming_->next_ms = now;
@@ -230,6 +233,9 @@ bool Room::send_stream_step(double t_s, std::int64_t due_ms) {
 
 void Room::finish_shot() {
     std::unique_ptr<Streaming> done = std::move(streaming_);
+    if (done->paused && done->awaiting_seq) { // a leave ends the stroke: the wait is over too
+        broadcast(proto::Event{proto::ResumedEvent{}});
+    }
     const double end_s = done->stream.end_time_s();
     match_ = std::move(done->result.state);
     ++seq_;
@@ -393,8 +399,18 @@ void Room::check_shot_clock(std::int64_t now_ms) {
     }
 }
 
+void Room::check_store_wait(std::int64_t now_ms) {
+    if (!streaming_ || !streaming_->awaiting_seq || streaming_->paused ||
+        now_ms < streaming_->start_ms + config_.store_pause_after_ms) {
+        return;
+    }
+    streaming_->paused = true;
+    broadcast(store_paused_event());
+}
+
 void Room::tick() {
     const std::int64_t now = clock_.now_ms();
+    check_store_wait(now);
     stream_tick(now);
     if (streaming_) {
         return;
@@ -405,8 +421,10 @@ void Room::tick() {
 
 std::optional<std::int64_t> Room::next_wake_ms() const {
     if (streaming_) {
-        if (streaming_->awaiting_seq) {
-            return std::nullopt; // journal_written wakes the room
+        if (streaming_->awaiting_seq) { // journal_written wakes the room; `paused` is due first
+            return streaming_->paused
+                       ? std::nullopt
+                       : std::optional(streaming_->start_ms + config_.store_pause_after_ms);
         }
         return streaming_->next_ms;
     }

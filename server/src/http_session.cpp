@@ -118,10 +118,11 @@ void HttpSession::respond(const Request& request) {
             answer_api(request.version(), target_view);
             return;
         } else if (target == "/healthz") {
-            // 200 "ok", 200 "degraded: ..." while match store writes fail (matches go on in
-            // memory), 200 "degraded: cluster lease not renewed" (cluster mode, the last lease
-            // round failed), 503 "stopping" during shutdown; in cluster mode a line "cluster:
-            // {...}"; with TLS, a line "tls: {...}".
+            // 200 "ok"; 200 "degraded: " and why, "; " between reasons: "cluster lease not
+            // renewed" (cluster mode, the last lease round failed), "match store not writing (N
+            // waiting): LAST ERROR" (its writes fail: strokes wait, new matches are refused);
+            // 503 "stopping" during shutdown; in cluster mode a line "cluster: {...}"; with TLS,
+            // a line "tls: {...}".
             std::optional<store::StoreHealth> health;
             if (core_.store) {
                 health = core_.store->health();
@@ -133,11 +134,15 @@ void HttpSession::respond(const Request& request) {
             response->result(core_.stopping ? http::status::service_unavailable : http::status::ok);
             if (core_.stopping) {
                 response->body() = "stopping\n";
-            } else if (health && health->degraded) {
-                response->body() = "degraded: match store writes failing (" +
-                                   std::to_string(health->pending) + " items waiting)\n";
-            } else if (cluster && !cluster->lease_ok) {
-                response->body() = "degraded: cluster lease not renewed\n";
+            } else if ((health && health->degraded) || (cluster && !cluster->lease_ok)) {
+                std::string reasons =
+                    cluster && !cluster->lease_ok ? "cluster lease not renewed" : "";
+                if (health && health->degraded) {
+                    reasons += (reasons.empty() ? "" : "; ") +
+                               std::string("match store not writing (") +
+                               std::to_string(health->pending) + " waiting): " + health->last_error;
+                }
+                response->body() = "degraded: " + reasons + "\n";
             } else {
                 response->body() = "ok\n";
             }

@@ -5,6 +5,8 @@
 #include "room_actor.hpp"
 #include "ws_session.hpp"
 
+#include "store/cluster.hpp"
+
 #include "carrom/proto/journal_replay.hpp"
 
 #include <spdlog/spdlog.h>
@@ -54,15 +56,33 @@ void ServerCore::remove_address(const std::string& address) {
     }
 }
 
+proto::Error ServerCore::store_unavailable() {
+    return proto::Error{std::string(proto::code::kStoreUnavailable),
+                        "The server cannot start a match now because its database does not "
+                        "answer; try again in a moment."};
+}
+
+std::optional<proto::Error> ServerCore::store_refusal() const {
+    if (!store) {
+        return std::nullopt;
+    }
+    const store::Cluster* in_cluster = cluster();
+    if (!store->health().degraded && (in_cluster == nullptr || in_cluster->status().lease_ok)) {
+        return std::nullopt;
+    }
+    return store_unavailable();
+}
+
 std::variant<std::shared_ptr<RoomActor>, proto::Error>
 ServerCore::create_room(proto::RuleSet rule_set, const proto::RoomOptions& options, int seats,
                         bool server_bots, bool rated, std::string code) {
+    if (auto refusal = store_refusal()) {
+        return *std::move(refusal);
+    }
     if (store::Cluster* in_cluster = cluster(); in_cluster != nullptr && code.empty()) {
         auto reserved = in_cluster->take_room_code();
-        if (!reserved) {
-            return proto::Error{std::string(proto::code::kStoreUnavailable),
-                                "No new room now: the server's database does not answer. Try "
-                                "again in a moment."};
+        if (!reserved) { // none reserved: the database has not answered for a while
+            return store_unavailable();
         }
         code = std::move(*reserved);
     }

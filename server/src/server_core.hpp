@@ -91,6 +91,12 @@ struct ServerCore {
     create_room(proto::RuleSet rule_set, const proto::RoomOptions& options, int seats = 2,
                 bool server_bots = false, bool rated = false, std::string code = {});
     void remove_room(const std::string& code);
+    // store_unavailable while the match store does not answer (its writes failing; cluster
+    // mode: the lease not renewed either): no new room, quick match or rematch then
+    // (docs/cluster.md, "The database down"). None without a store.
+    std::optional<proto::Error> store_refusal() const;
+    // The store_unavailable error of store_refusal (also: no room code reserved in cluster mode).
+    static proto::Error store_unavailable();
 
     // Cluster mode (docs/cluster.md): the store's cluster, or null.
     store::Cluster* cluster() const { return store ? store->cluster() : nullptr; }

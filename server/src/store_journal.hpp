@@ -19,7 +19,7 @@ namespace carrom::server {
 
 class StoreJournal final : public room::JournalSink {
 public:
-    // Called on the store's thread when a confirmed entry is written or its write failed.
+    // Called on the store's thread when a confirmed entry is written or dropped.
     using Written = std::function<void(const std::string& match_id, std::int64_t seq)>;
 
     // stopping: while true (the server shuts down), an abandoned match is left unfinished, so

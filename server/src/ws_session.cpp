@@ -206,7 +206,11 @@ void WsSession::handle(const proto::ClientMessage& message) {
         room_->post(
             [self = shared_from_this(), s = *shoot](room::Room& room) { room.shoot(*self, s); });
     } else if (std::holds_alternative<proto::Rematch>(message)) {
-        room_->post([self = shared_from_this()](room::Room& room) { room.rematch(*self); });
+        if (const auto refusal = core_.store_refusal()) { // a rematch would start a match
+            send_error(refusal->code, refusal->message);
+        } else {
+            room_->post([self = shared_from_this()](room::Room& room) { room.rematch(*self); });
+        }
     } else if (const auto* emote = std::get_if<proto::EmoteMessage>(&message)) {
         room_->post(
             [self = shared_from_this(), e = *emote](room::Room& room) { room.emote(*self, e); });

@@ -192,6 +192,10 @@ void WsSession::handle_quick_match(const proto::QuickMatch& quick) {
         send_error(proto::code::kAlreadyInRoom, "Leave this room first.");
         return;
     }
+    if (const auto refusal = core_.store_refusal()) { // no queue: no match could start
+        send_error(refusal->code, refusal->message);
+        return;
+    }
     if (identity_ && quick.seats == 2) {
         handle_rated_quick_match(quick);
         return;

@@ -134,6 +134,9 @@ void WsSession::arm_rated_tick(std::uint64_t generation) {
 }
 
 void WsSession::try_rated_pair(proto::RuleSet rule_set) {
+    if (core_.store_refusal()) {
+        return; // no match could start: both wait on (at the wait's end, store_unavailable)
+    }
     auto pair = core_.rated_queue.pair(rule_set, core_.clock.now_ms());
     if (!pair) {
         return;

@@ -316,6 +316,19 @@ TEST(MatchModel, FoulsDuesQueenAndDropsAreTold) {
     EXPECT_TRUE(m.view().seats[1].connected);
 }
 
+TEST(MatchModel, APauseForTheStoreIsSaidThenThatTheMatchGoesOn) {
+    MatchModel m{PhysicsConfig{}};
+    m.handle(room(), 0.0);
+    const std::string message = "The server cannot save the last stroke because its database "
+                                "does not answer; the match goes on when it is back.";
+    m.handle(proto::Event{proto::PausedEvent{"store", message}}, 1.0);
+    EXPECT_EQ(m.log().all().back().text, message);
+    EXPECT_EQ(m.log().all().back().tone, Tone::Error);
+    m.handle(proto::Event{proto::ResumedEvent{}}, 2.0);
+    EXPECT_EQ(m.log().all().back().text, "The match goes on");
+    EXPECT_EQ(m.log().all().back().tone, Tone::Info);
+}
+
 TEST(MatchModel, OpponentAimIsShownLive) {
     MatchModel m{PhysicsConfig{}};
     m.handle(room(1), 0.0); // we are seat 1; seat 0 aims

@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+
 namespace carrom::integration {
 
 using namespace std::chrono_literals;
@@ -93,6 +95,44 @@ void Pair::expect_finished(int resumes) const {
         EXPECT_EQ(bot->summary().resumes, resumes);
         EXPECT_EQ(bot->summary().errors.count("bad_token"), 0U);
     }
+}
+
+void PauseWatch::see(const proto::ServerMessage& m) {
+    if (const auto* event = std::get_if<proto::Event>(&m)) {
+        if (const auto* p = std::get_if<proto::PausedEvent>(event)) {
+            ++paused;
+            reason = p->reason;
+            message = p->message;
+            paused_at = std::chrono::steady_clock::now();
+        } else if (std::holds_alternative<proto::ResumedEvent>(*event)) {
+            ++resumed;
+            resumed_at = std::chrono::steady_clock::now();
+        }
+    } else if (paused > resumed && (std::holds_alternative<proto::Snapshot>(m) ||
+                                    std::holds_alternative<proto::ShotResult>(m))) {
+        ++streamed_while_paused;
+    }
+}
+
+void expect_new_matches_refused(const std::string& url) {
+    ManualClient client(url, "latecomer");
+    client.hello();
+    proto::CreateRoom create;
+    client.send(create);
+    EXPECT_EQ(client.next_error(), "store_unavailable");
+    create.bot = proto::BotSeat{};
+    client.send(create);
+    EXPECT_EQ(client.next_error(), "store_unavailable");
+    client.send(proto::QuickMatch{});
+    EXPECT_EQ(client.next_error(), "store_unavailable");
+    const auto errors = client.history();
+    const auto last = std::find_if(errors.rbegin(), errors.rend(), [](const auto& m) {
+        return std::holds_alternative<proto::Error>(m);
+    });
+    ASSERT_NE(last, errors.rend());
+    EXPECT_EQ(std::get<proto::Error>(*last).message,
+              "The server cannot start a match now because its database does not answer; try "
+              "again in a moment.");
 }
 
 test_support::ServerProcess::Options bot_server_options(const std::string& data) {

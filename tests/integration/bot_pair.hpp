@@ -45,6 +45,24 @@ private:
     std::string url_;
 };
 
+// What a bot saw of its match pausing while the store did not answer (docs/cluster.md, "The
+// database down"); fed every message (Pair::hook).
+struct PauseWatch {
+    void see(const proto::ServerMessage& m);
+
+    int paused = 0;
+    int resumed = 0;
+    int streamed_while_paused = 0; // snapshots and shot results between `paused` and `resumed`
+    std::string reason;            // of the last `paused`
+    std::string message;           // of the last `paused`
+    std::chrono::steady_clock::time_point paused_at;  // of the last `paused`
+    std::chrono::steady_clock::time_point resumed_at; // of the last `resumed`
+};
+
+// A new client's create_room (also against bots) and quick_match: each answered
+// store_unavailable.
+void expect_new_matches_refused(const std::string& url);
+
 // carrom-server's options for bot pairs on data: playback 25 times faster, a 20 s grace period,
 // info logs, 1,000 connections per address.
 test_support::ServerProcess::Options bot_server_options(const std::string& data);

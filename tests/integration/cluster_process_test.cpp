@@ -235,22 +235,36 @@ TEST_F(ClusterProcess, AFrozenOwnerWakesToAMatchTakenOverWritesNothingAndClosesI
     take_over(url, true);
 }
 
-// PostgreSQL stopped longer than the lease while a match plays on a, then started again: every
-// lease lapsed meanwhile, and the instances renew theirs before any claims, so the match stays
-// on a (no takeover, no connection closed) and finishes with every stroke written once.
+// PostgreSQL stopped longer than the lease while a match plays on a, then started again: the
+// match pauses at its next stroke (`paused`, nothing of the stroke streamed), new matches are
+// refused (store_unavailable), /healthz says why; every lease lapsed meanwhile, and the
+// instances renew theirs before any claims, so the match stays on a (no takeover, no connection
+// closed), gets `resumed` and finishes with every stroke written once (docs/cluster.md, "The
+// database down").
 TEST_F(ClusterProcess, ADatabaseOutageLongerThanTheLeaseMovesNoMatch) {
     // b first: its rounds come just before a's, so b is back before a renews.
     auto b = start_instance(url, "b");
     auto a = start_instance(url, "a");
     ASSERT_NE(a->port(), 0) << a->log();
     ASSERT_NE(b->port(), 0) << b->log();
+    PauseWatch watch;
     Pair pair(a->url(), 13);
+    pair.hook = [&](const proto::ServerMessage& m) { watch.see(m); };
     pair.run([&] { return pair.shots >= 3; }, 20s);
     ASSERT_GE(pair.shots, 3);
     ASSERT_TRUE(postgres.stop());
-    pair.run([] { return false; }, 3s); // strokes go on in memory, their writes retried
-    EXPECT_EQ(a->get("/healthz").body.substr(0, 9), "degraded:");
+    pair.run([] { return false; }, 3s); // the next stroke waits for its write, retried
+    EXPECT_EQ(watch.paused, 1);
+    EXPECT_EQ(watch.resumed, 0);
+    EXPECT_EQ(watch.reason, "store");
+    const std::string health = a->get("/healthz").body;
+    EXPECT_TRUE(
+        health.starts_with("degraded: cluster lease not renewed; match store not writing ("))
+        << health;
+    std::fprintf(stderr, "/healthz of a during the outage: %s", health.c_str());
+    expect_new_matches_refused(a->url());
     ASSERT_TRUE(postgres.start());
+    const auto started_at = Clock::now();
     EXPECT_TRUE(a->wait_log("cluster: lease renewed again", Clock::now() + 10s)) << a->log();
     EXPECT_TRUE(b->wait_log("cluster: lease renewed again", Clock::now() + 10s)) << b->log();
     pair.run([] { return false; }, 30s);
@@ -266,6 +280,13 @@ TEST_F(ClusterProcess, ADatabaseOutageLongerThanTheLeaseMovesNoMatch) {
         std::this_thread::sleep_for(100ms);
     }
     EXPECT_EQ(metric_value(*a, "carrom_store_pending"), 0);
+    EXPECT_TRUE(a->get("/healthz").body.starts_with("ok\ncluster: ")) << a->get("/healthz").body;
+    EXPECT_EQ(watch.paused, 1);
+    EXPECT_EQ(watch.resumed, 1);
+    EXPECT_EQ(watch.streamed_while_paused, 0);
+    std::fprintf(stderr, "paused %.2f s; resumed %.2f s after PostgreSQL started\n",
+                 std::chrono::duration<double>(watch.resumed_at - watch.paused_at).count(),
+                 std::chrono::duration<double>(watch.resumed_at - started_at).count());
     EXPECT_GT(expect_finished_journals_clean(*a, 1), 3);
     if (::testing::Test::HasFailure()) {
         std::fprintf(stderr, "a:\n%s\nb:\n%s", a->log().c_str(), b->log().c_str());

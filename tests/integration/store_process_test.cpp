@@ -1,7 +1,8 @@
 // carrom-server with a match store (--data) as a real process: bot matches journaled and served
 // by GET /matches (each journal replays clean), a --data the store cannot use (exit 2, one line,
 // the file untouched), and write failures injected through CARROM_TEST_STORE_FAIL_FILE while
-// matches run (/healthz and /metrics say so; the matches go on; the journals end up complete).
+// matches run (/healthz and /metrics say so; the matches pause, then go on; the journals end up
+// complete).
 #include "harness.hpp"
 #include "journal_check.hpp"
 
@@ -215,7 +216,7 @@ TEST(StoreProcess, WriteFailuresDegradeTheServerAndTheMatchesGoOn) {
     const std::string metrics = server.get("/metrics").body;
     EXPECT_EQ(metrics.find("carrom_store_errors_total 0\n"), std::string::npos) << metrics;
     EXPECT_NE(metrics.find("carrom_store_degraded 1\n"), std::string::npos) << metrics;
-    std::this_thread::sleep_for(1s); // the matches go on meanwhile
+    std::this_thread::sleep_for(1s); // their strokes wait meanwhile (store_outage_process_test)
     fs::remove(fail);
     const auto runs = matches.get();
     for (const auto& run : runs) {

@@ -458,6 +458,23 @@ test('the game end is named by its rule code, as the journal and carrom-client n
     "event: field 'rule' must be a string");
 });
 
+test('a match paused while the server cannot save its stroke says so, then that it goes on', () => {
+  const m = new MatchModel();
+  m.handle(roomState({ you: 0 }), 10);
+  const message = 'The server cannot save the last stroke because its database does not answer; '
+    + 'the match goes on when it is back.';
+  const paused = proto.decodeServer(JSON.stringify({ type: 'event', kind: 'paused', reason: 'store', message }));
+  assert.equal(paused.error, undefined);
+  m.handle(paused.message, 11);
+  const resumed = proto.decodeServer('{"type":"event","kind":"resumed"}');
+  assert.equal(resumed.error, undefined);
+  m.handle(resumed.message, 12);
+  assert.deepEqual(m.log.lines.slice(-2).map((l) => [l.text, l.tone]),
+    [[message, 'error'], ['The match goes on', 'info']]);
+  assert.equal(proto.decodeServer('{"type":"event","kind":"paused","reason":"store"}').error,
+    "event: field 'message' must be a string");
+});
+
 test('a shot played long after the join keyframe sounds every cue once, when rendered', () => {
   const m = new MatchModel();
   m.handle(roomState({ you: 0, to_play: 0 }), 10);

@@ -466,6 +466,12 @@ export class MatchModel {
       case 'emote':
         this.emotes.receive(e.seat, e.emote, localS);
         break;
+      case 'paused': // the server cannot commit the stroke yet: nothing of it moves until resumed
+        post(e.message, 'error');
+        break;
+      case 'resumed':
+        post('The match goes on', 'info');
+        break;
       default:
         break;
     }

@@ -256,6 +256,8 @@ const EVENT_FIELDS = {
   player_returned: (m) => { int(m, 'seat'); },
   aim: (m) => { int(m, 'seat'); int(m, 'turn'); num(m, 'x'); },
   emote: (m) => { int(m, 'seat'); need(EMOTE_IDS.includes(m.emote), 'emote', 'a known emote'); },
+  paused: (m) => { str(m, 'reason'); str(m, 'message'); },
+  resumed: () => {},
 };
 
 const SERVER_FIELDS = {

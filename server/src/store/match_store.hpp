@@ -101,9 +101,10 @@ struct StoreHealth {
 // append itself when the entry is dropped at once, the store being full): written=true
 // once it is written (SQLite: committed to the WAL, so it survives a crash of the process;
 // PostgreSQL: its COMMIT returned);
-// written=false when the first attempt to write it failed or it was dropped (the backend keeps
-// retrying a failed entry; the caller must not wait for it). Keep it short; never call the store
-// from it.
+// written=false when it was dropped (the store full, the entry refused as invalid, or its match
+// lost to another instance). A failed attempt tells nothing: the backend retries the entry until
+// it is written, and the caller waits for it as long as the database does not answer. Keep it
+// short; never call the store from it.
 using OnWritten = std::function<void(bool written)>;
 
 class Cluster;

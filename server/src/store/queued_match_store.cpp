@@ -21,30 +21,29 @@ void QueuedMatchStore::count_error() {
 }
 
 void QueuedMatchStore::create(proto::MatchCreated created) {
-    queue_->enqueue(WriteItem{CreateItem{std::move(created)}, {}, false});
+    queue_->enqueue(WriteItem{CreateItem{std::move(created)}, {}});
 }
 
 void QueuedMatchStore::append(const MatchId& match, std::int64_t seq, proto::JournalEntry entry,
                               OnWritten on_written) {
-    queue_->enqueue(
-        WriteItem{AppendItem{match, seq, std::move(entry)}, std::move(on_written), false});
+    queue_->enqueue(WriteItem{AppendItem{match, seq, std::move(entry)}, std::move(on_written)});
 }
 
 void QueuedMatchStore::set_seat_token(const MatchId& match, int seat,
                                       std::optional<TokenHash> token) {
-    queue_->enqueue(WriteItem{SeatTokenItem{match, seat, token}, {}, false});
+    queue_->enqueue(WriteItem{SeatTokenItem{match, seat, token}, {}});
 }
 
 void QueuedMatchStore::mark_finished(const MatchId& match, std::int64_t time_ms) {
-    queue_->enqueue(WriteItem{FinishItem{match, time_ms}, {}, false});
+    queue_->enqueue(WriteItem{FinishItem{match, time_ms}, {}});
 }
 
 void QueuedMatchStore::save_player(IdentifiedPlayer player) {
-    queue_->enqueue(WriteItem{PlayerItem{std::move(player)}, {}, false});
+    queue_->enqueue(WriteItem{PlayerItem{std::move(player)}, {}});
 }
 
 void QueuedMatchStore::set_rated_seat(const MatchId& match, int seat, PlayerKeyHash player) {
-    queue_->enqueue(WriteItem{RatedSeatItem{match, seat, player}, {}, false});
+    queue_->enqueue(WriteItem{RatedSeatItem{match, seat, player}, {}});
 }
 
 bool QueuedMatchStore::flush(std::chrono::milliseconds timeout) {

@@ -123,13 +123,8 @@ bool StoreWriteQueue::write(std::deque<WriteItem>& batch) {
         std::replace(error.begin(), error.end(), '\n', ' '); // one line
     }
     if (!error.empty()) {
-        // Nothing was written: tell each waiting caller once, keep every item for the retry.
-        for (WriteItem& item : items) {
-            if (!item.told && item.on_written) {
-                item.on_written(false);
-            }
-            item.told = true;
-        }
+        // Nothing was written: every item is kept for the retry; its caller waits for it (a
+        // room's stroke streams only once written, docs/cluster.md "The database down").
         std::size_t waiting = 0;
         {
             const std::lock_guard lock(mutex_);
@@ -152,7 +147,7 @@ bool StoreWriteQueue::write(std::deque<WriteItem>& batch) {
         dropped[r.index] = true;
     }
     for (std::size_t i = 0; i < items.size(); ++i) {
-        if (!items[i].told && items[i].on_written) {
+        if (items[i].on_written) {
             items[i].on_written(!dropped[i]);
         }
     }

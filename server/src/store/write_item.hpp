@@ -41,7 +41,6 @@ struct RatedSeatItem {
 struct WriteItem {
     std::variant<CreateItem, AppendItem, SeatTokenItem, FinishItem, PlayerItem, RatedSeatItem> what;
     OnWritten on_written; // appends only; may be empty
-    bool told = false;    // on_written has been called
 };
 
 // An item a backend left out of its transaction because it would fail every time (an append to

@@ -7,10 +7,10 @@
 //
 // Durability: a stroke's entry is appended with confirm = true, and the room streams nothing of
 // that stroke (no snapshot, event or result to anyone) until the sink answers with
-// Room::journal_written(match_id, seq) on the room's thread, once the entry is written or its
-// write failed (a failed write does not stop the match: it goes on in memory). The answer must
-// not come from within append() itself. Other entries are appended with confirm = false: the room
-// does not wait for them.
+// Room::journal_written(match_id, seq) on the room's thread, once the entry is written or
+// dropped (a failed write is retried and the stroke waits; after RoomConfig::store_pause_after_ms
+// the room tells its members the match is paused). The answer must not come from within append()
+// itself. Other entries are appended with confirm = false: the room does not wait for them.
 
 #include "carrom/proto/journal.hpp"
 

@@ -6,8 +6,8 @@
 // broadcasts are encoded once and shared.
 //
 // Time-driven work happens in tick(): snapshots while a shot streams, the shot clock, grace
-// periods. next_wake_ms() says when tick() is next needed (nothing while the board is at rest
-// and no deadline is pending).
+// periods, the pause of a stroke whose journal entry waits. next_wake_ms() says when tick() is
+// next needed (nothing while the board is at rest and no deadline is pending).
 
 #include "carrom/proto/client_messages.hpp"
 #include "carrom/proto/server_messages.hpp"
@@ -30,6 +30,10 @@
 
 namespace carrom::room {
 
+// How long a stroke waits for its journal entry to be written before the room tells its members
+// the match is paused (RoomConfig::store_pause_after_ms), in ms.
+inline constexpr std::int64_t kStorePauseAfterMs = 1000;
+
 struct RoomConfig {
     proto::RuleSet rule_set = proto::RuleSet::Icf;
     rules::RulesConfig rules{};
@@ -44,6 +48,10 @@ struct RoomConfig {
     // room_state's aim_assist: clients may draw the first-contact aim guide. Off in a rated
     // room (docs/ratings.md), on in every other.
     bool aim_assist = true;
+    // A stroke whose journal entry waits longer than this (ms) for the sink's answer pauses the
+    // match: every member gets the event `paused` (reason "store") once, and `resumed` when the
+    // entry is written, before the stroke streams (docs/cluster.md, "The database down").
+    std::int64_t store_pause_after_ms = kStorePauseAfterMs;
 };
 
 // How a restored room's seat is held again (Room::restore), by seat index.
@@ -158,6 +166,9 @@ private:
     // The turn event for the current turn, to everyone.
     void broadcast_turn();
     void send_to(Peer& peer, const proto::ServerMessage& message);
+    // A member who enters (joins, takes a seat, resumes one): the board now, and `paused` while
+    // the match is paused.
+    void send_keyframe(Peer& peer);
     void send_error(Peer& peer, std::string_view code, std::string message);
     std::vector<Peer*> members();
 
@@ -192,6 +203,8 @@ private:
     void notify(MembershipChange change, int seat, const std::string& name = {});
     void check_grace(std::int64_t now_ms);
     void check_shot_clock(std::int64_t now_ms);
+    // The stroke's entry has waited store_pause_after_ms: `paused` to every member, once.
+    void check_store_wait(std::int64_t now_ms);
     std::optional<std::int64_t> shot_clock_deadline_ms() const;
     std::vector<Body> board_with_striker() const;
     proto::Snapshot current_keyframe() const;
@@ -224,7 +237,10 @@ private:
         std::int64_t next_base_ms = 0; // next snapshot due at the regular rate
         int index = 0;                 // regular snapshots sent
         // The stroke's journal entry not yet confirmed written: nothing of it is streamed.
+        // (It waits since start_ms.)
         std::optional<std::int64_t> awaiting_seq;
+        // The members were told `paused` for this wait; they get `resumed` when it ends.
+        bool paused = false;
     };
     std::unique_ptr<Streaming> streaming_;
     int bot_turn_taken_ = -1; // turn number whose BotTurn was handed out
