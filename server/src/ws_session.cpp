@@ -47,6 +47,7 @@ WsSession::~WsSession() = default;
 
 void WsSession::run(http::request<http::string_body> request) {
     forwarded_for_ = std::string(request["X-Forwarded-For"]);
+    route_asked_ = std::string(request["X-Carrom-Route"]).substr(0, 64);
     websocket::stream_base::timeout timeout{};
     timeout.handshake_timeout = to_duration(core_.settings.handshake_timeout_s);
     timeout.idle_timeout = websocket::stream_base::none();

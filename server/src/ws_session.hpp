@@ -83,8 +83,10 @@ private:
     void handle_text(std::string_view text);
     void handle(const proto::ClientMessage& message);
     void handle_hello(const proto::Hello& hello);
-    // The welcome of a hello (record: the resumed seat's player; none: a new player).
-    void finish_hello(const proto::Hello& hello, std::optional<PlayerRecord> record);
+    // The welcome of a hello (record: the resumed seat's player; none: a new player, after
+    // bad_token for a token the hello had, unless say_bad_token is false: said already).
+    void finish_hello(const proto::Hello& hello, std::optional<PlayerRecord> record,
+                      bool say_bad_token);
     void handle_create(const proto::CreateRoom& create);
     void handle_join(const proto::JoinRoom& join);
     void handle_quick_match(const proto::QuickMatch& quick);
@@ -120,6 +122,9 @@ private:
     // ws_session_cluster.cpp: cluster mode (docs/cluster.md, "Rooms across the cluster").
     // `redirect` for a client that follows it (then close 4005).
     void redirect(proto::Redirect to);
+    // `where`, or Moving when it names the instance whose route the front was asked for (the
+    // front could not reach it and sent the client here).
+    store::RoomLocation reachable(store::RoomLocation where) const;
     // join_room of a room not here, hello with a resume token not known here: asks the
     // cluster's directory, answers on the strand (redirect, room_elsewhere/seat_elsewhere,
     // match_moving, or as a server alone would).
@@ -171,6 +176,7 @@ private:
     bool close_started_ = false;
     std::string address_;          // the client's IP address (client_address.hpp)
     std::string forwarded_for_;    // the upgrade request's X-Forwarded-For
+    std::string route_asked_;      // X-Carrom-Route: the instance the front was asked for (/i/ID/)
     bool address_counted_ = false; // counted in ServerCore::connections_by_address
     bool too_slow_ = false;        // the write queue overflowed: nothing more is queued
     std::int64_t last_activity_ms_ = 0;

@@ -14,6 +14,16 @@
 
 namespace carrom::server {
 
+store::RoomLocation WsSession::reachable(store::RoomLocation where) const {
+    // The front sent this client here although it asked for the owner's route: the front cannot
+    // reach the owner (it died; its lease has not run out yet). A redirect would lead back here.
+    if (where.where == store::RoomLocation::Where::Elsewhere && !route_asked_.empty() &&
+        where.instance_id == route_asked_) {
+        where.where = store::RoomLocation::Where::Moving;
+    }
+    return where;
+}
+
 void WsSession::redirect(proto::Redirect to) {
     core_.metrics.redirects_total.fetch_add(1, std::memory_order_relaxed);
     send_now({std::make_shared<const std::string>(proto::encode(to)), room::MessageKind::Normal});
@@ -49,7 +59,7 @@ void WsSession::on_room_located(const proto::JoinRoom& join,
                        "again in a moment.");
         return;
     }
-    const store::RoomLocation& where = located.value;
+    const store::RoomLocation where = reachable(located.value);
     switch (where.where) {
     case store::RoomLocation::Where::Elsewhere:
         if (follows_redirects_) {
@@ -105,7 +115,7 @@ void WsSession::on_seat_located(const proto::Hello& hello,
         return;
     }
     if (!record) {
-        const store::RoomLocation& where = located.value;
+        const store::RoomLocation where = reachable(located.value);
         if (where.where == store::RoomLocation::Where::Elsewhere) {
             if (follows_redirects_) {
                 redirect(proto::Redirect{where.public_url, "seat", {}, proto::Role::Player});
@@ -118,6 +128,18 @@ void WsSession::on_seat_located(const proto::Hello& hello,
             }
             return;
         }
+        if (!where.finished_match.empty()) {
+            // Its last stroke was stored, not streamed, when its instance stopped.
+            send_error(proto::code::kBadToken,
+                       "Your match in room " + where.room_code +
+                           " ended while you were away; its result: /matches/" +
+                           where.finished_match + ". You join as a new player.");
+            finish_hello(hello, std::nullopt, false);
+            for (const auto& message : deferred) {
+                handle(message);
+            }
+            return;
+        }
         if (where.where == store::RoomLocation::Where::Moving) {
             fail(proto::code::kMatchMoving,
                  "Your seat's match (room " + where.room_code +
@@ -127,7 +149,7 @@ void WsSession::on_seat_located(const proto::Hello& hello,
             return;
         }
     }
-    finish_hello(hello, std::move(record));
+    finish_hello(hello, std::move(record), true);
     for (const auto& message : deferred) {
         handle(message);
     }

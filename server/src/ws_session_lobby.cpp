@@ -50,11 +50,12 @@ void WsSession::handle_hello(const proto::Hello& hello) {
             return;
         }
     }
-    finish_hello(hello, std::move(record));
+    finish_hello(hello, std::move(record), true);
 }
 
-void WsSession::finish_hello(const proto::Hello& hello, std::optional<PlayerRecord> record) {
-    if (hello.resume_token && !record) {
+void WsSession::finish_hello(const proto::Hello& hello, std::optional<PlayerRecord> record,
+                             bool say_bad_token) {
+    if (hello.resume_token && !record && say_bad_token) {
         send_error(proto::code::kBadToken,
                    "That resume token is unknown or expired; you join as a new player.");
     }

@@ -109,8 +109,8 @@ protected:
         const auto limit = cfg.find("sc0_conn_cur gt 64");
         ASSERT_NE(limit, std::string::npos);
         cfg.replace(limit, 18, "sc0_conn_cur gt 10000");
-        config = dir.file("haproxy.cfg");
-        std::ofstream(config) << cfg;
+        haproxy_config = dir.file("haproxy.cfg");
+        std::ofstream(haproxy_config) << cfg;
         std::vector<std::string> env = {"CARROM_FRONT_BIND=127.0.0.1:" +
                                         std::to_string(front_port)};
         for (int n = 1; n <= 3; ++n) {
@@ -118,7 +118,8 @@ protected:
                           std::to_string(instances[static_cast<std::size_t>(n - 1)]->port()));
         }
         haproxy = std::make_unique<test_support::ChildProcess>(
-            std::vector<std::string>{"haproxy", "-db", "-f", config}, env, dir.file("haproxy.log"));
+            std::vector<std::string>{"haproxy", "-db", "-f", haproxy_config}, env,
+            dir.file("haproxy.log"));
         ASSERT_TRUE(haproxy->started());
         for (int n = 1; n <= 3; ++n) {
             ASSERT_TRUE(front_reaches(n)) << "carrom-" << n << " not reached through the front";
@@ -197,7 +198,7 @@ protected:
             return pick == 0 ? front : front + "i/carrom-" + std::to_string(pick) + "/";
         };
         for (int i = 0; i < matches; ++i) {
-            const std::string n = std::to_string(i);
+            const std::string n = std::to_string(matches_started++);
             FrontBot& creator = add_bot(somewhere(), bots::JoinMode::Create, "creator" + n);
             const auto deadline = Clock::now() + 10s;
             while (creator.runner->summary().room_code.empty() && !creator.runner->done() &&
@@ -207,7 +208,7 @@ protected:
             const std::string code = creator.runner->summary().room_code;
             ASSERT_FALSE(code.empty()) << creator.runner->summary().failure;
             add_bot(somewhere(), bots::JoinMode::Join, "joiner" + n, code);
-            if (i % 4 == 0) {
+            if (i % 4 == 0) { // (the first of each call)
                 add_bot(front, bots::JoinMode::Spectate, "watcher" + n, code);
             }
         }
@@ -215,17 +216,33 @@ protected:
 
     // Every bot finished; each player's final scores are its match's stored result; every
     // stored match of a creator replays clean with consecutive turns.
-    void expect_all_finished_and_stored() {
+    // After a kill (killed: true): a spectator of the killed instance's matches may end there
+    // (its place is not stored), and a player whose match ended by a stroke stored but not
+    // streamed before the kill learns it ended (its stored result is checked like the others).
+    void expect_all_finished_and_stored(bool killed = false) {
         const std::string http = "http://127.0.0.1:" + std::to_string(front_port);
         std::map<std::string, std::vector<int>> scores_by_room;
         for (const auto& bot : bots_) {
             const bots::BotSummary& s = bot.runner->summary();
-            EXPECT_TRUE(s.finished) << s.room_code << ": " << s.failure;
+            if (killed && s.seat < 0 &&
+                s.failure.find("no longer holds the spectator's place") != std::string::npos) {
+                continue;
+            }
+            if (killed && s.failure.find("ended while you were away") != std::string::npos) {
+                scores_by_room.emplace(s.room_code, std::vector<int>{});
+                continue;
+            }
+            EXPECT_TRUE(s.finished)
+                << bot.name << " in " << s.room_code << ": " << s.failure << " (resumes "
+                << s.resumes << ", redirects " << s.redirects << ")";
             EXPECT_EQ(s.errors.count("bad_token"), 0U) << s.room_code;
             if (s.seat < 0) {
                 continue;
             }
             auto [it, fresh] = scores_by_room.emplace(s.room_code, s.scores);
+            if (!fresh && it->second.empty()) {
+                it->second = s.scores;
+            }
             EXPECT_TRUE(fresh || it->second == s.scores) << s.room_code;
         }
         int replayed = 0;
@@ -243,7 +260,9 @@ protected:
                 }
                 found = true;
                 EXPECT_FALSE(m["result"].is_null()) << room;
-                EXPECT_EQ(m["scores"].get<std::vector<int>>(), scores) << room;
+                if (!scores.empty()) { // (empty: no player of it saw its end)
+                    EXPECT_EQ(m["scores"].get<std::vector<int>>(), scores) << room;
+                }
                 const auto journal = net::http_get(http + "/matches/" + m["id"].get<std::string>(),
                                                    net::HttpLimits{});
                 ASSERT_TRUE(std::holds_alternative<net::HttpResponse>(journal)) << room;
@@ -288,7 +307,13 @@ protected:
     }
 
     std::string log_of_all() const {
-        std::string text;
+        std::string text =
+            "matches (room, owner, epoch, unfinished, entries):\n" +
+            postgres
+                .sql(database, "SELECT room_code, owner_instance, owner_epoch, finished_ms IS "
+                               "NULL, (SELECT count(*) FROM entries e WHERE e.match_id = m.id) "
+                               "FROM matches m ORDER BY room_code")
+                .out;
         for (const auto& instance : instances) {
             text += instance->log();
         }
@@ -301,10 +326,11 @@ protected:
     std::string url = postgres.url(database);
     std::uint16_t front_port = 0;
     std::string front;
-    std::string config;
+    std::string haproxy_config;
     std::vector<std::unique_ptr<test_support::ServerProcess>> instances;
     std::unique_ptr<test_support::ChildProcess> haproxy;
     std::vector<FrontBot> bots_;
+    int matches_started = 0; // numbers the bots' names
     std::atomic<int> shots{0};
     std::function<void(const proto::ServerMessage&)> hook;
 };
@@ -315,6 +341,12 @@ TEST_F(ClusterFront, TwentyMatchesAndAQuickMatchSurviveAnInstanceKilledWhileShot
     add_bot(front + "i/carrom-1/", bots::JoinMode::Quick, "quick1");
     run([] { return false; }, 1s);
     add_bot(front + "i/carrom-3/", bots::JoinMode::Quick, "quick2");
+    const bots::BotRunner& quick1 = *bots_[bots_.size() - 2].runner;
+    const bots::BotRunner& quick2 = *bots_.back().runner;
+    run([&] { return !quick1.summary().room_code.empty() && !quick2.summary().room_code.empty(); },
+        10s);
+    EXPECT_EQ(quick1.summary().room_code, quick2.summary().room_code);
+    EXPECT_EQ(quick1.summary().redirects + quick2.summary().redirects, 1);
     run([&] { return shots >= 40; }, 60s);
     ASSERT_GE(shots, 40) << log_of_all();
 
@@ -336,31 +368,33 @@ TEST_F(ClusterFront, TwentyMatchesAndAQuickMatchSurviveAnInstanceKilledWhileShot
         redirects += bot.runner->summary().redirects;
     }
     EXPECT_GT(redirects, 0);
-    const auto& quick1 = bots_[bots_.size() - 2].runner->summary();
-    const auto& quick2 = bots_.back().runner->summary();
-    EXPECT_EQ(quick1.room_code, quick2.room_code) << quick1.failure << quick2.failure;
-    expect_all_finished_and_stored();
+    // A spectator's place is not kept when its match's instance dies (only seats are stored):
+    // the spectators of the killed instance's matches may end there.
+    expect_all_finished_and_stored(true);
     if (HasFailure()) {
         std::fprintf(stderr, "instances:\n%s", log_of_all().c_str());
     }
 }
 
 TEST_F(ClusterFront, EveryMatchFinishesThroughADrainAndARollingRestartOfAllThree) {
-    ASSERT_NO_FATAL_FAILURE(start_matches(10, 36));
     for (int n = 1; n <= 3; ++n) {
+        // Each instance drains under load: new matches, some strokes played.
+        ASSERT_NO_FATAL_FAILURE(start_matches(6, 36 + static_cast<std::uint64_t>(n)));
         const int before = shots;
         run([&] { return shots >= before + 10; }, 30s);
         auto& instance = *instances[static_cast<std::size_t>(n - 1)];
         instance.terminate(); // drains: its matches go to the others, its players follow
         EXPECT_TRUE(instance.start()) << instance.log();
         ASSERT_TRUE(front_reaches(n));
+        // As a rolling restart waits for each instance's readiness: the moved players settle
+        // (a player still on its way to an instance that drains would have to find it again).
+        run([] { return false; }, 2s);
     }
     run([] { return false; }, 150s);
-    EXPECT_GE(std::stoi(postgres
-                            .sql(database, "SELECT count(*) FROM matches WHERE finished_ms IS "
-                                           "NOT NULL")
-                            .out),
-              10);
+    EXPECT_EQ(
+        postgres.sql(database, "SELECT count(*) FROM matches WHERE finished_ms IS NOT NULL").out,
+        "18\n");
+    EXPECT_NE(log_of_all().find("matches handed over"), std::string::npos);
     expect_all_finished_and_stored();
     if (HasFailure()) {
         std::fprintf(stderr, "instances:\n%s", log_of_all().c_str());

@@ -17,7 +17,8 @@ JournalCheck check_journal(const std::string& json_text) {
     const proto::MatchJournal& journal = decoded.value;
     check.entries = static_cast<int>(journal.entries.size());
     int last_turn = -1;
-    int last_input_turn = -1;
+    int expected_turn = -1; // the next input's turn: the last one's plus one, plus one more
+                            // after a board's end (the next board takes a turn number)
     for (const auto& entry : journal.entries) {
         int input_turn = -1;
         if (const auto* stroke = std::get_if<proto::StrokeEntry>(&entry.event)) {
@@ -27,8 +28,8 @@ JournalCheck check_journal(const std::string& json_text) {
         }
         if (input_turn >= 0) {
             check.turns_consecutive = check.turns_consecutive &&
-                                      (last_input_turn < 0 || input_turn == last_input_turn + 1);
-            last_input_turn = input_turn;
+                                      (expected_turn < 0 || input_turn == expected_turn);
+            expected_turn = input_turn + 1;
             if (check.first_turn < 0) {
                 check.first_turn = input_turn;
             }
@@ -41,6 +42,9 @@ JournalCheck check_journal(const std::string& json_text) {
         }
         if (const auto* outcome = proto::outcome_of(entry.event)) {
             check.game_over = outcome->game_end.has_value();
+            if (outcome->board_end && !outcome->game_end && expected_turn >= 0) {
+                ++expected_turn;
+            }
         }
     }
     const proto::ReplayResult replayed = proto::replay(journal);

@@ -13,8 +13,9 @@ struct JournalCheck {
     int entries = 0;
     bool game_over = false;     // the last outcome ended the game
     bool turns_in_order = true; // each stroke's turn is greater than the previous one's
-    // each stroke's or clock expiry's turn is the previous one's plus one (no turn lost, none
-    // played twice)
+    // each stroke's or clock expiry's turn is the previous one's plus one, or plus two after
+    // a board's end (rules::start_next_board takes a turn number): no turn lost, none played
+    // twice
     bool turns_consecutive = true;
     int first_turn = -1; // the first stroke's or clock expiry's turn (-1: none)
     int last_turn = -1;  // the last one's

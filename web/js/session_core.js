@@ -255,7 +255,9 @@ export class SessionCore {
       return this.giveUp('redirect_refused');
     }
     this.redirects += 1;
-    this.resuming = (this.phase === 'in_room' || this.resuming) && this.token !== '';
+    // A spectator holds no seat: it joins the named room again, without its token.
+    const watching = Boolean(message.code) && message.as === 'spectator';
+    this.resuming = (this.phase === 'in_room' || this.resuming) && this.token !== '' && !watching;
     if (message.code) {
       this.joinCode = message.code;
       this.joinAs = message.as === 'spectator' ? 'spectator' : 'player';

@@ -230,7 +230,9 @@ SessionActions SessionCore::redirect(const proto::Redirect& message) {
         return give_up(GiveUpReason::RedirectRefused);
     }
     ++redirects_;
-    resuming_ = (phase_ == SessionPhase::InRoom || resuming_) && !token_.empty();
+    // A spectator holds no seat: it joins the named room again, without its token.
+    const bool watching = !message.code.empty() && message.as == proto::Role::Spectator;
+    resuming_ = (phase_ == SessionPhase::InRoom || resuming_) && !token_.empty() && !watching;
     if (!message.code.empty()) {
         join_code_ = message.code;
         join_as_ = message.as;

@@ -40,6 +40,9 @@ struct RoomLocation {
     std::string instance_id;
     std::string public_url;
     std::string room_code;
+    // locate_seat, Nowhere: the seat's latest match, finished while its room is gone (its
+    // instance stopped after the last stroke was stored); empty otherwise.
+    MatchId finished_match;
 };
 
 // A quick-match ticket of this instance that an instance of the cluster paired: its player goes

@@ -303,23 +303,32 @@ void PostgresDirectory::locate_seat(TokenHash token, Answer<RoomLocation> done) 
             return;
         }
         pqxx::read_transaction t(*c);
+        // The seat's latest match: unfinished, or finished in a room still open (its code not
+        // reserved again since the match began), where the seat is held for a rematch.
         const pqxx::result r = t.exec_params(
-            "SELECT m.room_code, coalesce(m.owner_instance, ''), coalesce(i.public_url, ''), "
-            "coalesce(i.lease_expires > now(), false), m.handed_over FROM seat_tokens s JOIN "
-            "matches m ON m.id = s.match_id LEFT JOIN instances i ON i.id = m.owner_instance "
-            "WHERE s.token_sha256 = decode($1, 'hex') AND m.finished_ms IS NULL ORDER BY "
-            "m.created_ms DESC LIMIT 1",
+            "SELECT m.room_code, coalesce(r.instance_id, m.owner_instance, ''), "
+            "coalesce(i.public_url, ''), coalesce(i.lease_expires > now(), false), "
+            "m.handed_over, m.finished_ms IS NULL, r.code IS NOT NULL, m.id FROM seat_tokens s "
+            "JOIN matches m ON m.id = s.match_id LEFT JOIN rooms r ON r.code = m.room_code AND "
+            "r.reserved_at <= to_timestamp(m.created_ms / 1000.0) LEFT JOIN instances i ON "
+            "i.id = coalesce(r.instance_id, m.owner_instance) WHERE s.token_sha256 = "
+            "decode($1, 'hex') ORDER BY m.created_ms DESC LIMIT 1",
             to_hex(token));
         t.commit();
         if (!r.empty()) {
             out.value.room_code = r[0][0].as<std::string>();
             out.value.instance_id = r[0][1].as<std::string>();
             const bool alive = r[0][3].as<bool>();
-            if (out.value.instance_id != instance_id_ && alive && !r[0][4].as<bool>()) {
+            const bool unfinished = r[0][5].as<bool>();
+            const bool room_open = r[0][6].as<bool>();
+            if ((unfinished || room_open) && out.value.instance_id != instance_id_ && alive &&
+                !r[0][4].as<bool>()) {
                 out.value.where = RoomLocation::Where::Elsewhere;
                 out.value.public_url = r[0][2].as<std::string>();
-            } else {
+            } else if (unfinished) {
                 out.value.where = RoomLocation::Where::Moving;
+            } else if (!room_open || !alive) {
+                out.value.finished_match = r[0][7].as<std::string>();
             }
         }
         done(std::move(out));

@@ -50,7 +50,8 @@ std::vector<Case> redirect_cases() {
     {
         Case c{"redirect_moved_resumes_the_seat_else_joins_the_room",
                "moved (a draining instance): hello with the token at the URL; a welcome with "
-               "another token (no seat there) joins the named room instead",
+               "another token (no seat there) joins the named room instead; a spectator's "
+               "hello carries no token (a spectator holds no seat) and joins the room again",
                into_room(0.0)};
         add(c.events, {redirected(1.0, kInstanceB, "moved", kRoom, "player"),
                        at(1.1, "link_opened"), welcome(1.2, kToken), at(1.3, "room_state"),
@@ -64,7 +65,7 @@ std::vector<Case> redirect_cases() {
                "joins the named room as a new player",
                into_room(0.0)};
         add(c.events,
-            {redirected(1.0, kInstanceB, "moved", kRoom, "spectator"), at(1.1, "link_opened"),
+            {redirected(1.0, kInstanceB, "moved", kRoom, "player"), at(1.1, "link_opened"),
              error(1.2, "bad_token"), welcome(1.3, kOther), at(1.4, "room_state")});
         out.push_back(c);
     }
