@@ -141,12 +141,13 @@ sql() { # sql DATABASE STATEMENT: unaligned, tuples only
 sql postgres "CREATE DATABASE carrom" > /dev/null
 echo "cluster.sh: PostgreSQL $("$pg_bin/postgres" --version | awk '{print $3}') in $pg_dir"
 
-# The instances. Behind the front every connection comes from HAProxy's address, so the
-# per-address limits move to HAProxy (docker/haproxy.cfg) and are raised here.
+# The instances. Behind the front every connection comes from HAProxy's address: they trust it
+# (--trusted-proxy) to name the client's address in X-Forwarded-For, for their per-address
+# limits. (The bots of --check connect through the front only.)
 ports=()
 for n in 1 2 3; do
     args=(--host 127.0.0.1 --port 0 --data "postgresql://carrom@/carrom?host=$pg_dir"
-          --max-connections-per-address 100000 --http-rate 10000 --http-burst 10000
+          --trusted-proxy 127.0.0.1
           --instance-id "carrom-$n" --public-url "ws://$public_host:$front_port/i/carrom-$n/")
     if [[ $check -eq 1 ]]; then
         args+=(--time-scale 8 --shot-clock 0)
