@@ -12,6 +12,7 @@
 
 #include "support/child_process.hpp"
 #include "support/command_run.hpp"
+#include "support/loopback_port.hpp"
 #include "support/postgres_instance.hpp"
 #include "support/server_process.hpp"
 #include "support/temp_dir.hpp"
@@ -20,10 +21,6 @@
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
-
-#include <netinet/in.h>
-#include <sys/socket.h>
-#include <unistd.h>
 
 #include <cstdlib>
 #include <fstream>
@@ -36,23 +33,6 @@ namespace {
 
 using namespace std::chrono_literals;
 using Clock = std::chrono::steady_clock;
-
-std::uint16_t unused_loopback_port() {
-    const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
-    sockaddr_in address{};
-    address.sin_family = AF_INET;
-    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-    socklen_t length = sizeof address;
-    std::uint16_t port = 0;
-    if (fd >= 0 && ::bind(fd, reinterpret_cast<sockaddr*>(&address), length) == 0 &&
-        ::getsockname(fd, reinterpret_cast<sockaddr*>(&address), &length) == 0) {
-        port = ntohs(address.sin_port);
-    }
-    if (fd >= 0) {
-        ::close(fd);
-    }
-    return port;
-}
 
 bool haproxy_installed() {
     return test_support::run_command("command -v haproxy >/dev/null 2>&1").exit == 0;
@@ -71,14 +51,14 @@ protected:
         if (!haproxy_installed()) {
             GTEST_SKIP() << "haproxy is not installed (scripts/install-deps.sh installs it)";
         }
-        front_port = unused_loopback_port();
+        front_port = test_support::unused_loopback_port();
         front = "ws://127.0.0.1:" + std::to_string(front_port) + "/";
         for (int n = 1; n <= 3; ++n) {
             const std::string id = "carrom-" + std::to_string(n);
             test_support::ServerProcess::Options options;
             options.program = CARROM_SERVER_PATH;
             options.data = url;
-            options.port = unused_loopback_port();
+            options.port = test_support::unused_loopback_port();
             options.args = {"--instance-id",
                             id,
                             "--lease",

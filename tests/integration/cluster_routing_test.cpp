@@ -6,14 +6,11 @@
 // instances; SIGTERM on an instance hands its match to the other and sends its players there.
 #include "harness.hpp"
 
+#include "support/loopback_port.hpp"
 #include "support/postgres_instance.hpp"
 #include "support/server_process.hpp"
 
 #include <gtest/gtest.h>
-
-#include <netinet/in.h>
-#include <sys/socket.h>
-#include <unistd.h>
 
 #include <thread>
 
@@ -22,31 +19,13 @@ namespace {
 
 using namespace std::chrono_literals;
 
-// A TCP port of 127.0.0.1 free at the time of the call (for a --public-url given before the start).
-std::uint16_t free_loopback_port() {
-    const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
-    sockaddr_in address{};
-    address.sin_family = AF_INET;
-    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-    socklen_t length = sizeof address;
-    if (fd < 0 || ::bind(fd, reinterpret_cast<sockaddr*>(&address), length) != 0 ||
-        ::getsockname(fd, reinterpret_cast<sockaddr*>(&address), &length) != 0) {
-        if (fd >= 0) {
-            ::close(fd);
-        }
-        return 0;
-    }
-    ::close(fd);
-    return ntohs(address.sin_port);
-}
-
 // Instance `id` of the cluster on data, at ws://127.0.0.1:PORT (its --public-url), 2 s lease.
 std::unique_ptr<test_support::ServerProcess> start_routed_instance(const std::string& data,
                                                                    const std::string& id) {
     test_support::ServerProcess::Options options;
     options.program = CARROM_SERVER_PATH;
     options.data = data;
-    options.port = free_loopback_port();
+    options.port = test_support::unused_loopback_port();
     options.args = {"--instance-id", id,
                     "--lease",       "2",
                     "--public-url",  "ws://127.0.0.1:" + std::to_string(options.port),

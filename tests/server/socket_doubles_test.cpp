@@ -27,19 +27,19 @@ double along_baseline(rules::Side side) {
     return side == rules::Side::Bottom || side == rules::Side::Top ? 0.0 : std::numbers::pi / 2.0;
 }
 
-class SoftShotBrain final : public room::BotBrain {
+class BaselineShotBrain final : public room::BotBrain {
 public:
     Shot choose_shot(const rules::MatchState& state, int seat, std::chrono::milliseconds) override {
         return {300.0, along_baseline(state.seats[static_cast<std::size_t>(seat)].side), 2.0};
     }
 };
 
-struct CountingBots {
+struct CountingDoublesBots {
     std::shared_ptr<std::atomic<int>> made = std::make_shared<std::atomic<int>>(0);
     BotFactory factory() const {
         return [count = made](proto::BotLevel) {
             ++*count;
-            return std::make_shared<SoftShotBrain>();
+            return std::make_shared<BaselineShotBrain>();
         };
     }
 };
@@ -143,7 +143,7 @@ TEST_F(SocketTest, FourClientsCreateAndJoinADoublesRoomAndPlayInTurn) {
 }
 
 TEST_F(SocketTest, ADoublesRoomWithABotPartnerWaitsForTwoOpponents) {
-    CountingBots bots;
+    CountingDoublesBots bots;
     start(fast_settings(), bots.factory());
     auto a = connect("Asha");
     a->send(doubles(proto::BotSeat{proto::BotLevel::Easy, {2}}));
@@ -169,7 +169,7 @@ TEST_F(SocketTest, ADoublesRoomWithABotPartnerWaitsForTwoOpponents) {
 }
 
 TEST_F(SocketTest, ADoublesRoomWithThreeBotsStartsAtOnceAndTheBotsPlay) {
-    CountingBots bots;
+    CountingDoublesBots bots;
     start(fast_settings(), bots.factory());
     auto a = connect("Asha");
     a->send(doubles(proto::BotSeat{}));
@@ -191,7 +191,7 @@ TEST_F(SocketTest, ADoublesRoomWithThreeBotsStartsAtOnceAndTheBotsPlay) {
 }
 
 TEST_F(SocketTest, QuickMatchForDoublesGroupsFourPlayers) {
-    CountingBots bots;
+    CountingDoublesBots bots;
     start(fast_settings(5.0), bots.factory());
     std::vector<std::unique_ptr<WsTestClient>> c;
     for (const char* name : {"Asha", "Bo", "Cy", "Dee"}) {
@@ -222,7 +222,7 @@ TEST_F(SocketTest, QuickMatchForDoublesGroupsFourPlayers) {
 }
 
 TEST_F(SocketTest, QuickMatchForDoublesSeatsTwoWaitingPlayersWithBotsAfterTheWait) {
-    CountingBots bots;
+    CountingDoublesBots bots;
     start(fast_settings(0.3), bots.factory());
     auto a = connect("Asha");
     auto b = connect("Bo");

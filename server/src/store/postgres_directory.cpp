@@ -106,6 +106,21 @@ void PostgresDirectory::stop() {
     }
 }
 
+template <class T>
+void PostgresDirectory::ask(Answer<T> done, std::function<void(pqxx::connection&, T&)> fill) {
+    // An exception from fill: run() calls the job again without a connection, with the error.
+    post([done = std::move(done), fill = std::move(fill)](pqxx::connection* c,
+                                                          const std::optional<StoreError>& error) {
+        Loaded<T> out;
+        if (c == nullptr) {
+            out.error = error;
+        } else {
+            fill(*c, out.value);
+        }
+        done(std::move(out));
+    });
+}
+
 void PostgresDirectory::post(Job job) {
     {
         std::unique_lock lock(mutex_);
@@ -260,15 +275,9 @@ void PostgresDirectory::release_room_code(const std::string& code) {
 }
 
 void PostgresDirectory::locate_room(std::string code, Answer<RoomLocation> done) {
-    post([this, code = std::move(code),
-          done = std::move(done)](pqxx::connection* c, const std::optional<StoreError>& error) {
-        Loaded<RoomLocation> out;
-        if (c == nullptr) {
-            out.error = error;
-            done(std::move(out));
-            return;
-        }
-        pqxx::read_transaction t(*c);
+    ask<RoomLocation>(std::move(done), [this, code = std::move(code)](pqxx::connection& c,
+                                                                      RoomLocation& out) {
+        pqxx::read_transaction t(c);
         const pqxx::result r = t.exec_params(
             "SELECT r.instance_id, coalesce(i.public_url, ''), coalesce(i.lease_expires > now(), "
             "false), EXISTS (SELECT 1 FROM matches m WHERE m.room_code = r.code AND "
@@ -276,33 +285,25 @@ void PostgresDirectory::locate_room(std::string code, Answer<RoomLocation> done)
             "WHERE r.code = $1",
             code);
         t.commit();
-        out.value.room_code = code;
+        out.room_code = code;
         if (!r.empty()) {
             const std::string owner = r[0][0].as<std::string>();
             const bool alive = r[0][2].as<bool>();
             const bool running = r[0][3].as<bool>();
-            out.value.instance_id = owner;
+            out.instance_id = owner;
             if (owner != instance_id_ && alive) {
-                out.value.where = RoomLocation::Where::Elsewhere;
-                out.value.public_url = r[0][1].as<std::string>();
+                out.where = RoomLocation::Where::Elsewhere;
+                out.public_url = r[0][1].as<std::string>();
             } else if (running) {
-                out.value.where = RoomLocation::Where::Moving;
+                out.where = RoomLocation::Where::Moving;
             }
         }
-        done(std::move(out));
     });
 }
 
 void PostgresDirectory::locate_seat(TokenHash token, Answer<RoomLocation> done) {
-    post([this, token, done = std::move(done)](pqxx::connection* c,
-                                               const std::optional<StoreError>& error) {
-        Loaded<RoomLocation> out;
-        if (c == nullptr) {
-            out.error = error;
-            done(std::move(out));
-            return;
-        }
-        pqxx::read_transaction t(*c);
+    ask<RoomLocation>(std::move(done), [this, token](pqxx::connection& c, RoomLocation& out) {
+        pqxx::read_transaction t(c);
         // The seat's latest match: unfinished, or finished in a room still open (its code not
         // reserved again since the match began), where the seat is held for a rematch.
         const pqxx::result r = t.exec_params(
@@ -316,36 +317,29 @@ void PostgresDirectory::locate_seat(TokenHash token, Answer<RoomLocation> done) 
             to_hex(token));
         t.commit();
         if (!r.empty()) {
-            out.value.room_code = r[0][0].as<std::string>();
-            out.value.instance_id = r[0][1].as<std::string>();
+            out.room_code = r[0][0].as<std::string>();
+            out.instance_id = r[0][1].as<std::string>();
             const bool alive = r[0][3].as<bool>();
             const bool unfinished = r[0][5].as<bool>();
             const bool room_open = r[0][6].as<bool>();
-            if ((unfinished || room_open) && out.value.instance_id != instance_id_ && alive &&
+            if ((unfinished || room_open) && out.instance_id != instance_id_ && alive &&
                 !r[0][4].as<bool>()) {
-                out.value.where = RoomLocation::Where::Elsewhere;
-                out.value.public_url = r[0][2].as<std::string>();
+                out.where = RoomLocation::Where::Elsewhere;
+                out.public_url = r[0][2].as<std::string>();
             } else if (unfinished) {
-                out.value.where = RoomLocation::Where::Moving;
+                out.where = RoomLocation::Where::Moving;
             } else if (!room_open || !alive) {
-                out.value.finished_match = r[0][7].as<std::string>();
+                out.finished_match = r[0][7].as<std::string>();
             }
         }
-        done(std::move(out));
     });
 }
 
 void PostgresDirectory::quick_enqueue(std::string rule_set, Answer<QuickEnqueued> done) {
-    post([this, rule_set = std::move(rule_set),
-          done = std::move(done)](pqxx::connection* c, const std::optional<StoreError>& error) {
-        Loaded<QuickEnqueued> out;
-        if (c == nullptr) {
-            out.error = error;
-            done(std::move(out));
-            return;
-        }
+    ask<QuickEnqueued>(std::move(done), [this, rule_set = std::move(rule_set)](pqxx::connection& c,
+                                                                               QuickEnqueued& out) {
         std::optional<std::string> code = take_room_code();
-        pqxx::work t(*c);
+        pqxx::work t(c);
         if (code) {
             // The oldest ticket of a live instance for the same mode, held by nobody else.
             const pqxx::result r = t.exec_params(
@@ -357,8 +351,7 @@ void PostgresDirectory::quick_enqueue(std::string rule_set, Answer<QuickEnqueued
                 rule_set, instance_id_, *code, public_url_);
             if (!r.empty()) {
                 t.commit();
-                out.value = QuickEnqueued{true, r[0][0].as<std::int64_t>(), *code};
-                done(std::move(out));
+                out = QuickEnqueued{true, r[0][0].as<std::int64_t>(), *code};
                 return;
             }
         }
@@ -374,32 +367,23 @@ void PostgresDirectory::quick_enqueue(std::string rule_set, Answer<QuickEnqueued
             const std::lock_guard lock(mutex_);
             ++tickets_waiting_;
         }
-        out.value = QuickEnqueued{false, mine[0][0].as<std::int64_t>(), {}};
-        done(std::move(out));
+        out = QuickEnqueued{false, mine[0][0].as<std::int64_t>(), {}};
     });
 }
 
 void PostgresDirectory::quick_withdraw(std::int64_t ticket, Answer<bool> done) {
-    post([this, ticket, done = std::move(done)](pqxx::connection* c,
-                                                const std::optional<StoreError>& error) {
-        Loaded<bool> out;
-        if (c == nullptr) {
-            out.error = error;
-            done(std::move(out));
-            return;
-        }
-        pqxx::work t(*c);
+    ask<bool>(std::move(done), [this, ticket](pqxx::connection& c, bool& out) {
+        pqxx::work t(c);
         const pqxx::result r = t.exec_params(
             "DELETE FROM quick_tickets WHERE ticket = $1 AND instance_id = $2 AND room_code IS "
             "NULL RETURNING ticket",
             ticket, instance_id_);
         t.commit();
-        out.value = !r.empty();
-        if (out.value) {
+        out = !r.empty();
+        if (out) {
             const std::lock_guard lock(mutex_);
             tickets_waiting_ -= std::min<std::size_t>(tickets_waiting_, 1);
         }
-        done(std::move(out));
     });
 }
 

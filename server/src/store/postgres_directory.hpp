@@ -54,6 +54,8 @@ public:
 private:
     using Job = std::function<void(pqxx::connection*, const std::optional<StoreError>&)>;
     void post(Job job);
+    // A request whose answer fill makes on the thread's connection; done gets it, or the error.
+    template <class T> void ask(Answer<T> done, std::function<void(pqxx::connection&, T&)> fill);
     void run();
     void maintain(); // pool refill, pairings, cleanup: on the thread, between jobs
     void refill_pool(pqxx::connection& c);
