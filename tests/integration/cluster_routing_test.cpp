@@ -12,6 +12,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <thread>
 
 namespace carrom::integration {
@@ -41,6 +42,17 @@ proto::Welcome say_hello(ManualClient& client, bool follows_redirects,
     hello.follows_redirects = follows_redirects;
     client.send(hello);
     return client.next<proto::Welcome>().value_or(proto::Welcome{});
+}
+
+// Milliseconds of the day of a log line "[YYYY-MM-DD HH:MM:SS.mmm] ..." (-1 if it has none).
+double log_time_ms(const std::string& line) {
+    const auto open = line.find('[');
+    int h = 0, m = 0, s = 0, ms = 0;
+    if (open == std::string::npos ||
+        std::sscanf(line.c_str() + open, "[%*d-%*d-%*d %d:%d:%d.%d]", &h, &m, &s, &ms) != 4) {
+        return -1.0;
+    }
+    return ((h * 60.0 + m) * 60.0 + s) * 1000.0 + ms;
 }
 
 class ClusterRouting : public ::testing::Test {
@@ -243,6 +255,15 @@ TEST_F(ClusterRouting, SigtermHandsTheMatchToTheOtherInstanceAndSendsItsPlayersT
     EXPECT_EQ(state->code, match.code);
     EXPECT_EQ(state->you, 0);
     EXPECT_TRUE(b->wait_log("handed over to this instance", std::chrono::steady_clock::now() + 1s));
+    // How long the hand-over took (docs/cluster.md, "Draining"): from a's SIGTERM to the match
+    // restored on b, by the two logs' clocks (one machine).
+    const auto signalled = a->wait_log("signal 15", std::chrono::steady_clock::now());
+    const auto restored =
+        b->wait_log("room " + match.code + " taken over", std::chrono::steady_clock::now());
+    ASSERT_TRUE(signalled && restored);
+    const double ms = log_time_ms(*restored) - log_time_ms(*signalled);
+    EXPECT_GT(ms, 0.0);
+    std::printf("match running on b %.0f ms after SIGTERM to a\n", ms);
 }
 
 } // namespace
