@@ -19,6 +19,12 @@ bool ScreenshotMode::due(const UnattendedFrame& frame) const {
         (game_over_ && !frame.at_end)) {
         return false;
     }
+    // The card between boards names the next board's colours once its room_state arrived (it
+    // follows the board_end event, possibly in a later frame).
+    const auto& summary = frame.model.view().board_summary;
+    if (board_summary_ && summary && frame.model.view().board_number <= summary->board) {
+        return false;
+    }
     return after_shots_ <= 0 || (frame.shots_seen >= after_shots_ && !frame.model.animating());
 }
 
