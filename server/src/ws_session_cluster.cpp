@@ -107,6 +107,7 @@ void WsSession::on_seat_located(const proto::Hello& hello,
     }
     // Taken over (or handed) to this instance meanwhile: the seat is here now.
     std::optional<PlayerRecord> record = core_.claim_restored_seat(*hello.resume_token);
+    bool say_bad_token = true;
     if (!record && !located.ok()) {
         fail(proto::code::kMatchMoving,
              "Your seat cannot be looked up now: the server's database does not answer. Try "
@@ -134,13 +135,8 @@ void WsSession::on_seat_located(const proto::Hello& hello,
                        "Your match in room " + where.room_code +
                            " ended while you were away; its result: /matches/" +
                            where.finished_match + ". You join as a new player.");
-            finish_hello(hello, std::nullopt, false);
-            for (const auto& message : deferred) {
-                handle(message);
-            }
-            return;
-        }
-        if (where.where == store::RoomLocation::Where::Moving) {
+            say_bad_token = false;
+        } else if (where.where == store::RoomLocation::Where::Moving) {
             fail(proto::code::kMatchMoving,
                  "Your seat's match (room " + where.room_code +
                      ") is moving to another server of this cluster; try again in a few "
@@ -149,7 +145,7 @@ void WsSession::on_seat_located(const proto::Hello& hello,
             return;
         }
     }
-    finish_hello(hello, std::move(record), true);
+    finish_hello(hello, std::move(record), say_bad_token);
     for (const auto& message : deferred) {
         handle(message);
     }
