@@ -196,14 +196,13 @@ Loaded<std::vector<RecoveredMatch>> PostgresCluster::claim(bool mine_too) {
         if (!owned.empty()) {
             // The claimed rooms' codes are this instance's now (docs/cluster.md, "Rooms across
             // the cluster").
-            std::string codes = "{";
+            std::vector<std::string> codes;
             for (const auto& [id, o] : owned) {
-                codes += (codes.size() > 1 ? "," : "") + o.room_code; // codes are [A-Z2-9]
+                codes.push_back(o.room_code);
             }
-            codes += "}";
             t.exec_params("INSERT INTO rooms (code, instance_id) SELECT unnest($1::text[]), $2 "
                           "ON CONFLICT (code) DO UPDATE SET instance_id = excluded.instance_id",
-                          codes, options_.instance_id);
+                          text_array(codes), options_.instance_id);
         }
         t.commit();
         for (auto& [id, o] : owned) {
@@ -252,18 +251,17 @@ void PostgresCluster::check_owned() {
     if (owned.empty()) {
         return;
     }
-    std::string ids = "{";
+    std::vector<std::string> ids;
     for (const auto& [id, o] : owned) {
-        ids += (ids.size() > 1 ? "," : "") + id; // ids are [0-9a-z]
+        ids.push_back(id);
     }
-    ids += "}";
     std::unordered_map<MatchId, std::pair<std::string, std::int64_t>> now;
     {
         pqxx::work t(connection());
         for (const auto& row :
              t.exec_params("SELECT id, coalesce(owner_instance, ''), owner_epoch FROM matches "
                            "WHERE id = ANY($1::text[])",
-                           ids)) {
+                           text_array(ids))) {
             now[row[0].as<std::string>()] = {row[1].as<std::string>(), row[2].as<std::int64_t>()};
         }
         t.commit();
@@ -408,9 +406,9 @@ Loaded<std::vector<HandedMatch>> PostgresCluster::hand_over() {
             lease_ok_ = false;
             return out;
         }
-        std::string ids = "{";
-        std::string to = "{";
-        std::string codes = "{";
+        std::vector<std::string> ids;
+        std::vector<std::string> codes;
+        std::vector<std::string> to;
         for (const auto& row :
              t.exec_params("SELECT id, room_code FROM matches WHERE owner_instance = $1 AND "
                            "finished_ms IS NULL ORDER BY created_ms FOR UPDATE",
@@ -422,23 +420,19 @@ Loaded<std::vector<HandedMatch>> PostgresCluster::hand_over() {
             ++target.owned;
             HandedMatch handed{row[0].as<std::string>(), row[1].as<std::string>(), target.id,
                                target.url};
-            const char* comma = out.value.empty() ? "" : ",";
-            ids += comma + handed.match; // ids are [0-9a-z], codes [A-Z2-9]
-            codes += comma + handed.room_code;
-            to += comma + std::string("\"") + target.id + "\""; // ids are [A-Za-z0-9._-]
+            ids.push_back(handed.match);
+            codes.push_back(handed.room_code);
+            to.push_back(target.id);
             out.value.push_back(std::move(handed));
         }
-        ids += "}";
-        to += "}";
-        codes += "}";
         if (!out.value.empty()) {
             t.exec_params("UPDATE matches m SET owner_instance = v.target, owner_epoch = "
                           "m.owner_epoch + 1, handed_over = true FROM unnest($1::text[], "
                           "$2::text[]) AS v(id, target) WHERE m.id = v.id",
-                          ids, to);
+                          text_array(ids), text_array(to));
             t.exec_params("UPDATE rooms r SET instance_id = v.target FROM unnest($1::text[], "
                           "$2::text[]) AS v(code, target) WHERE r.code = v.code",
-                          codes, to);
+                          text_array(codes), text_array(to));
             t.exec(std::string("NOTIFY ") + kWakeChannel);
         }
         t.commit();

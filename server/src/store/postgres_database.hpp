@@ -16,6 +16,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace carrom::store::postgres {
 
@@ -42,6 +43,9 @@ StoreError error_from(const std::exception& e, const std::string& shown, std::st
 // Validates the database without writing to it (another program's tables: store_foreign; a newer
 // schema: store_newer_schema), then applies the migrations it lacks in one transaction.
 std::optional<StoreError> prepare_database(pqxx::connection& c, const std::string& shown);
+
+// A text[] literal of items for a parameter ($1::text[]): each item quoted, `"` and `\` escaped.
+std::string text_array(const std::vector<std::string>& items);
 
 // Takes the one-server advisory lock on this session; false when another session holds it.
 bool try_lock(pqxx::connection& c);

@@ -191,16 +191,15 @@ void PostgresDirectory::refill_pool(pqxx::connection& c) {
             return;
         }
     }
-    std::string codes = "{";
+    std::vector<std::string> codes;
     for (std::size_t i = 0; i < kPoolSize; ++i) {
-        codes += (i > 0 ? "," : "") + random_code(); // codes are [A-Z2-9]
+        codes.push_back(random_code());
     }
-    codes += "}";
     pqxx::work t(c);
     const pqxx::result reserved =
         t.exec_params("INSERT INTO rooms (code, instance_id) SELECT unnest($1::text[]), $2 "
                       "ON CONFLICT (code) DO NOTHING RETURNING code",
-                      codes, instance_id_);
+                      text_array(codes), instance_id_);
     t.commit();
     const std::lock_guard lock(mutex_);
     for (const auto& row : reserved) {
