@@ -204,6 +204,33 @@ TEST_F(BotRunnerTest, ClosedConnectionIsAFailureUnlessDroppedOnPurpose) {
     EXPECT_EQ(runner_->summary().failure, "Could not reach x:1: connection refused.");
 }
 
+// The I/O thread queues a message before it marks the link closed; a redirect and its close
+// 4005 that land between a poll and the status are still a redirect, not a lost link.
+TEST_F(BotRunnerTest, ARedirectAndItsCloseLandingJustAfterAPollAreFollowed) {
+    BotConfig config;
+    config.url = "ws://127.0.0.1:9/";
+    config.mode = JoinMode::Join;
+    config.code = "ABCDEF";
+    start(config);
+    deliver(proto::Welcome{1, 7, std::string(32, 'f'), 0});
+    ASSERT_EQ(sent<proto::JoinRoom>().size(), 1U);
+    wire_.after_poll = [this] {
+        wire_.inbox.push_back(
+            proto::Redirect{"ws://127.0.0.1:9/i/carrom-2/", "room", "ABCDEF", proto::Role::Player});
+        wire_.status = {net::ConnectionState::Closed, "The server closed the connection.",
+                        proto::kCloseRedirected};
+    };
+    runner_->step(0ms);
+    EXPECT_FALSE(runner_->done()) << runner_->summary().failure;
+    runner_->step(0ms);
+    EXPECT_FALSE(runner_->done()) << runner_->summary().failure;
+    EXPECT_EQ(runner_->summary().redirects, 1);
+    EXPECT_EQ(wire_.opened, 2);
+    deliver(proto::Welcome{2, 7, std::string(32, 'e'), 0});
+    EXPECT_EQ(sent<proto::JoinRoom>().size(), 2U);
+    EXPECT_EQ(sent<proto::JoinRoom>().back().code, "ABCDEF");
+}
+
 TEST_F(BotRunnerTest, ResumeSendsTheTokenAndKeepsTheSeat) {
     start(BotConfig{});
     const std::string token(32, 'f');

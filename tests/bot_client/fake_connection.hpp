@@ -5,6 +5,8 @@
 #include "carrom/net/connection.hpp"
 
 #include <deque>
+#include <functional>
+#include <utility>
 #include <vector>
 
 namespace carrom::bots::fake {
@@ -16,6 +18,9 @@ struct FakeWire {
     net::ConnectionStatus status{net::ConnectionState::Open, "fake"};
     int opened = 0;
     bool refuse = false; // connections opened from now on are refused
+    // Runs once, just after the next poll: what the I/O thread receives between a poll and
+    // whatever the runner asks next.
+    std::function<void()> after_poll;
 };
 
 class FakeConnection final : public net::Connection {
@@ -26,6 +31,9 @@ public:
     std::vector<proto::ServerMessage> poll() override {
         std::vector<proto::ServerMessage> out(wire_.inbox.begin(), wire_.inbox.end());
         wire_.inbox.clear();
+        if (auto late = std::exchange(wire_.after_poll, nullptr)) {
+            late();
+        }
         return out;
     }
     bool wait(std::chrono::milliseconds) override { return !wire_.inbox.empty(); }

@@ -169,6 +169,8 @@ proto::Welcome ManualClient::hello(std::optional<std::string> token) {
 bool ManualClient::pull(std::chrono::steady_clock::time_point deadline) {
     while (std::chrono::steady_clock::now() < deadline) {
         connection_->wait(10ms);
+        // The status first: a link seen closed has every message it received in the inbox.
+        const bool closed = connection_->status().state == net::ConnectionState::Closed;
         auto messages = connection_->poll();
         if (!messages.empty()) {
             for (auto& m : messages) {
@@ -176,7 +178,7 @@ bool ManualClient::pull(std::chrono::steady_clock::time_point deadline) {
             }
             return true;
         }
-        if (connection_->status().state == net::ConnectionState::Closed) {
+        if (closed) {
             return false;
         }
     }
@@ -196,6 +198,9 @@ std::string ManualClient::wait_closed(std::chrono::milliseconds timeout) {
         for (auto& m : connection_->poll()) {
             history_.push_back(std::move(m));
         }
+    }
+    for (auto& m : connection_->poll()) { // what came just before the close
+        history_.push_back(std::move(m));
     }
     return connection_->status().detail;
 }

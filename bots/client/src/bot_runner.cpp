@@ -129,6 +129,9 @@ bool BotRunner::step(std::chrono::milliseconds wait) {
         return done();
     }
     connection_->wait(wait);
+    // The status first: a link seen closed has every message it received in the inbox (a
+    // redirect and the close 4005 after it can land between a poll and a later status).
+    const auto status = connection_->status();
     const net::Connection* polled = connection_.get();
     for (const auto& message : connection_->poll()) {
         if (on_message) {
@@ -140,8 +143,8 @@ bool BotRunner::step(std::chrono::milliseconds wait) {
         }
     }
     summary_.decode_errors = connection_->decode_errors();
-    const auto status = connection_->status();
-    if (!done() && !dropped_ && status.state == net::ConnectionState::Closed) {
+    if (!done() && !dropped_ && connection_.get() == polled &&
+        status.state == net::ConnectionState::Closed) {
         connection_lost(status);
     }
     return done();
