@@ -105,8 +105,9 @@ private:
     // Quick match of an identified player in singles: the rated queue, paired by rating.
     void handle_rated_quick_match(const proto::QuickMatch& quick);
     void arm_rated_tick(std::uint64_t generation);
-    // Pairs the closest acceptable two of rule_set's rated queue into a new rated room.
-    void try_rated_pair(proto::RuleSet rule_set);
+    // Pairs the closest acceptable two of rule_set's rated queue into a new rated room: true
+    // when this player was one of them (taken out of the queue).
+    bool try_rated_pair(proto::RuleSet rule_set);
     // The rated wait ran out: a bot (an unrated room), if still waiting.
     void on_rated_wait_over(proto::RuleSet rule_set);
     // A new room of `seats` seats with this player in seat 0, `others` (quick match) in the first
@@ -135,8 +136,13 @@ private:
     void on_seat_located(const proto::Hello& hello,
                          const store::Loaded<store::RoomLocation>& located);
     // Quick match across instances: a ticket in the cluster (singles, a client that follows
-    // redirects), withdrawn with the local wait.
+    // redirects; a rated player's with its rating), withdrawn with the local wait. A rated
+    // player's ticket is asked again at each rated tick (its acceptable gap widens).
     void enqueue_in_cluster(proto::RuleSet rule_set);
+    // A room of a pairing with a player of another instance, hosted here with this player in
+    // seat 0 (rated: a rated room); the partner's seat goes to a bot if it has not come when the
+    // quick-match wait is over (rated: this player leaves for a room against a bot).
+    void host_cluster_pairing(proto::RuleSet rule_set, const std::string& code, bool rated);
     void on_cluster_enqueued(std::uint64_t generation, proto::RuleSet rule_set,
                              const store::Loaded<store::QuickEnqueued>& enqueued);
     void withdraw_cluster_ticket();
@@ -163,6 +169,7 @@ private:
     asio::steady_timer rated_timer_; // rated quick match: try pairing again every second
     bool rated_waiting_ = false;     // in core_.rated_queue (quick_generation_ counts its waits)
     proto::RuleSet rated_rule_set_ = proto::RuleSet::Icf;
+    double rated_rating_ = 0.0; // points: the waiting rated player's rating in rated_rule_set_
     WriteQueue queue_;
     RateLimiter limiter_;
     std::atomic<bool> keyframe_request_{false};

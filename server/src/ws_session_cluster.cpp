@@ -153,19 +153,24 @@ void WsSession::on_seat_located(const proto::Hello& hello,
 
 void WsSession::enqueue_in_cluster(proto::RuleSet rule_set) {
     store::Cluster* cluster = core_.cluster();
-    if (cluster == nullptr || !follows_redirects_ || ticket_pending_ || ticket_ != 0) {
+    if (cluster == nullptr || !follows_redirects_ || ticket_pending_) {
         return; // a client that cannot follow a redirect waits for players of this instance
     }
+    store::QuickRequest request{std::string(proto::to_string(rule_set)), ticket_, std::nullopt};
+    if (rated_waiting_ && identity_) {
+        request.rated = store::RatedWait{rated_rating_, *identity_};
+    } else if (ticket_ != 0) {
+        return; // a guest's ticket waits as it is
+    }
     ticket_pending_ = true;
-    cluster->quick_enqueue(std::string(proto::to_string(rule_set)),
-                           [self = shared_from_this(), generation = ticket_generation_,
-                            rule_set](store::Loaded<store::QuickEnqueued> enqueued) {
-                               asio::post(
-                                   self->ws_.get_executor(),
-                                   [self, generation, rule_set, enqueued = std::move(enqueued)] {
-                                       self->on_cluster_enqueued(generation, rule_set, enqueued);
-                                   });
-                           });
+    cluster->quick_enqueue(
+        std::move(request), [self = shared_from_this(), generation = ticket_generation_,
+                             rule_set](store::Loaded<store::QuickEnqueued> enqueued) {
+            asio::post(self->ws_.get_executor(),
+                       [self, generation, rule_set, enqueued = std::move(enqueued)] {
+                           self->on_cluster_enqueued(generation, rule_set, enqueued);
+                       });
+        });
 }
 
 void WsSession::on_cluster_enqueued(std::uint64_t generation, proto::RuleSet rule_set,
@@ -186,8 +191,16 @@ void WsSession::on_cluster_enqueued(std::uint64_t generation, proto::RuleSet rul
         core_.tickets[ticket_] = weak_from_this();
         return;
     }
+    // Paired: this player's own ticket, if it had one, is gone with the pairing.
+    if (ticket_ != 0) {
+        const std::lock_guard lock(core_.tickets_mutex);
+        core_.tickets.erase(std::exchange(ticket_, 0));
+    }
     // A player of another instance is on the way to enqueued.room_code, to run here.
-    if (!waiting || !core_.registry.cancel_quick_match(player_id_)) {
+    const bool rated = rated_waiting_;
+    const bool taken_out = rated ? core_.rated_queue.remove(player_id_)
+                                 : core_.registry.cancel_quick_match(player_id_);
+    if (!waiting || !taken_out) {
         // Paired here meanwhile: that player finds no room (room_not_found) and asks again.
         if (store::Cluster* cluster = core_.cluster()) {
             cluster->release_room_code(enqueued.value.room_code);
@@ -195,31 +208,51 @@ void WsSession::on_cluster_enqueued(std::uint64_t generation, proto::RuleSet rul
         return;
     }
     stop_quick_match();
-    auto created = core_.create_room(rule_set, proto::RoomOptions{}, 2, false, false,
-                                     enqueued.value.room_code);
+    spdlog::info("room {}: {}quick match with a player of another instance (ticket {})",
+                 enqueued.value.room_code, rated ? "rated " : "", enqueued.value.ticket);
+    host_cluster_pairing(rule_set, enqueued.value.room_code, rated);
+}
+
+void WsSession::host_cluster_pairing(proto::RuleSet rule_set, const std::string& code, bool rated) {
+    auto created = core_.create_room(rule_set, proto::RoomOptions{}, 2, false, rated, code);
     if (auto* error = std::get_if<proto::Error>(&created)) {
         send_error(error->code, error->message);
         return;
     }
     auto room = std::get<std::shared_ptr<RoomActor>>(created);
-    spdlog::info("room {}: quick match with a player of another instance (ticket {})", room->code(),
-                 enqueued.value.ticket);
     enter_room(room, proto::Role::Player);
-    // The partner's seat goes to a bot if the partner has not come when the wait is over.
     const double wait_s = core_.settings.quick_match_bot_s;
     if (wait_s <= 0.0 || !core_.bots) {
         return;
     }
     partner_timer_.expires_after(to_duration(wait_s));
-    partner_timer_.async_wait([self = shared_from_this(), room](beast::error_code ec) {
-        if (ec) {
-            return;
-        }
-        const auto level = self->core_.settings.quick_match_bot_level;
-        room->post([brain = self->core_.bots(level), level](room::Room& r) {
-            (void)r.seat_bot(bot_seat_name(level, 1, 2), brain, 1); // refused once taken
+    partner_timer_.async_wait(
+        [self = shared_from_this(), room, rule_set, rated](beast::error_code ec) {
+            if (ec) {
+                return;
+            }
+            const auto level = self->core_.settings.quick_match_bot_level;
+            if (!rated) { // the partner's seat goes to a bot
+                room->post([brain = self->core_.bots(level), level](room::Room& r) {
+                    (void)r.seat_bot(bot_seat_name(level, 1, 2), brain, 1); // refused once taken
+                });
+                return;
+            }
+            // A rated room takes no bot: this player leaves it for a room against one.
+            room->post([self, room, rule_set, level](room::Room& r) {
+                if (r.phase() != proto::Phase::Waiting || r.seat_of(*self) != 0) {
+                    return; // the partner came (or this player left)
+                }
+                r.leave(*self);
+                asio::post(self->ws_.get_executor(), [self, room, rule_set, level] {
+                    if (self->room_ != room || self->ended_ || self->close_code_) {
+                        return;
+                    }
+                    self->room_.reset();
+                    self->enter_bot_room(rule_set, proto::RoomOptions{}, 2, level, {1});
+                });
+            });
         });
-    });
 }
 
 void WsSession::withdraw_cluster_ticket() {
@@ -243,9 +276,14 @@ void WsSession::on_quick_paired(store::QuickPairing pairing) {
             return;
         }
         self->ticket_ = 0; // consumed by the pairing instance
-        if (self->room_ || self->ended_ || self->close_code_ ||
-            !self->core_.registry.cancel_quick_match(self->player_id_)) {
-            return; // paired here or gone: the other room gives the seat to a bot
+        if (self->room_ || self->ended_ || self->close_code_) {
+            return; // paired here or gone: the other room's wait ends with a bot
+        }
+        const bool taken_out = self->rated_waiting_
+                                   ? self->core_.rated_queue.remove(self->player_id_)
+                                   : self->core_.registry.cancel_quick_match(self->player_id_);
+        if (!taken_out) {
+            return; // paired here meanwhile (its room is on its way)
         }
         self->stop_quick_match();
         self->redirect(proto::Redirect{pairing.room_url, "quick_match", pairing.room_code,

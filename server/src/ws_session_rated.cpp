@@ -114,10 +114,13 @@ void WsSession::handle_rated_quick_match(const proto::QuickMatch& quick) {
     if (added == RatedQueue::Added::Queued) {
         rated_waiting_ = true;
         rated_rule_set_ = quick.rule_set;
+        rated_rating_ = rating;
         arm_quick_match_wait(quick.rule_set, 2);
         arm_rated_tick(quick_generation_);
     }
-    try_rated_pair(quick.rule_set);
+    if (!try_rated_pair(quick.rule_set) && rated_waiting_) {
+        enqueue_in_cluster(quick.rule_set); // in a cluster: a player of another instance
+    }
 }
 
 void WsSession::arm_rated_tick(std::uint64_t generation) {
@@ -126,20 +129,20 @@ void WsSession::arm_rated_tick(std::uint64_t generation) {
         if (ec || !self->rated_waiting_ || generation != self->quick_generation_) {
             return;
         }
-        self->try_rated_pair(self->rated_rule_set_);
-        if (self->rated_waiting_) {
+        if (!self->try_rated_pair(self->rated_rule_set_) && self->rated_waiting_) {
+            self->enqueue_in_cluster(self->rated_rule_set_); // the gap has widened
             self->arm_rated_tick(generation);
         }
     });
 }
 
-void WsSession::try_rated_pair(proto::RuleSet rule_set) {
+bool WsSession::try_rated_pair(proto::RuleSet rule_set) {
     if (core_.store_refusal()) {
-        return; // no match could start: both wait on (at the wait's end, store_unavailable)
+        return false; // no match could start: both wait on (at the wait's end, store_unavailable)
     }
     auto pair = core_.rated_queue.pair(rule_set, core_.clock.now_ms());
     if (!pair) {
-        return;
+        return false;
     }
     auto first = pair->first.lock();
     auto second = pair->second.lock();
@@ -155,17 +158,19 @@ void WsSession::try_rated_pair(proto::RuleSet rule_set) {
                 });
             }
         }
-        return;
+        return first.get() == this || second.get() == this;
     }
+    const bool mine = first.get() == this || second.get() == this;
     auto created = core_.create_room(rule_set, proto::RoomOptions{}, 2, false, true);
     if (auto* error = std::get_if<proto::Error>(&created)) {
         send_error(error->code, error->message);
-        return;
+        return mine;
     }
     auto room = std::get<std::shared_ptr<RoomActor>>(created);
     spdlog::debug("room {}: rated quick match", room->code());
     first->assign_room(room);
     second->assign_room(room);
+    return mine;
 }
 
 void WsSession::on_rated_wait_over(proto::RuleSet rule_set) {

@@ -122,9 +122,11 @@ protected:
     }
 
     // A bot at url: create (a one-board ICF room with a 4 s shot clock), join or spectate code,
-    // or quick match. Its connections go where its config says (redirects move it).
+    // or quick match (with a player key: rated). Its connections go where its config says
+    // (redirects move it).
     FrontBot& add_bot(const std::string& at, bots::JoinMode mode, const std::string& name,
-                      const std::string& code = {}) {
+                      const std::string& code = {},
+                      std::optional<std::string> identity = std::nullopt) {
         FrontBot bot;
         bot.name = name;
         bot.strategy = test_strategy("sampling", 100 + bots_.size());
@@ -138,6 +140,7 @@ protected:
         config.create.options.boards = 1;
         config.create.options.shot_clock_s = 4.0;
         config.reconnect.give_up_after_s = 60.0;
+        config.identity = std::move(identity);
         bot.runner = std::make_unique<bots::BotRunner>(config, *bot.strategy);
         bot.runner->on_message = [this](const proto::ServerMessage& m) {
             if (std::holds_alternative<proto::ShotResult>(m)) {
@@ -332,6 +335,16 @@ TEST_F(ClusterFront, TwentyMatchesAndAQuickMatchSurviveAnInstanceKilledWhileShot
         10s);
     EXPECT_EQ(quick1.summary().room_code, quick2.summary().room_code);
     EXPECT_EQ(quick1.summary().redirects + quick2.summary().redirects, 1);
+    // So are two identified players: a rated match, rated once whatever happens to its instance.
+    add_bot(front + "i/carrom-2/", bots::JoinMode::Quick, "rated1", {}, std::string(64, 'a'));
+    run([] { return false; }, 1s);
+    add_bot(front + "i/carrom-1/", bots::JoinMode::Quick, "rated2", {}, std::string(64, 'b'));
+    const bots::BotRunner& rated1 = *bots_[bots_.size() - 2].runner;
+    const bots::BotRunner& rated2 = *bots_.back().runner;
+    run([&] { return !rated1.summary().room_code.empty() && !rated2.summary().room_code.empty(); },
+        10s);
+    EXPECT_EQ(rated1.summary().room_code, rated2.summary().room_code);
+    EXPECT_EQ(rated1.summary().redirects + rated2.summary().redirects, 1);
     run([&] { return shots >= 40; }, 60s);
     ASSERT_GE(shots, 40) << log_of_all();
 
@@ -356,6 +369,7 @@ TEST_F(ClusterFront, TwentyMatchesAndAQuickMatchSurviveAnInstanceKilledWhileShot
     // A spectator's place is not kept when its match's instance dies (only seats are stored):
     // the spectators of the killed instance's matches may end there.
     expect_all_finished_and_stored();
+    EXPECT_EQ(postgres.sql(database, "SELECT count(*) FROM rating_changes").out, "2\n");
     if (HasFailure()) {
         std::fprintf(stderr, "instances:\n%s", log_of_all().c_str());
     }

@@ -21,8 +21,9 @@ namespace {
 using namespace std::chrono_literals;
 
 // Instance `id` of the cluster on data, at ws://127.0.0.1:PORT (its --public-url), 2 s lease.
-std::unique_ptr<test_support::ServerProcess> start_routed_instance(const std::string& data,
-                                                                   const std::string& id) {
+std::unique_ptr<test_support::ServerProcess>
+start_routed_instance(const std::string& data, const std::string& id,
+                      const std::vector<std::string>& more_args = {}) {
     test_support::ServerProcess::Options options;
     options.program = CARROM_SERVER_PATH;
     options.data = data;
@@ -31,6 +32,7 @@ std::unique_ptr<test_support::ServerProcess> start_routed_instance(const std::st
                     "--lease",       "2",
                     "--public-url",  "ws://127.0.0.1:" + std::to_string(options.port),
                     "--log-level",   "info"};
+    options.args.insert(options.args.end(), more_args.begin(), more_args.end());
     return std::make_unique<test_support::ServerProcess>(options);
 }
 
@@ -220,6 +222,128 @@ TEST_F(ClusterRouting, QuickMatchPairsPlayersWaitingOnTwoInstances) {
     EXPECT_EQ(seated->you, 1);
     EXPECT_TRUE(moved.next_event<proto::TurnEvent>().has_value());
     EXPECT_EQ(query("SELECT count(*) FROM quick_tickets"), "0\n");
+}
+
+// hello with a player key (follows redirects) and its welcome.
+proto::Welcome say_hello_as(ManualClient& client, const std::string& name, const std::string& key) {
+    proto::Hello hello{proto::kProtocolVersion, name, std::nullopt, key, true};
+    client.send(hello);
+    return client.next<proto::Welcome>().value_or(proto::Welcome{});
+}
+
+TEST_F(ClusterRouting, RatedQuickMatchPairsIdentifiedPlayersOfTwoInstancesNeverAKeyWithItself) {
+    const std::string key1(64, 'a');
+    const std::string key2(64, 'b');
+    ManualClient first(a->url(), "first");
+    say_hello_as(first, "first", key1);
+    first.send(proto::QuickMatch{});
+    const auto tickets = [&](const std::string& want) {
+        for (int i = 0; i < 50 && query("SELECT count(*) FROM quick_tickets") != want; ++i) {
+            std::this_thread::sleep_for(50ms);
+        }
+        return query("SELECT instance_id, rule_set, rating, room_code IS NULL FROM quick_tickets "
+                     "ORDER BY ticket");
+    };
+    ASSERT_EQ(tickets("1\n"), "a|icf|1500|t\n");
+
+    // The same key on the other instance waits there; it is never paired with itself.
+    {
+        ManualClient again(b->url(), "first");
+        say_hello_as(again, "first", key1);
+        again.send(proto::QuickMatch{});
+        ASSERT_EQ(tickets("2\n"), "a|icf|1500|t\nb|icf|1500|t\n");
+        std::this_thread::sleep_for(1500ms); // a rated ticket is asked again every second
+        EXPECT_EQ(query("SELECT count(*) FROM quick_tickets WHERE room_code IS NULL"), "2\n");
+    }
+    ASSERT_EQ(tickets("1\n"), "a|icf|1500|t\n"); // withdrawn as its connection ended
+
+    ManualClient second(b->url(), "second");
+    say_hello_as(second, "second", key2);
+    second.send(proto::QuickMatch{});
+    const auto hosted = second.next<proto::RoomState>();
+    ASSERT_TRUE(hosted.has_value());
+    EXPECT_EQ(hosted->you, 0);
+    EXPECT_FALSE(hosted->aim_assist); // a rated room
+    const auto redirect = first.next<proto::Redirect>(5s);
+    ASSERT_TRUE(redirect.has_value());
+    EXPECT_EQ(*redirect,
+              (proto::Redirect{b->url(), "quick_match", hosted->code, proto::Role::Player}));
+    ManualClient moved(redirect->url, "first");
+    say_hello_as(moved, "first", key1);
+    moved.send(proto::JoinRoom{redirect->code, redirect->as});
+    const auto seated = moved.next<proto::RoomState>();
+    ASSERT_TRUE(seated.has_value());
+    EXPECT_EQ(seated->you, 1);
+    EXPECT_TRUE(moved.next_event<proto::TurnEvent>().has_value());
+    EXPECT_EQ(query("SELECT count(*) FROM quick_tickets"), "0\n");
+}
+
+TEST_F(ClusterRouting, ARatedHostWhosePartnerNeverComesLeavesForARoomAgainstABot) {
+    auto c = start_routed_instance(url, "c", {"--quick-match-bot", "2"});
+    ASSERT_NE(c->port(), 0) << c->log();
+    ManualClient first(a->url(), "first");
+    say_hello_as(first, "first", std::string(64, 'a'));
+    first.send(proto::QuickMatch{});
+    for (int i = 0; i < 50 && query("SELECT count(*) FROM quick_tickets") != "1\n"; ++i) {
+        std::this_thread::sleep_for(50ms);
+    }
+    ManualClient host(c->url(), "host");
+    say_hello_as(host, "host", std::string(64, 'b'));
+    host.send(proto::QuickMatch{});
+    const auto rated = host.next<proto::RoomState>();
+    ASSERT_TRUE(rated.has_value());
+    EXPECT_FALSE(rated->aim_assist);
+    ASSERT_TRUE(first.next<proto::Redirect>(5s).has_value()); // and it never goes there
+    // The wait (2 s on c) is over: a room against a bot, unrated, this player in seat 0.
+    const auto against_bot = host.next<proto::RoomState>(5s);
+    ASSERT_TRUE(against_bot.has_value()) << c->log();
+    EXPECT_NE(against_bot->code, rated->code);
+    EXPECT_TRUE(against_bot->aim_assist);
+    EXPECT_EQ(against_bot->you, 0);
+    EXPECT_TRUE(host.next_event<proto::TurnEvent>().has_value()); // the bot is seated: play
+    // The rated room closed with nobody in it: its code is free again.
+    for (int i = 0;
+         i < 50 && query("SELECT count(*) FROM rooms WHERE code = '" + rated->code + "'") != "0\n";
+         ++i) {
+        std::this_thread::sleep_for(100ms);
+    }
+    EXPECT_EQ(query("SELECT count(*) FROM rooms WHERE code = '" + rated->code + "'"), "0\n");
+}
+
+TEST_F(ClusterRouting, RatedPlayersOfTwoInstancesTooFarApartWaitAndGuestsDoNotTakeTheirTickets) {
+    const std::string strong(64, 'c');
+    {
+        // A known player rated 2300 in icf.
+        ManualClient once(a->url(), "strong");
+        say_hello_as(once, "strong", strong);
+        for (int i = 0; i < 50 && query("SELECT count(*) FROM identities") != "1\n"; ++i) {
+            std::this_thread::sleep_for(50ms);
+        }
+        query("INSERT INTO ratings SELECT key_sha256, 'icf', 2300, 60, 0.06, 30, 20, 10, 0, 0 "
+              "FROM identities");
+    }
+    ManualClient first(a->url(), "strong");
+    say_hello_as(first, "strong", strong);
+    first.send(proto::QuickMatch{});
+    for (int i = 0; i < 50 && query("SELECT count(*) FROM quick_tickets") != "1\n"; ++i) {
+        std::this_thread::sleep_for(50ms);
+    }
+    ASSERT_EQ(query("SELECT instance_id, rating FROM quick_tickets"), "a|2300\n");
+
+    // 800 points apart: not within the gap (100 points and 25 more per second waited).
+    ManualClient newcomer(b->url(), "newcomer");
+    say_hello_as(newcomer, "newcomer", std::string(64, 'd'));
+    newcomer.send(proto::QuickMatch{});
+    // A guest waits for guests: a rated ticket is not its partner either.
+    ManualClient guest(b->url(), "guest");
+    say_hello(guest, true, std::nullopt, "guest");
+    guest.send(proto::QuickMatch{});
+    std::this_thread::sleep_for(2s);
+    EXPECT_EQ(
+        query("SELECT instance_id, rating FROM quick_tickets ORDER BY rating DESC NULLS LAST"),
+        "a|2300\nb|1500\nb|\n");
+    EXPECT_FALSE(first.next<proto::Redirect>(100ms).has_value());
+    EXPECT_FALSE(newcomer.next<proto::RoomState>(100ms).has_value());
 }
 
 TEST_F(ClusterRouting, SigtermHandsTheMatchToTheOtherInstanceAndSendsItsPlayersThere) {

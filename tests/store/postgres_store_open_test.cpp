@@ -45,7 +45,7 @@ TEST(PostgresStoreOpen, ANewDatabaseGetsTheSchemaWithTheClusterColumnsAndInstanc
     const std::string database = test::postgres_server().create_database();
     ASSERT_NO_FATAL_FAILURE(store_one_match(database));
     EXPECT_EQ(query(database, "SELECT application, version FROM carrom_schema"),
-              "carrom-match-store|4\n");
+              "carrom-match-store|5\n");
     EXPECT_EQ(query(database, "SELECT table_name FROM information_schema.tables WHERE "
                               "table_schema = 'public' ORDER BY table_name"),
               "carrom_schema\nentries\nidentities\ninstances\nmatches\nplayers\nquick_tickets\n"
@@ -57,7 +57,7 @@ TEST(PostgresStoreOpen, ANewDatabaseGetsTheSchemaWithTheClusterColumnsAndInstanc
 TEST(PostgresStoreOpen, ASchemaOneDatabaseGetsTheRatingsAndClusterTablesAndKeepsItsMatches) {
     const std::string database = test::postgres_server().create_database();
     ASSERT_NO_FATAL_FAILURE(store_one_match(database));
-    // Back to schema 1: without migration 2's, 3's and 4's tables.
+    // Back to schema 1: without migration 2's, 3's, 4's and 5's tables.
     query(database, "DROP TABLE rating_changes, rated_seats, ratings, identities, instances, "
                     "rooms, quick_tickets; DROP INDEX matches_owner, matches_open_room, "
                     "seat_tokens_hash; ALTER TABLE matches DROP COLUMN handed_over; "
@@ -65,7 +65,7 @@ TEST(PostgresStoreOpen, ASchemaOneDatabaseGetsTheRatingsAndClusterTablesAndKeeps
     auto opened =
         PostgresMatchStore::open(test::postgres_server().url(database), test::fast_options());
     ASSERT_NE(opened.store, nullptr) << opened.error->message;
-    EXPECT_EQ(query(database, "SELECT version FROM carrom_schema"), "4\n");
+    EXPECT_EQ(query(database, "SELECT version FROM carrom_schema"), "5\n");
     EXPECT_EQ(query(database, "SELECT count(*) FROM information_schema.tables WHERE "
                               "table_schema = 'public' AND table_name IN ('identities', "
                               "'ratings', 'rated_seats', 'rating_changes', 'instances', 'rooms', "

@@ -13,6 +13,7 @@
 #include <chrono>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -59,6 +60,22 @@ struct HandedMatch {
     std::string room_code;
     std::string instance_id; // the instance that runs it now
     std::string public_url;
+};
+
+// A rated player's wait (docs/ratings.md, "Fair pairing"; docs/cluster.md, "Quick match across
+// instances"): its ticket pairs only with rated tickets whose rating is within the acceptable gap
+// of the one who has waited longer (ratings::acceptable_gap, the waits by the database's clock),
+// never with a ticket of the same player key.
+struct RatedWait {
+    double rating = 0.0; // points, in the rule set asked for
+    PlayerKeyHash key_hash{};
+};
+
+// A quick-match request of one waiting player (singles).
+struct QuickRequest {
+    std::string rule_set;
+    std::int64_t ticket = 0;        // this instance's ticket of the player, when it asks again
+    std::optional<RatedWait> rated; // none: a guest, paired with guests' tickets only
 };
 
 struct QuickEnqueued {
@@ -108,10 +125,13 @@ public:
 
     // --- quick match across instances -----------------------------------------------------------
     // A player of this instance waits for a quick match (singles of rule_set) and no player of
-    // this instance does: pairs it with the oldest ticket of another instance (that ticket gets
-    // a room code reserved here and this instance's URL: its player comes here) or, when none
-    // waits, leaves a ticket of this instance.
-    virtual void quick_enqueue(std::string rule_set, Answer<QuickEnqueued> done) = 0;
+    // this instance does: pairs it with a ticket of another instance (a guest: the oldest guest's;
+    // a rated player: the closest acceptable rating, then the oldest) that gets a room code
+    // reserved here and this instance's URL (its player comes here), or, when none is there,
+    // leaves a ticket of this instance. Asked again with the player's ticket (a rated player,
+    // whose acceptable gap widens as it waits), it pairs or leaves that ticket as it is; a ticket
+    // paired or withdrawn meanwhile is answered unpaired (a pairing comes through on_paired).
+    virtual void quick_enqueue(QuickRequest request, Answer<QuickEnqueued> done) = 0;
     // Withdraws this instance's ticket; the answer is true when it was withdrawn, false when an
     // instance paired it meanwhile (its pairing comes through on_paired).
     virtual void quick_withdraw(std::int64_t ticket, Answer<bool> done) = 0;

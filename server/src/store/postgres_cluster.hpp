@@ -81,8 +81,8 @@ public:
     void locate_seat(TokenHash token, Answer<RoomLocation> done) override {
         directory_.locate_seat(token, std::move(done));
     }
-    void quick_enqueue(std::string rule_set, Answer<QuickEnqueued> done) override {
-        directory_.quick_enqueue(std::move(rule_set), std::move(done));
+    void quick_enqueue(QuickRequest request, Answer<QuickEnqueued> done) override {
+        directory_.quick_enqueue(std::move(request), std::move(done));
     }
     void quick_withdraw(std::int64_t ticket, Answer<bool> done) override {
         directory_.quick_withdraw(ticket, std::move(done));

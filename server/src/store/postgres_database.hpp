@@ -21,7 +21,7 @@
 namespace carrom::store::postgres {
 
 // carrom_schema.version: the schema this build writes. A database with a larger one is refused.
-inline constexpr int kSchemaVersion = 4;
+inline constexpr int kSchemaVersion = 5;
 // carrom_schema.application: the mark of a carrom match store.
 inline constexpr std::string_view kApplication = "carrom-match-store";
 // The session-level advisory lock (pg_try_advisory_lock) a single-instance server holds on its

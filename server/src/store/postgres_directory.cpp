@@ -3,11 +3,15 @@
 #include "store/postgres_database.hpp"
 
 #include "carrom/proto/limits.hpp"
+#include "carrom/ratings/rating_window.hpp"
+#include "store/sha256.hpp"
 
 #include <pqxx/pqxx>
 #include <spdlog/spdlog.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <stdexcept>
 
 namespace carrom::store::postgres {
@@ -30,6 +34,41 @@ constexpr const char* kDeadRoomCondition =
 
 StoreError busy() {
     return StoreError{"store_busy", "the cluster directory has too many requests waiting"};
+}
+
+// quick_enqueue's partner for request (of instance_id, whose ticket has waited waited_s) among
+// the other live instances' tickets, locked (FOR UPDATE): its ticket, or 0.
+std::int64_t find_partner(pqxx::work& t, const QuickRequest& request,
+                          const std::string& instance_id, double waited_s) {
+    if (!request.rated) {
+        // The oldest guest's ticket of a live instance for the same rule set.
+        const pqxx::result r = t.exec_params(
+            "SELECT q.ticket FROM quick_tickets q JOIN instances i ON i.id = q.instance_id WHERE "
+            "q.rule_set = $1 AND q.instance_id <> $2 AND q.room_code IS NULL AND q.rating IS "
+            "NULL AND i.lease_expires > now() ORDER BY q.since, q.ticket LIMIT 1 FOR UPDATE OF q "
+            "SKIP LOCKED",
+            request.rule_set, instance_id);
+        return r.empty() ? 0 : r[0][0].as<std::int64_t>();
+    }
+    // Rated: the closest rating within the acceptable gap of the longer wait, then the oldest.
+    const pqxx::result r = t.exec_params(
+        "SELECT q.ticket, q.rating, extract(epoch FROM now() - q.since)::float8 FROM "
+        "quick_tickets q JOIN instances i ON i.id = q.instance_id WHERE q.rule_set = $1 AND "
+        "q.instance_id <> $2 AND q.room_code IS NULL AND q.rating IS NOT NULL AND q.key_sha256 "
+        "<> decode($3, 'hex') AND i.lease_expires > now() ORDER BY q.since, q.ticket FOR UPDATE "
+        "OF q SKIP LOCKED",
+        request.rule_set, instance_id, to_hex(request.rated->key_hash));
+    std::int64_t best = 0;
+    double best_gap = 0.0;
+    for (const auto& row : r) {
+        const double gap = std::abs(row[1].as<double>() - request.rated->rating);
+        const double acceptable = ratings::acceptable_gap(std::max(waited_s, row[2].as<double>()));
+        if (gap <= acceptable && (best == 0 || gap < best_gap)) {
+            best = row[0].as<std::int64_t>();
+            best_gap = gap;
+        }
+    }
+    return best;
 }
 
 } // namespace
@@ -334,34 +373,64 @@ void PostgresDirectory::locate_seat(TokenHash token, Answer<RoomLocation> done) 
     });
 }
 
-void PostgresDirectory::quick_enqueue(std::string rule_set, Answer<QuickEnqueued> done) {
-    ask<QuickEnqueued>(std::move(done), [this, rule_set = std::move(rule_set)](pqxx::connection& c,
-                                                                               QuickEnqueued& out) {
+void PostgresDirectory::quick_enqueue(QuickRequest request, Answer<QuickEnqueued> done) {
+    ask<QuickEnqueued>(std::move(done), [this, request = std::move(request)](pqxx::connection& c,
+                                                                             QuickEnqueued& out) {
         std::optional<std::string> code = take_room_code();
+        const auto unused_code = [&] {
+            if (code) {
+                const std::lock_guard lock(mutex_);
+                pool_.push_back(std::move(*code)); // not used: still reserved for this instance
+            }
+        };
         pqxx::work t(c);
-        if (code) {
-            // The oldest ticket of a live instance for the same mode, held by nobody else.
-            const pqxx::result r = t.exec_params(
-                "UPDATE quick_tickets SET room_code = $3, room_url = $4 WHERE ticket = (SELECT "
-                "q.ticket FROM quick_tickets q JOIN instances i ON i.id = q.instance_id WHERE "
-                "q.rule_set = $1 AND q.instance_id <> $2 AND q.room_code IS NULL AND "
-                "i.lease_expires > now() ORDER BY q.since, q.ticket LIMIT 1 FOR UPDATE OF q SKIP "
-                "LOCKED) RETURNING ticket",
-                rule_set, instance_id_, *code, public_url_);
-            if (!r.empty()) {
+        double waited_s = 0.0;
+        if (request.ticket != 0) {
+            // Asked again: the player's ticket, if it still waits (else paired or withdrawn).
+            const pqxx::result mine = t.exec_params(
+                "SELECT extract(epoch FROM now() - since)::float8 FROM quick_tickets WHERE ticket "
+                "= $1 AND instance_id = $2 AND room_code IS NULL FOR UPDATE",
+                request.ticket, instance_id_);
+            if (mine.empty()) {
                 t.commit();
-                out = QuickEnqueued{true, r[0][0].as<std::int64_t>(), *code};
+                unused_code();
+                out = QuickEnqueued{false, request.ticket, {}};
                 return;
             }
+            waited_s = mine[0][0].as<double>();
         }
-        const pqxx::result mine = t.exec_params(
-            "INSERT INTO quick_tickets (instance_id, rule_set) VALUES ($1, $2) RETURNING ticket",
-            instance_id_, rule_set);
+        const std::int64_t partner = code ? find_partner(t, request, instance_id_, waited_s) : 0;
+        if (partner != 0) {
+            t.exec_params(
+                "UPDATE quick_tickets SET room_code = $2, room_url = $3 WHERE ticket = $1", partner,
+                *code, public_url_);
+            if (request.ticket != 0) {
+                t.exec_params("DELETE FROM quick_tickets WHERE ticket = $1", request.ticket);
+            }
+            t.commit();
+            if (request.ticket != 0) {
+                const std::lock_guard lock(mutex_);
+                tickets_waiting_ -= std::min<std::size_t>(tickets_waiting_, 1);
+            }
+            out = QuickEnqueued{true, partner, *code};
+            return;
+        }
+        if (request.ticket != 0) {
+            t.commit();
+            unused_code();
+            out = QuickEnqueued{false, request.ticket, {}};
+            return;
+        }
+        const std::optional<double> rating =
+            request.rated ? std::optional(request.rated->rating) : std::nullopt;
+        const std::optional<std::string> key =
+            request.rated ? std::optional(to_hex(request.rated->key_hash)) : std::nullopt;
+        const pqxx::result mine =
+            t.exec_params("INSERT INTO quick_tickets (instance_id, rule_set, rating, key_sha256) "
+                          "VALUES ($1, $2, $3, decode($4, 'hex')) RETURNING ticket",
+                          instance_id_, request.rule_set, rating, key);
         t.commit();
-        if (code) {
-            const std::lock_guard lock(mutex_);
-            pool_.push_back(std::move(*code)); // not used: still reserved for this instance
-        }
+        unused_code();
         {
             const std::lock_guard lock(mutex_);
             ++tickets_waiting_;

@@ -48,7 +48,7 @@ public:
     void release_room_code(const std::string& code);
     void locate_room(std::string code, Answer<RoomLocation> done);
     void locate_seat(TokenHash token, Answer<RoomLocation> done);
-    void quick_enqueue(std::string rule_set, Answer<QuickEnqueued> done);
+    void quick_enqueue(QuickRequest request, Answer<QuickEnqueued> done);
     void quick_withdraw(std::int64_t ticket, Answer<bool> done);
 
 private:
