@@ -303,8 +303,12 @@ bool ClientSession::handle(const proto::ServerMessage& m) {
         return false;
     }
     if (const auto* error = std::get_if<proto::Error>(&m)) {
+        // The resume after a redirect that named its room finds no seat (a room whose match had
+        // not begun keeps none): the session joins the room instead; nothing for the player.
+        const bool joins_instead =
+            error->code == proto::code::kBadToken && core_.resuming() && !core_.join_code().empty();
         apply(core_.error(error->code));
-        return true;
+        return !joins_instead;
     }
     if (const auto* redirect = std::get_if<proto::Redirect>(&m)) {
         apply(core_.redirect(*redirect));

@@ -255,6 +255,13 @@ bool Room::abandoned() const {
     return !human_seated && spectators_.empty();
 }
 
+bool Room::waiting_for_players() const {
+    const bool bot_seated = std::any_of(seats_.begin(), seats_.end(), [](const SeatSlot& s) {
+        return s.occupied && s.bot != nullptr;
+    });
+    return !started_ && !bot_seated && !abandoned();
+}
+
 // --- messages ---------------------------------------------------------------------------------
 
 void Room::close_connections(int close_code, const std::string& reason) {

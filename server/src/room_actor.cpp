@@ -1,10 +1,12 @@
 #include "room_actor.hpp"
 
 #include "server_core.hpp"
+#include "waiting_room.hpp"
 
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
+#include <utility>
 
 namespace carrom::server {
 
@@ -78,14 +80,40 @@ void RoomActor::restore_on_strand(proto::MatchJournal journal,
     });
 }
 
-std::future<void> RoomActor::freeze() {
-    auto frozen = std::make_shared<std::promise<void>>();
-    auto future = frozen->get_future();
-    asio::post(strand_, [self = shared_from_this(), frozen] {
-        self->lost_ = true;
+std::future<void> RoomActor::settled() {
+    auto done = std::make_shared<std::promise<void>>();
+    auto future = done->get_future();
+    asio::post(strand_, [done] { done->set_value(); });
+    return future;
+}
+
+void RoomActor::remove_if_nobody_came(std::chrono::milliseconds wait) {
+    auto timer = std::make_shared<asio::steady_timer>(strand_, wait);
+    timer->async_wait([self = shared_from_this(), timer](const boost::system::error_code& ec) {
+        if (ec || self->lost_ || self->removed_ || !self->room_.abandoned()) {
+            return;
+        }
+        spdlog::info("room {}: nobody came back to it", self->code_);
         self->removed_ = true;
         self->timer_.cancel();
-        frozen->set_value();
+        self->core_.remove_room(self->code_);
+    });
+}
+
+std::future<std::optional<store::WaitingRoom>> RoomActor::freeze() {
+    auto frozen = std::make_shared<std::promise<std::optional<store::WaitingRoom>>>();
+    auto future = frozen->get_future();
+    asio::post(strand_, [self = shared_from_this(), frozen] {
+        const bool was_lost = std::exchange(self->lost_, true);
+        self->removed_ = true;
+        self->timer_.cancel();
+        std::optional<store::WaitingRoom> waiting;
+        if (!was_lost && self->room_.waiting_for_players()) {
+            const room::RoomConfig& config = self->room_.config();
+            waiting = store::WaitingRoom{
+                self->code_, describe_waiting_room({config.rule_set, config.rules, self->rated()})};
+        }
+        frozen->set_value(std::move(waiting));
     });
     return future;
 }

@@ -4,6 +4,7 @@
 
 #include "asio_types.hpp"
 #include "room_logger.hpp"
+#include "store/cluster.hpp"
 #include "store_journal.hpp"
 
 #include "carrom/room/room.hpp"
@@ -13,6 +14,7 @@
 #include <boost/asio/strand.hpp>
 
 #include <atomic>
+#include <chrono>
 #include <cstdint>
 #include <functional>
 #include <future>
@@ -60,8 +62,16 @@ public:
     void lose();
     // A draining instance hands the match to another (docs/cluster.md, "Draining"): from now on
     // the room takes nothing, as after lose(), but keeps its connections (the server tells
-    // them where to go). The future is ready once the room is frozen on its strand.
-    std::future<void> freeze();
+    // them where to go). The future is ready once the room is frozen on its strand: with the
+    // room's description when it waits for its players (Room::waiting_for_players), for the
+    // new instance to open it again.
+    std::future<std::optional<store::WaitingRoom>> freeze();
+    // Ready once everything queued on the room's strand before it has run (Server::shutdown:
+    // what the rooms send their members is on its way before the members are told to go).
+    std::future<void> settled();
+    // A room opened with nobody in it (handed over while it waited for its players): removed
+    // after `wait` unless somebody is in it then. Any thread.
+    void remove_if_nobody_came(std::chrono::milliseconds wait);
     // With a match store: the journal's write confirmations go to the room on its strand. Called
     // once, right after construction (it needs the actor's shared_ptr).
     void bind_journal();

@@ -90,6 +90,9 @@ void Server::start() {
                 // On the directory's thread, which Server::shutdown stops first.
                 [&core](std::vector<store::QuickPairing> pairings) {
                     core.quick_paired(std::move(pairings));
+                },
+                [&core](std::vector<store::WaitingRoom> rooms) {
+                    core.open_handed_rooms(std::move(rooms));
                 }});
         }
     }
@@ -110,17 +113,22 @@ using UrlByRoom = std::unordered_map<std::string, std::string>;
 // was handed over (no live instance, or the database does not answer: the matches are claimed as
 // orphans once the lease ends).
 std::shared_ptr<const UrlByRoom> drain(ServerCore& core) {
-    std::vector<std::future<void>> frozen;
+    std::vector<std::future<std::optional<store::WaitingRoom>>> frozen;
     core.registry.for_each_room(
         [&](const std::shared_ptr<RoomActor>& room) { frozen.push_back(room->freeze()); });
+    std::vector<store::WaitingRoom> waiting; // rooms waiting for their players go along
     for (auto& f : frozen) {
-        (void)f.wait_for(std::chrono::seconds(2));
+        if (f.wait_for(std::chrono::seconds(2)) == std::future_status::ready) {
+            if (auto room = f.get()) {
+                waiting.push_back(std::move(*room));
+            }
+        }
     }
     if (!core.store->flush(std::chrono::seconds(5))) {
         spdlog::error("drain: the match store did not write everything; no match handed over");
         return nullptr;
     }
-    auto handed = core.cluster()->hand_over();
+    auto handed = core.cluster()->hand_over(std::move(waiting));
     if (!handed.ok()) {
         spdlog::error("drain: no match handed over: {}", handed.error->message);
         return nullptr;
@@ -132,7 +140,11 @@ std::shared_ptr<const UrlByRoom> drain(ServerCore& core) {
     for (const auto& match : handed.value) {
         (*urls)[match.room_code] = match.public_url;
     }
-    spdlog::info("drain: {} matches handed over", handed.value.size());
+    const auto rooms = static_cast<std::size_t>(
+        std::count_if(handed.value.begin(), handed.value.end(),
+                      [](const store::HandedMatch& h) { return h.match.empty(); }));
+    spdlog::info("drain: {} matches handed over, and {} rooms waiting for their players",
+                 handed.value.size() - rooms, rooms);
     return urls;
 }
 
@@ -154,6 +166,15 @@ void Server::shutdown() {
     std::shared_ptr<const UrlByRoom> moved;
     if (core.cluster() != nullptr && !impl_->threads.empty()) {
         moved = drain(core);
+    } else if (!impl_->threads.empty()) {
+        // What the rooms are sending (a joiner's room_state) goes out before shutting_down.
+        std::vector<std::future<void>> settled;
+        core.registry.for_each_room(
+            [&](const std::shared_ptr<RoomActor>& room) { settled.push_back(room->settled()); });
+        const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(1);
+        for (auto& f : settled) {
+            (void)f.wait_until(until);
+        }
     }
     std::vector<std::shared_ptr<WsSession>> sessions;
     {

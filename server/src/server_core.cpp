@@ -3,6 +3,7 @@
 #include "bot_seat_name.hpp"
 
 #include "room_actor.hpp"
+#include "waiting_room.hpp"
 #include "ws_session.hpp"
 
 #include "store/cluster.hpp"
@@ -86,21 +87,14 @@ ServerCore::create_room(proto::RuleSet rule_set, const proto::RoomOptions& optio
         }
         code = std::move(*reserved);
     }
-    room::RoomConfig config;
-    config.rule_set = rule_set;
     // A game against the server's bots gives its players the longer of the two default clocks;
     // --shot-clock 0 turns every default clock off.
     const double default_clock_s = server_bots && settings.shot_clock_s > 0.0
                                        ? std::max(settings.shot_clock_s, settings.bot_shot_clock_s)
                                        : settings.shot_clock_s;
-    config.rules = room::make_rules_config(rule_set, options, default_clock_s);
-    config.rules.seat_count = seats;
-    config.snapshot_hz = settings.snapshot_hz;
-    config.contact_snapshots = settings.contact_snapshots;
-    config.time_scale = settings.time_scale;
-    config.grace_s = settings.grace_s;
-    config.server_version = CARROM_SERVER_VERSION;
-    config.aim_assist = !rated;
+    rules::RulesConfig rules = room::make_rules_config(rule_set, options, default_clock_s);
+    rules.seat_count = seats;
+    const room::RoomConfig config = room_config(rule_set, rules, rated);
     auto created = registry.create_room(
         [&](const std::string& c) { return std::make_shared<RoomActor>(*this, c, config); }, code);
     if (std::holds_alternative<proto::Error>(created) && !code.empty()) {
@@ -143,6 +137,53 @@ void ServerCore::load_identities() {
     }
     identities.load(loaded.value);
     spdlog::info("{} identified players", loaded.value.size());
+}
+
+room::RoomConfig ServerCore::room_config(proto::RuleSet rule_set, const rules::RulesConfig& rules,
+                                         bool rated) const {
+    room::RoomConfig config;
+    config.rule_set = rule_set;
+    config.rules = rules;
+    config.snapshot_hz = settings.snapshot_hz;
+    config.contact_snapshots = settings.contact_snapshots;
+    config.time_scale = settings.time_scale;
+    config.grace_s = settings.grace_s;
+    config.server_version = CARROM_SERVER_VERSION;
+    config.aim_assist = !rated;
+    return config;
+}
+
+void ServerCore::open_handed_rooms(std::vector<store::WaitingRoom> rooms) {
+    for (const store::WaitingRoom& handed : rooms) {
+        const auto read = read_waiting_room(handed.description);
+        if (const auto* error = std::get_if<proto::Error>(&read)) {
+            spdlog::warn("room {} handed over but not opened ({}: {})", handed.code, error->code,
+                         error->message);
+            if (store::Cluster* in_cluster = cluster()) {
+                in_cluster->release_room_code(handed.code);
+            }
+            continue;
+        }
+        const WaitingRoomSpec& spec = std::get<WaitingRoomSpec>(read);
+        const room::RoomConfig config = room_config(spec.rule_set, spec.rules, spec.rated);
+        auto actor = registry.add_room(handed.code, [&](const std::string& c) {
+            auto made = std::make_shared<RoomActor>(*this, c, config);
+            if (spec.rated) {
+                made->set_rated(); // before bind_journal: the journal reads it
+            }
+            made->bind_journal();
+            return made;
+        });
+        if (!actor) {
+            spdlog::warn("room {} handed over but not opened: the code is taken here", handed.code);
+            continue;
+        }
+        metrics.rooms.fetch_add(1, std::memory_order_relaxed);
+        spdlog::info("room {} handed over: waiting for its players ({}, {} seats)", handed.code,
+                     proto::to_string(spec.rule_set), spec.rules.seat_count);
+        // Its members are on their way (redirect "moved"); a room nobody came to closes.
+        actor->remove_if_nobody_came(to_duration(std::max(settings.grace_s, 1.0)));
+    }
 }
 
 void ServerCore::remove_room(const std::string& code) {
@@ -228,16 +269,8 @@ bool ServerCore::restore_match(const store::RecoveredMatch& match, bool running)
             seats[i].bot = bots(bot_level_of_name(journal_seats[i].name));
         }
     }
-    room::RoomConfig config;
-    config.rule_set = *rule_set;
-    config.rules = journal.created.rules;
+    room::RoomConfig config = room_config(*rule_set, journal.created.rules, match.rated);
     config.physics = journal.created.physics;
-    config.snapshot_hz = settings.snapshot_hz;
-    config.contact_snapshots = settings.contact_snapshots;
-    config.time_scale = settings.time_scale;
-    config.grace_s = settings.grace_s;
-    config.server_version = CARROM_SERVER_VERSION;
-    config.aim_assist = !match.rated;
     const std::string& code = journal.created.room_code;
     if (registry.find_room(code)) {
         return refuse("room code " + code + " is taken by another room here");

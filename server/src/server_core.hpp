@@ -11,6 +11,7 @@
 
 #include "carrom/proto/client_messages.hpp"
 #include "carrom/room/clock.hpp"
+#include "carrom/room/room.hpp"
 #include "carrom/server/bot_factory.hpp"
 #include "carrom/server/metrics.hpp"
 #include "carrom/server/random.hpp"
@@ -105,6 +106,13 @@ struct ServerCore {
     std::unordered_map<std::int64_t, std::weak_ptr<WsSession>> tickets;
     // Another instance paired these tickets (on the directory's thread): their sessions move.
     void quick_paired(std::vector<store::QuickPairing> pairings);
+    // Rooms waiting for their players that a draining instance handed to this one (on the
+    // cluster's thread): each opened under its code, empty until its members come back, and
+    // closed if nobody has after the grace period (--grace, at least 1 s).
+    void open_handed_rooms(std::vector<store::WaitingRoom> rooms);
+    // A room's config from its rule set and rules, with this server's settings.
+    room::RoomConfig room_config(proto::RuleSet rule_set, const rules::RulesConfig& rules,
+                                 bool rated) const;
 
     // At start, before the I/O threads run: every unfinished match in the store whose journal
     // replays with this build is restored in a room under its old code (docs/store.md,

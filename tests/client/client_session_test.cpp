@@ -409,6 +409,30 @@ TEST(ClientSession, ARedirectConnectsThereAndJoinsTheNamedRoom) {
     EXPECT_EQ(h.wires.size(), 2u);
 }
 
+// A room handed over while it waited for its players keeps no seat: the resume's bad_token is
+// the session's business (it joins the named room), not a message for the player.
+TEST(ClientSession, AMovedRoomWithoutASeatToResumeIsJoinedWithoutAnErrorShown) {
+    Harness h;
+    h.into_room();
+    h.wire().inbox.push_back(
+        proto::Redirect{"ws://127.0.0.1:7801/i/b/", "moved", "K7M2QX", proto::Role::Player});
+    h.session.update(1.0);
+    ASSERT_EQ(h.wires.size(), 2u);
+    h.wire().state = LinkState::Open;
+    h.session.update(1.1);
+    EXPECT_EQ(sent<proto::Hello>(h.wire()).resume_token, kToken);
+    h.wire().inbox.push_back(proto::Error{"bad_token", "That resume token is unknown."});
+    h.wire().inbox.push_back(proto::Welcome{1, 8, std::string(32, 'e'), 1000});
+    const auto out = h.session.update(1.2);
+    for (const auto& m : out) {
+        EXPECT_FALSE(std::holds_alternative<proto::Error>(m));
+    }
+    EXPECT_EQ(sent<proto::JoinRoom>(h.wire()), (proto::JoinRoom{"K7M2QX", proto::Role::Player}));
+    h.wire().inbox.push_back(proto::RoomState{});
+    h.session.update(1.3);
+    EXPECT_EQ(h.session.phase(), SessionPhase::InRoom);
+}
+
 TEST(ClientSession, ARedirectToAnotherHostIsRefusedAndNeverConnected) {
     Harness h;
     h.into_room();

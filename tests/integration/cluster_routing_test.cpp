@@ -390,5 +390,110 @@ TEST_F(ClusterRouting, SigtermHandsTheMatchToTheOtherInstanceAndSendsItsPlayersT
     std::printf("match running on b %.0f ms after SIGTERM to a\n", ms);
 }
 
+TEST_F(ClusterRouting, SigtermHandsARoomWaitingForItsPlayersToTheOtherInstanceWithItsCode) {
+    ManualClient creator(a->url(), "creator");
+    say_hello(creator, true, std::nullopt, "creator");
+    proto::CreateRoom create;
+    create.options.boards = 3;
+    creator.send(create);
+    const auto waiting = creator.next<proto::RoomState>();
+    ASSERT_TRUE(waiting.has_value());
+    ASSERT_EQ(waiting->phase, proto::Phase::Waiting);
+    ManualClient watcher(a->url(), "watcher");
+    say_hello(watcher, true);
+    watcher.send(proto::JoinRoom{waiting->code, proto::Role::Spectator});
+    ASSERT_TRUE(watcher.next<proto::RoomState>().has_value());
+
+    a->terminate();
+    const auto moved = creator.next<proto::Redirect>(5s);
+    ASSERT_TRUE(moved.has_value()) << a->log();
+    EXPECT_EQ(*moved, (proto::Redirect{b->url(), "moved", waiting->code, proto::Role::Player}));
+    const auto watched = watcher.next<proto::Redirect>(5s);
+    ASSERT_TRUE(watched.has_value());
+    EXPECT_EQ(watched->as, proto::Role::Spectator);
+    EXPECT_TRUE(
+        a->wait_log("and 1 rooms waiting for their players", std::chrono::steady_clock::now() + 5s))
+        << a->log();
+
+    // On b the room is there under its code, with its options, empty until its members come.
+    ASSERT_TRUE(b->wait_log("room " + waiting->code + " handed over: waiting for its players",
+                            std::chrono::steady_clock::now() + 5s))
+        << b->log();
+    EXPECT_EQ(query("SELECT instance_id, waiting IS NULL FROM rooms WHERE code = '" +
+                    waiting->code + "'"),
+              "b|t\n");
+    ManualClient back(moved->url, "creator");
+    say_hello(back, true, std::nullopt, "creator");
+    back.send(proto::JoinRoom{moved->code, moved->as});
+    const auto seated = back.next<proto::RoomState>();
+    ASSERT_TRUE(seated.has_value());
+    EXPECT_EQ(seated->you, 0);
+    EXPECT_EQ(seated->phase, proto::Phase::Waiting);
+    // The friend with the code finds it through either instance's address: b's here.
+    ManualClient friend_(b->url(), "friend");
+    say_hello(friend_, true, std::nullopt, "friend");
+    friend_.send(proto::JoinRoom{waiting->code, proto::Role::Player});
+    const auto joined = friend_.next<proto::RoomState>();
+    ASSERT_TRUE(joined.has_value());
+    EXPECT_EQ(joined->you, 1);
+    EXPECT_TRUE(back.next_event<proto::TurnEvent>().has_value());
+    EXPECT_EQ(
+        query("SELECT (head::jsonb)->'rules'->>'max_boards' FROM matches WHERE room_code = '" +
+              waiting->code + "'"),
+        "3\n");
+}
+
+TEST_F(ClusterRouting, AHandedOverWaitingRoomNobodyComesBackToClosesAfterTheGracePeriod) {
+    auto c = start_routed_instance(url, "c", {"--grace", "1"});
+    ASSERT_NE(c->port(), 0) << c->log();
+    b->terminate(); // (nothing to hand over) c is the only instance a can hand its room to
+    ManualClient creator(a->url(), "creator");
+    say_hello(creator, true, std::nullopt, "creator");
+    creator.send(proto::CreateRoom{});
+    const auto waiting = creator.next<proto::RoomState>();
+    ASSERT_TRUE(waiting.has_value());
+    a->terminate();
+    const auto moved = creator.next<proto::Redirect>(5s);
+    ASSERT_TRUE(moved.has_value()) << a->log();
+    EXPECT_EQ(moved->url, c->url());
+    ASSERT_TRUE(c->wait_log("room " + waiting->code + ": nobody came back to it",
+                            std::chrono::steady_clock::now() + 5s))
+        << c->log();
+    for (int i = 0; i < 50 && query("SELECT count(*) FROM rooms WHERE code = '" + waiting->code +
+                                    "'") != "0\n";
+         ++i) {
+        std::this_thread::sleep_for(100ms);
+    }
+    EXPECT_EQ(query("SELECT count(*) FROM rooms WHERE code = '" + waiting->code + "'"), "0\n");
+    ManualClient late(c->url(), "late");
+    say_hello(late, true);
+    late.send(proto::JoinRoom{waiting->code, proto::Role::Player});
+    EXPECT_EQ(late.next_error(), "room_not_found");
+}
+
+TEST_F(ClusterRouting, AHandedOverRoomWithABadDescriptionIsLoggedAndFreedAndHarmsNothing) {
+    query("INSERT INTO rooms (code, instance_id, waiting) VALUES ('QQQQQQ', 'b', "
+          "'{\"rule_set\": \"chess\", \"rules\": {}, \"rated\": false}'); "
+          "NOTIFY carrom_cluster_wake");
+    const auto logged = b->wait_log("room QQQQQQ handed over but not opened",
+                                    std::chrono::steady_clock::now() + 5s);
+    ASSERT_TRUE(logged) << b->log();
+    EXPECT_NE(logged->find("(bad_waiting_room: A handed-over room's description has no known "
+                           "rule_set.)"),
+              std::string::npos)
+        << *logged;
+    for (int i = 0; i < 50 && query("SELECT count(*) FROM rooms WHERE code = 'QQQQQQ'") != "0\n";
+         ++i) {
+        std::this_thread::sleep_for(100ms);
+    }
+    EXPECT_EQ(query("SELECT count(*) FROM rooms WHERE code = 'QQQQQQ'"), "0\n");
+    // b goes on: its lease renewed, its rooms open.
+    EXPECT_EQ(b->log().find("cannot renew its lease"), std::string::npos) << b->log();
+    ManualClient client(b->url());
+    say_hello(client, true);
+    client.send(proto::CreateRoom{});
+    EXPECT_TRUE(client.next<proto::RoomState>().has_value());
+}
+
 } // namespace
 } // namespace carrom::integration

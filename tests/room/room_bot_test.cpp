@@ -13,6 +13,18 @@ using testing::kUp;
 using testing::RoomTest;
 using testing::ScriptedBrain;
 
+// A draining server hands over only rooms it can make again from their config: none with a bot.
+TEST_F(RoomTest, ARoomWithABotSeatIsNotOneThatWaitsForPlayers) {
+    RoomConfig c = config();
+    c.rules.seat_count = 4;
+    Room room("ABCDEF", c, clock_, counters_);
+    ASSERT_FALSE(room.join(a_, proto::Role::Player));
+    EXPECT_TRUE(room.waiting_for_players());
+    ASSERT_FALSE(room.seat_bot("Bot", std::make_shared<ScriptedBrain>()));
+    EXPECT_EQ(room.phase(), proto::Phase::Waiting);
+    EXPECT_FALSE(room.waiting_for_players());
+}
+
 TEST_F(RoomTest, BotSeatTakesItsTurnThroughTheSeam) {
     RoomConfig c = config();
     c.rule_set = proto::RuleSet::Freestyle; // no break rule: a quiet shot passes the turn

@@ -161,6 +161,19 @@ TEST_F(RoomTest, LeavingForfeitsAndAbandonsTheRoomWhenEmpty) {
     EXPECT_TRUE(room_.abandoned());
 }
 
+TEST_F(RoomTest, ARoomWaitsForPlayersWhileSomeoneIsInItAndNoGameHasBegun) {
+    EXPECT_FALSE(room_.waiting_for_players()); // nobody in it
+    auto watcher = std::make_shared<FakePeer>(9, "Dee");
+    ASSERT_FALSE(room_.join(watcher, proto::Role::Spectator));
+    EXPECT_TRUE(room_.waiting_for_players());
+    ASSERT_FALSE(room_.join(a_, proto::Role::Player));
+    EXPECT_TRUE(room_.waiting_for_players());
+    ASSERT_FALSE(room_.join(b_, proto::Role::Player));
+    EXPECT_FALSE(room_.waiting_for_players()); // the game began
+    room_.leave(*b_);
+    EXPECT_FALSE(room_.waiting_for_players()); // (and it stays begun)
+}
+
 TEST_F(RoomTest, ShotClockPassesTheTurn) {
     RoomConfig c = config();
     c.rules.shot_clock_s = 10.0;

@@ -31,6 +31,7 @@ struct LostLog {
                                    const std::lock_guard lock(mutex);
                                    lines.push_back(match + " " + room);
                                },
+                               {},
                                {}};
     }
     std::vector<std::string> seen() {

@@ -142,6 +142,26 @@ test('session.js: a redirect opens its URL, says hello with follows_redirects an
   session.stopLink();
 });
 
+test('session.js: a moved room without a seat to resume is joined without an error shown', () => {
+  const { session, shown } = redirectSession('ws://127.0.0.1:7777/');
+  session.ask({ kind: 'create', ruleSet: 'icf' });
+  session.start('ann');
+  const first = RecordingConnection.made[0];
+  first.hooks.onOpen();
+  first.hooks.onMessage(welcomeMessage(TOKEN), 0);
+  first.hooks.onMessage({ type: 'room_state', code: 'K7M2QX' }, 0);
+  assert.equal(session.phase, 'in_room');
+  first.hooks.onMessage({ type: 'redirect', url: 'ws://127.0.0.1:7801/i/b/', reason: 'moved', code: 'K7M2QX', as: 'player' }, 0);
+  const second = RecordingConnection.made[1];
+  second.hooks.onOpen();
+  assert.equal(second.sent[0].resume_token, TOKEN);
+  second.hooks.onMessage({ type: 'error', code: 'bad_token', message: 'That resume token is unknown or expired; you join as a new player.' }, 0);
+  second.hooks.onMessage(welcomeMessage('6f0c1e0e8a7b4c2d9e3f1a2b3c4d5e6f'), 0);
+  assert.deepEqual(second.sent.at(-1), { type: 'join_room', code: 'K7M2QX', as: 'player' });
+  assert.ok(!shown.some((m) => m.type === 'error'), 'the bad_token is the session\'s, not the player\'s');
+  session.stopLink();
+});
+
 test('session.js: a redirect to another host is refused and never opened', () => {
   const { session } = redirectSession('ws://127.0.0.1:7777/');
   session.start('ann');

@@ -293,9 +293,14 @@ export class Session {
         }
         return; // the session measures round trips
       }
-      case 'error':
+      case 'error': {
+        // The resume after a redirect that named its room finds no seat (a room whose match had
+        // not begun keeps none): the session joins the room instead; nothing for the player.
+        const joinsInstead = m.code === 'bad_token' && this.core.resuming && this.core.joinCode !== '';
         this.apply(this.core.error(m.code), m);
+        if (joinsInstead) return;
         break;
+      }
       case 'redirect':
         this.apply(this.core.redirect(m));
         return; // the session's business

@@ -54,12 +54,21 @@ struct QuickPairing {
     std::string room_url;
 };
 
-// What a draining instance did with a match it ran (hand_over).
+// What a draining instance did with a match it ran, or a room that waited for its players
+// (hand_over).
 struct HandedMatch {
-    MatchId match;
+    MatchId match; // empty: a room waiting for its players (no match yet)
     std::string room_code;
     std::string instance_id; // the instance that runs it now
     std::string public_url;
+};
+
+// A room that waits for its players, as a draining instance hands it over: its code and what
+// the new instance opens it again from (JSON text the server writes and reads:
+// server/src/waiting_room.hpp; the store keeps it as it is).
+struct WaitingRoom {
+    std::string code;
+    std::string description;
 };
 
 // A rated player's wait (docs/ratings.md, "Fair pairing"; docs/cluster.md, "Quick match across
@@ -95,6 +104,9 @@ struct ClusterHandlers {
     // Tickets of this instance's waiting players that another instance paired (quick match
     // across instances). Called on the directory's thread.
     std::function<void(std::vector<QuickPairing>)> on_paired;
+    // Rooms waiting for their players that a draining instance handed to this one: open each
+    // with its code (its members are on their way). Called on the cluster thread.
+    std::function<void(std::vector<WaitingRoom>)> on_rooms_handed;
 };
 
 // The answer to a directory request, on the directory's thread (keep it short: post it on).
@@ -136,13 +148,13 @@ public:
     // instance paired it meanwhile (its pairing comes through on_paired).
     virtual void quick_withdraw(std::int64_t ticket, Answer<bool> done) = 0;
 
-    // --- draining
-    // --------------------------------------------------------------------------------- Gives every
-    // unfinished match of this instance to the live instances (fewest owned first), marks it handed
-    // over, and wakes them; call once the rooms stopped and the writes are flushed. Blocks (the
-    // shutdown's thread). Empty when no instance is alive to take them (they are then claimed as
-    // orphans once the lease ends).
-    virtual Loaded<std::vector<HandedMatch>> hand_over() = 0;
+    // --- draining ----------------------------------------------------------------------------
+    // Gives every unfinished match of this instance, and the rooms in `waiting`, to the live
+    // instances (fewest matches owned first), marks them handed over, and wakes them; call once
+    // the rooms stopped and the writes are flushed. Blocks (the shutdown's thread). Empty when no
+    // instance is alive to take them (the matches are then claimed as orphans once the lease
+    // ends; the waiting rooms are gone).
+    virtual Loaded<std::vector<HandedMatch>> hand_over(std::vector<WaitingRoom> waiting) = 0;
 };
 
 } // namespace carrom::store

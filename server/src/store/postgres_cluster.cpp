@@ -303,6 +303,7 @@ void PostgresCluster::round() {
         if (!claimed.value.empty() && handlers_.on_claimed) {
             handlers_.on_claimed(std::move(claimed.value));
         }
+        take_handed_rooms();
     } catch (const std::exception& e) {
         if (dynamic_cast<const pqxx::broken_connection*>(&e) != nullptr) {
             drop_connection();
@@ -314,6 +315,32 @@ void PostgresCluster::round() {
             failing_ = true;
         }
     }
+}
+
+void PostgresCluster::take_handed_rooms() {
+    pqxx::result handed;
+    try {
+        pqxx::work t(connection());
+        handed = t.exec_params(
+            "UPDATE rooms r SET waiting = NULL FROM (SELECT code, waiting FROM rooms WHERE "
+            "instance_id = $1 AND waiting IS NOT NULL FOR UPDATE) old WHERE r.code = old.code "
+            "RETURNING r.code, old.waiting::text",
+            options_.instance_id);
+        t.commit();
+    } catch (const pqxx::broken_connection&) {
+        throw; // the round's: the connection is made again
+    } catch (const std::exception& e) {
+        spdlog::error("cluster: rooms handed to this instance not taken: {}", e.what());
+        return;
+    }
+    if (handed.empty() || !handlers_.on_rooms_handed) {
+        return;
+    }
+    std::vector<WaitingRoom> rooms;
+    for (const auto& row : handed) {
+        rooms.push_back(WaitingRoom{row[0].as<std::string>(), row[1].as<std::string>()});
+    }
+    handlers_.on_rooms_handed(std::move(rooms));
 }
 
 void PostgresCluster::start(ClusterHandlers handlers) {
@@ -376,7 +403,7 @@ void PostgresCluster::stop() {
     directory_.stop();
 }
 
-Loaded<std::vector<HandedMatch>> PostgresCluster::hand_over() {
+Loaded<std::vector<HandedMatch>> PostgresCluster::hand_over(std::vector<WaitingRoom> waiting) {
     Loaded<std::vector<HandedMatch>> out;
     if (!registered_) {
         return out;
@@ -425,7 +452,21 @@ Loaded<std::vector<HandedMatch>> PostgresCluster::hand_over() {
             to.push_back(target.id);
             out.value.push_back(std::move(handed));
         }
-        if (!out.value.empty()) {
+        // Then the rooms waiting for their players, the same way (no match: no epoch).
+        std::vector<std::string> waiting_codes;
+        std::vector<std::string> waiting_to;
+        std::vector<std::string> descriptions;
+        for (WaitingRoom& room : waiting) {
+            Target& target = *std::min_element(
+                targets.begin(), targets.end(),
+                [](const Target& a, const Target& b) { return a.owned < b.owned; });
+            ++target.owned;
+            waiting_codes.push_back(room.code);
+            waiting_to.push_back(target.id);
+            descriptions.push_back(std::move(room.description));
+            out.value.push_back(HandedMatch{{}, room.code, target.id, target.url});
+        }
+        if (!ids.empty()) {
             t.exec_params("UPDATE matches m SET owner_instance = v.target, owner_epoch = "
                           "m.owner_epoch + 1, handed_over = true FROM unnest($1::text[], "
                           "$2::text[]) AS v(id, target) WHERE m.id = v.id",
@@ -433,11 +474,27 @@ Loaded<std::vector<HandedMatch>> PostgresCluster::hand_over() {
             t.exec_params("UPDATE rooms r SET instance_id = v.target FROM unnest($1::text[], "
                           "$2::text[]) AS v(code, target) WHERE r.code = v.code",
                           text_array(codes), text_array(to));
+        }
+        if (!waiting_codes.empty()) {
+            t.exec_params(
+                "UPDATE rooms r SET instance_id = v.target, waiting = v.description::jsonb "
+                "FROM unnest($1::text[], $2::text[], $3::text[]) AS v(code, target, "
+                "description) WHERE r.code = v.code AND r.instance_id = $4",
+                text_array(waiting_codes), text_array(waiting_to), text_array(descriptions),
+                options_.instance_id);
+        }
+        if (!out.value.empty()) {
             t.exec(std::string("NOTIFY ") + kWakeChannel);
         }
         t.commit();
         lease_ok_ = false;
         for (const auto& handed : out.value) {
+            if (handed.match.empty()) {
+                spdlog::info(
+                    "cluster: room {} (waiting for its players) handed over to instance {}",
+                    handed.room_code, handed.instance_id);
+                continue;
+            }
             ownership_->finished(handed.match); // not lost: handed on, its room stopped
             spdlog::info("cluster: match {} (room {}) handed over to instance {}", handed.match,
                          handed.room_code, handed.instance_id);

@@ -87,7 +87,7 @@ public:
     void quick_withdraw(std::int64_t ticket, Answer<bool> done) override {
         directory_.quick_withdraw(ticket, std::move(done));
     }
-    Loaded<std::vector<HandedMatch>> hand_over() override;
+    Loaded<std::vector<HandedMatch>> hand_over(std::vector<WaitingRoom> waiting) override;
 
     std::chrono::milliseconds renew_interval() const { return options_.lease / 3; }
 
@@ -101,6 +101,9 @@ private:
     // start time too), in t; lease_expires_ms_ from it.
     void write_lease(pqxx::transaction_base& t, bool registering);
     void check_owned();
+    // The rooms waiting for their players that a draining instance handed to this one, taken
+    // (rooms.waiting set back to NULL) and given to on_rooms_handed.
+    void take_handed_rooms();
     // Waits up to renew_interval for stop() or a NOTIFY on kWakeChannel (an instance handed
     // matches over): the next round comes at once.
     void wait_for_next_round();

@@ -142,10 +142,13 @@ ALTER TABLE matches ADD COLUMN handed_over boolean NOT NULL DEFAULT false;
 CREATE INDEX matches_open_room ON matches (room_code) WHERE finished_ms IS NULL;
 CREATE INDEX seat_tokens_hash ON seat_tokens (token_sha256);
 )sql",
-    // 5 (cluster: rated quick match across instances): a rated player's ticket carries its
-    // rating and the hash of its player key (both NULL for a guest's ticket).
+    // 5 (cluster: rated quick match across instances, rooms handed over while they wait): a
+    // rated player's ticket carries its rating and the hash of its player key (both NULL for a
+    // guest's ticket); a room a draining instance handed over before its game began carries
+    // what the new instance opens it from, until that instance has.
     R"sql(
 ALTER TABLE quick_tickets ADD COLUMN rating double precision, ADD COLUMN key_sha256 bytea;
+ALTER TABLE rooms ADD COLUMN waiting jsonb;
 )sql",
 };
 static_assert(std::size(kMigrations) == kSchemaVersion);

@@ -82,6 +82,7 @@ public:
     const std::string& code() const { return code_; }
     proto::RuleSet rule_set() const { return config_.rule_set; }
     int seat_count() const { return static_cast<int>(seats_.size()); }
+    const RoomConfig& config() const { return config_; }
 
     // Restores an unfinished match from its journal into this new room (no member, no game):
     // the state after the journal's last entry (proto::replay), the seats (humans dropped, their
@@ -138,6 +139,9 @@ public:
 
     // No human holds a seat (connected or within grace) and no spectator watches.
     bool abandoned() const;
+    // No game has begun yet, no bot holds a seat, and the room is not abandoned: a room that
+    // waits for its players (a draining server hands it over with its code).
+    bool waiting_for_players() const;
     bool is_member(const Peer& peer) const;
     int seat_of(const Peer& peer) const;              // -1 if none (a spectator or not a member)
     int seat_of_player(std::int64_t player_id) const; // -1 if none
