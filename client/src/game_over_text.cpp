@@ -191,7 +191,9 @@ GameOverText game_over_text(const MatchView& view, bool rematch_asked) {
     out.reason = reason_sentence(view, result);
     out.score = score_line(view, result);
     const bool seated = view.you >= 0;
-    const bool left = seated && seat_empty(view);
+    // A game that ended because a player left: that seat is on its way to empty (the room
+    // state that frees it follows the game_end).
+    const bool left = seated && (seat_empty(view) || result.reason == "left");
     out.can_rematch = seated && !rematch_asked && !left;
     out.opponent_left = left;
     if (left) {

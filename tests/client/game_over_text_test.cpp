@@ -109,6 +109,10 @@ TEST(GameOverText, NoRematchIsOfferedOnceTheOpponentLeft) {
     EXPECT_EQ(t.waiting, "Your opponent left the room: no rematch");
     EXPECT_EQ(t.title, "You won!");
     EXPECT_EQ(t.reason, "Bot (medium) left the game.");
+    // The game_end comes before the room state that frees the seat: no rematch already.
+    const GameOverText early = game_over_text(ended(0, 0, "left", {2, 0}), false);
+    EXPECT_FALSE(early.can_rematch);
+    EXPECT_TRUE(early.opponent_left);
     const GameOverText full = game_over_text(ended(0, 0, "score", {25, 3}), false);
     EXPECT_TRUE(full.can_rematch);
     EXPECT_FALSE(full.opponent_left);

@@ -141,6 +141,8 @@ test('the game over from the loser\'s and the winner\'s side, with the score', (
 test('no rematch once the opponent left the room', () => {
   const m = modelOf(singles({ you: 1 }));
   handle(m, { type: 'event', kind: 'game_end', winner: 1, reason: 'left', scores: [0, 0], rule: 'forfeit' });
+  // Already before the room state that frees the seat.
+  assert.equal(gameOverText(m.view, false).canRematch, false);
   handle(m, singles({ you: 1, phase: 'game_over', winner: 1, seats: [
     { occupied: false, name: '', connected: false, bot: false, colour: 'none', baseline: 'bottom' },
     seat('Ravi', 'top', { colour: 'black' })] }));

@@ -133,7 +133,9 @@ export function gameOverText(v, rematchAsked) {
   const end = v.gameEnd ?? { winner: v.winner, why: '', scores: [], names: [] };
   const scores = end.scores.length > 0 ? end.scores : v.seats.map((s) => s.score);
   const seated = v.you >= 0;
-  const left = seated && emptySeat(v);
+  // A game that ended because a player left: that seat is on its way to empty (the room state
+  // that frees it follows the game_end).
+  const left = seated && (emptySeat(v) || end.why === 'left');
   let waiting = '';
   if (left) {
     waiting = doubles(v) ? 'A player left the room: no rematch' : 'Your opponent left the room: no rematch';
