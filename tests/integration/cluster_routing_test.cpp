@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <functional>
 #include <thread>
 
 namespace carrom::integration {
@@ -46,6 +47,26 @@ proto::Welcome say_hello(ManualClient& client, bool follows_redirects,
     return client.next<proto::Welcome>().value_or(proto::Welcome{});
 }
 
+// hello with a player key (follows redirects) and its welcome.
+proto::Welcome say_hello_as(ManualClient& client, const std::string& name, const std::string& key) {
+    proto::Hello hello{proto::kProtocolVersion, name, std::nullopt, key, true};
+    client.send(hello);
+    return client.next<proto::Welcome>().value_or(proto::Welcome{});
+}
+
+// A quick-match player redirected to its partner's instance, greeted there by greet: seat 1, and
+// the match begins.
+void expect_seated_there(const proto::Redirect& redirect,
+                         const std::function<void(ManualClient&)>& greet) {
+    ManualClient moved(redirect.url, "first");
+    greet(moved);
+    moved.send(proto::JoinRoom{redirect.code, redirect.as});
+    const auto seated = moved.next<proto::RoomState>();
+    ASSERT_TRUE(seated.has_value());
+    EXPECT_EQ(seated->you, 1);
+    EXPECT_TRUE(moved.next_event<proto::TurnEvent>().has_value());
+}
+
 // Milliseconds of the day of a log line "[YYYY-MM-DD HH:MM:SS.mmm] ..." (-1 if it has none).
 double log_time_ms(const std::string& line) {
     const auto open = line.find('[');
@@ -66,6 +87,15 @@ protected:
         ASSERT_NE(b->port(), 0) << b->log();
     }
     std::string query(const std::string& sql) const { return postgres.sql(database, sql).out; }
+    // Polls sql until it prints want, up to 5 s; what it printed last.
+    std::string query_until(const std::string& sql, const std::string& want) const {
+        std::string out = query(sql);
+        for (int i = 0; i < 50 && out != want; ++i) {
+            std::this_thread::sleep_for(100ms);
+            out = query(sql);
+        }
+        return out;
+    }
 
     test_support::PostgresInstance postgres;
     std::string database = postgres.create_database();
@@ -109,12 +139,8 @@ TEST_F(ClusterRouting, RoomCodesAreReservedInTheDatabaseForTheInstanceThatRunsTh
     EXPECT_GE(std::stoi(query("SELECT count(*) FROM rooms WHERE instance_id = 'b'")), 16);
     // The room closes: its code is free again.
     client.send(proto::Leave{});
-    for (int i = 0;
-         i < 50 && query("SELECT count(*) FROM rooms WHERE code = '" + state->code + "'") != "0\n";
-         ++i) {
-        std::this_thread::sleep_for(100ms);
-    }
-    EXPECT_EQ(query("SELECT count(*) FROM rooms WHERE code = '" + state->code + "'"), "0\n");
+    EXPECT_EQ(query_until("SELECT count(*) FROM rooms WHERE code = '" + state->code + "'", "0\n"),
+              "0\n");
     // A stale code (its room closed) is no room on any instance.
     for (const auto* server : {a.get(), b.get()}) {
         ManualClient late(server->url(), "late");
@@ -160,9 +186,7 @@ TEST_F(ClusterRouting, AResumeOnAnotherInstanceIsRedirectedToTheSeatsMatch) {
     StartedMatch match = start_match(a->url());
     ASSERT_FALSE(match.code.empty());
     // The seat tokens reach the database with the match's first writes.
-    for (int i = 0; i < 50 && query("SELECT count(*) FROM seat_tokens") != "2\n"; ++i) {
-        std::this_thread::sleep_for(100ms);
-    }
+    (void)query_until("SELECT count(*) FROM seat_tokens", "2\n");
     ManualClient follower(b->url(), "creator");
     proto::Hello hello{proto::kProtocolVersion, "creator", match.creator_token};
     hello.follows_redirects = true;
@@ -199,9 +223,7 @@ TEST_F(ClusterRouting, QuickMatchPairsPlayersWaitingOnTwoInstances) {
     ManualClient first(a->url(), "first");
     say_hello(first, true);
     first.send(proto::QuickMatch{});
-    for (int i = 0; i < 50 && query("SELECT count(*) FROM quick_tickets") != "1\n"; ++i) {
-        std::this_thread::sleep_for(50ms);
-    }
+    (void)query_until("SELECT count(*) FROM quick_tickets", "1\n");
     ASSERT_EQ(query("SELECT instance_id, rule_set FROM quick_tickets"), "a|icf\n");
 
     ManualClient second(b->url(), "second");
@@ -214,21 +236,8 @@ TEST_F(ClusterRouting, QuickMatchPairsPlayersWaitingOnTwoInstances) {
     ASSERT_TRUE(redirect.has_value());
     EXPECT_EQ(*redirect,
               (proto::Redirect{b->url(), "quick_match", hosted->code, proto::Role::Player}));
-    ManualClient moved(redirect->url, "first");
-    say_hello(moved, true);
-    moved.send(proto::JoinRoom{redirect->code, redirect->as});
-    const auto seated = moved.next<proto::RoomState>();
-    ASSERT_TRUE(seated.has_value());
-    EXPECT_EQ(seated->you, 1);
-    EXPECT_TRUE(moved.next_event<proto::TurnEvent>().has_value());
+    expect_seated_there(*redirect, [](ManualClient& c) { say_hello(c, true); });
     EXPECT_EQ(query("SELECT count(*) FROM quick_tickets"), "0\n");
-}
-
-// hello with a player key (follows redirects) and its welcome.
-proto::Welcome say_hello_as(ManualClient& client, const std::string& name, const std::string& key) {
-    proto::Hello hello{proto::kProtocolVersion, name, std::nullopt, key, true};
-    client.send(hello);
-    return client.next<proto::Welcome>().value_or(proto::Welcome{});
 }
 
 TEST_F(ClusterRouting, RatedQuickMatchPairsIdentifiedPlayersOfTwoInstancesNeverAKeyWithItself) {
@@ -238,9 +247,7 @@ TEST_F(ClusterRouting, RatedQuickMatchPairsIdentifiedPlayersOfTwoInstancesNeverA
     say_hello_as(first, "first", key1);
     first.send(proto::QuickMatch{});
     const auto tickets = [&](const std::string& want) {
-        for (int i = 0; i < 50 && query("SELECT count(*) FROM quick_tickets") != want; ++i) {
-            std::this_thread::sleep_for(50ms);
-        }
+        (void)query_until("SELECT count(*) FROM quick_tickets", want);
         return query("SELECT instance_id, rule_set, rating, room_code IS NULL FROM quick_tickets "
                      "ORDER BY ticket");
     };
@@ -268,13 +275,7 @@ TEST_F(ClusterRouting, RatedQuickMatchPairsIdentifiedPlayersOfTwoInstancesNeverA
     ASSERT_TRUE(redirect.has_value());
     EXPECT_EQ(*redirect,
               (proto::Redirect{b->url(), "quick_match", hosted->code, proto::Role::Player}));
-    ManualClient moved(redirect->url, "first");
-    say_hello_as(moved, "first", key1);
-    moved.send(proto::JoinRoom{redirect->code, redirect->as});
-    const auto seated = moved.next<proto::RoomState>();
-    ASSERT_TRUE(seated.has_value());
-    EXPECT_EQ(seated->you, 1);
-    EXPECT_TRUE(moved.next_event<proto::TurnEvent>().has_value());
+    expect_seated_there(*redirect, [&](ManualClient& c) { say_hello_as(c, "first", key1); });
     EXPECT_EQ(query("SELECT count(*) FROM quick_tickets"), "0\n");
 }
 
@@ -284,9 +285,7 @@ TEST_F(ClusterRouting, ARatedHostWhosePartnerNeverComesLeavesForARoomAgainstABot
     ManualClient first(a->url(), "first");
     say_hello_as(first, "first", std::string(64, 'a'));
     first.send(proto::QuickMatch{});
-    for (int i = 0; i < 50 && query("SELECT count(*) FROM quick_tickets") != "1\n"; ++i) {
-        std::this_thread::sleep_for(50ms);
-    }
+    (void)query_until("SELECT count(*) FROM quick_tickets", "1\n");
     ManualClient host(c->url(), "host");
     say_hello_as(host, "host", std::string(64, 'b'));
     host.send(proto::QuickMatch{});
@@ -302,12 +301,8 @@ TEST_F(ClusterRouting, ARatedHostWhosePartnerNeverComesLeavesForARoomAgainstABot
     EXPECT_EQ(against_bot->you, 0);
     EXPECT_TRUE(host.next_event<proto::TurnEvent>().has_value()); // the bot is seated: play
     // The rated room closed with nobody in it: its code is free again.
-    for (int i = 0;
-         i < 50 && query("SELECT count(*) FROM rooms WHERE code = '" + rated->code + "'") != "0\n";
-         ++i) {
-        std::this_thread::sleep_for(100ms);
-    }
-    EXPECT_EQ(query("SELECT count(*) FROM rooms WHERE code = '" + rated->code + "'"), "0\n");
+    EXPECT_EQ(query_until("SELECT count(*) FROM rooms WHERE code = '" + rated->code + "'", "0\n"),
+              "0\n");
 }
 
 TEST_F(ClusterRouting, RatedPlayersOfTwoInstancesTooFarApartWaitAndGuestsDoNotTakeTheirTickets) {
@@ -316,18 +311,14 @@ TEST_F(ClusterRouting, RatedPlayersOfTwoInstancesTooFarApartWaitAndGuestsDoNotTa
         // A known player rated 2300 in icf.
         ManualClient once(a->url(), "strong");
         say_hello_as(once, "strong", strong);
-        for (int i = 0; i < 50 && query("SELECT count(*) FROM identities") != "1\n"; ++i) {
-            std::this_thread::sleep_for(50ms);
-        }
+        (void)query_until("SELECT count(*) FROM identities", "1\n");
         query("INSERT INTO ratings SELECT key_sha256, 'icf', 2300, 60, 0.06, 30, 20, 10, 0, 0 "
               "FROM identities");
     }
     ManualClient first(a->url(), "strong");
     say_hello_as(first, "strong", strong);
     first.send(proto::QuickMatch{});
-    for (int i = 0; i < 50 && query("SELECT count(*) FROM quick_tickets") != "1\n"; ++i) {
-        std::this_thread::sleep_for(50ms);
-    }
+    (void)query_until("SELECT count(*) FROM quick_tickets", "1\n");
     ASSERT_EQ(query("SELECT instance_id, rating FROM quick_tickets"), "a|2300\n");
 
     // 800 points apart: not within the gap (100 points and 25 more per second waited).
@@ -459,12 +450,8 @@ TEST_F(ClusterRouting, AHandedOverWaitingRoomNobodyComesBackToClosesAfterTheGrac
     ASSERT_TRUE(c->wait_log("room " + waiting->code + ": nobody came back to it",
                             std::chrono::steady_clock::now() + 5s))
         << c->log();
-    for (int i = 0; i < 50 && query("SELECT count(*) FROM rooms WHERE code = '" + waiting->code +
-                                    "'") != "0\n";
-         ++i) {
-        std::this_thread::sleep_for(100ms);
-    }
-    EXPECT_EQ(query("SELECT count(*) FROM rooms WHERE code = '" + waiting->code + "'"), "0\n");
+    EXPECT_EQ(query_until("SELECT count(*) FROM rooms WHERE code = '" + waiting->code + "'", "0\n"),
+              "0\n");
     ManualClient late(c->url(), "late");
     say_hello(late, true);
     late.send(proto::JoinRoom{waiting->code, proto::Role::Player});
@@ -482,11 +469,7 @@ TEST_F(ClusterRouting, AHandedOverRoomWithABadDescriptionIsLoggedAndFreedAndHarm
                            "rule_set.)"),
               std::string::npos)
         << *logged;
-    for (int i = 0; i < 50 && query("SELECT count(*) FROM rooms WHERE code = 'QQQQQQ'") != "0\n";
-         ++i) {
-        std::this_thread::sleep_for(100ms);
-    }
-    EXPECT_EQ(query("SELECT count(*) FROM rooms WHERE code = 'QQQQQQ'"), "0\n");
+    EXPECT_EQ(query_until("SELECT count(*) FROM rooms WHERE code = 'QQQQQQ'", "0\n"), "0\n");
     // b goes on: its lease renewed, its rooms open.
     EXPECT_EQ(b->log().find("cannot renew its lease"), std::string::npos) << b->log();
     ManualClient client(b->url());
