@@ -153,6 +153,16 @@ room::RoomConfig ServerCore::room_config(proto::RuleSet rule_set, const rules::R
     return config;
 }
 
+std::shared_ptr<RoomActor> ServerCore::new_room_actor(const std::string& code,
+                                                      const room::RoomConfig& config, bool rated) {
+    auto made = std::make_shared<RoomActor>(*this, code, config);
+    if (rated) {
+        made->set_rated(); // before bind_journal: the journal reads it
+    }
+    made->bind_journal();
+    return made;
+}
+
 void ServerCore::open_handed_rooms(std::vector<store::WaitingRoom> rooms) {
     for (const store::WaitingRoom& handed : rooms) {
         const auto read = read_waiting_room(handed.description);
@@ -167,12 +177,7 @@ void ServerCore::open_handed_rooms(std::vector<store::WaitingRoom> rooms) {
         const WaitingRoomSpec& spec = std::get<WaitingRoomSpec>(read);
         const room::RoomConfig config = room_config(spec.rule_set, spec.rules, spec.rated);
         auto actor = registry.add_room(handed.code, [&](const std::string& c) {
-            auto made = std::make_shared<RoomActor>(*this, c, config);
-            if (spec.rated) {
-                made->set_rated(); // before bind_journal: the journal reads it
-            }
-            made->bind_journal();
-            return made;
+            return new_room_actor(c, config, spec.rated);
         });
         if (!actor) {
             spdlog::warn("room {} handed over but not opened: the code is taken here", handed.code);
@@ -284,11 +289,7 @@ bool ServerCore::restore_match(const store::RecoveredMatch& match, bool running)
         }
     }
     auto actor = registry.add_room(code, [&](const std::string& c) {
-        auto made = std::make_shared<RoomActor>(*this, c, config);
-        if (match.rated) {
-            made->set_rated(); // before bind_journal: the journal reads it
-        }
-        made->bind_journal();
+        auto made = new_room_actor(c, config, match.rated);
         if (running) { // queued on its strand before anything a client can send it
             made->restore_on_strand(journal, seats, [this, id = match.id, c](bool restored) {
                 if (restored) {

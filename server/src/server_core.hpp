@@ -110,6 +110,9 @@ struct ServerCore {
     // cluster's thread): each opened under its code, empty until its members come back, and
     // closed if nobody has after the grace period (--grace, at least 1 s).
     void open_handed_rooms(std::vector<store::WaitingRoom> rooms);
+    // A room's actor under code, rated or not, its journal bound (for registry.add_room).
+    std::shared_ptr<RoomActor> new_room_actor(const std::string& code,
+                                              const room::RoomConfig& config, bool rated);
     // A room's config from its rule set and rules, with this server's settings.
     room::RoomConfig room_config(proto::RuleSet rule_set, const rules::RulesConfig& rules,
                                  bool rated) const;
